@@ -1,0 +1,121 @@
+#include "support/mapped_file.hpp"
+
+#include <fcntl.h>
+#include <sys/mman.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstring>
+#include <utility>
+
+namespace oasis {
+namespace {
+
+// Closes a descriptor on every path out of open().
+class FileDescriptor {
+ public:
+  explicit FileDescriptor(int fd) : fd_(fd) {}
+  FileDescriptor(const FileDescriptor&) = delete;
+  FileDescriptor& operator=(const FileDescriptor&) = delete;
+  ~FileDescriptor() {
+    if (fd_ >= 0) ::close(fd_);
+  }
+  int get() const { return fd_; }
+
+ private:
+  int fd_;
+};
+
+// strerror() capitalises; our diagnostics are lower-case fragments.
+std::string system_error_text(int code) {
+  std::string text = std::strerror(code);
+  if (!text.empty() && text[0] >= 'A' && text[0] <= 'Z') text[0] = static_cast<char>(text[0] - 'A' + 'a');
+  return text;
+}
+
+std::string too_large_message(std::size_t max_bytes) {
+  return "file is larger than the limit of " + std::to_string(max_bytes) + " bytes";
+}
+
+}  // namespace
+
+MappedFile::MappedFile(MappedFile&& other) noexcept { *this = std::move(other); }
+
+MappedFile& MappedFile::operator=(MappedFile&& other) noexcept {
+  if (this != &other) {
+    release();
+    mapped_ = std::exchange(other.mapped_, false);
+    size_ = std::exchange(other.size_, 0);
+    owned_ = std::move(other.owned_);
+    data_ = mapped_ ? std::exchange(other.data_, "") : owned_.data();
+    other.data_ = "";
+  }
+  return *this;
+}
+
+MappedFile::~MappedFile() { release(); }
+
+void MappedFile::release() {
+  if (mapped_) ::munmap(const_cast<char*>(data_), size_);
+  mapped_ = false;
+  data_ = "";
+  size_ = 0;
+  owned_.clear();
+}
+
+bool MappedFile::open(const std::string& path, std::size_t max_bytes, std::string& error) {
+  release();
+  FileDescriptor fd(::open(path.c_str(), O_RDONLY | O_CLOEXEC));
+  if (fd.get() < 0) {
+    error = system_error_text(errno);
+    return false;
+  }
+  struct stat info {};
+  if (::fstat(fd.get(), &info) != 0) {
+    error = system_error_text(errno);
+    return false;
+  }
+  if (S_ISDIR(info.st_mode)) {
+    error = "is a directory";
+    return false;
+  }
+  if (S_ISREG(info.st_mode) && info.st_size > 0) {
+    const auto size = static_cast<std::size_t>(info.st_size);
+    if (size > max_bytes) {
+      error = too_large_message(max_bytes);
+      return false;
+    }
+    void* address = ::mmap(nullptr, size, PROT_READ, MAP_PRIVATE, fd.get(), 0);
+    if (address != MAP_FAILED) {
+      ::madvise(address, size, MADV_SEQUENTIAL);
+      data_ = static_cast<const char*>(address);
+      size_ = size;
+      mapped_ = true;
+      return true;
+    }
+  }
+  // Pipes, character devices and empty files: read what there is, up to the limit.
+  char buffer[1 << 16];
+  for (;;) {
+    const ssize_t count = ::read(fd.get(), buffer, sizeof buffer);
+    if (count < 0) {
+      if (errno == EINTR) continue;
+      error = system_error_text(errno);
+      owned_.clear();
+      return false;
+    }
+    if (count == 0) break;
+    if (owned_.size() + static_cast<std::size_t>(count) > max_bytes) {
+      error = too_large_message(max_bytes);
+      owned_.clear();
+      return false;
+    }
+    owned_.append(buffer, static_cast<std::size_t>(count));
+  }
+  data_ = owned_.data();
+  size_ = owned_.size();
+  return true;
+}
+
+}  // namespace oasis

@@ -1,0 +1,114 @@
+#include "support/rational.hpp"
+
+#include <charconv>
+#include <cmath>
+#include <cstdio>
+
+namespace oasis {
+namespace {
+
+bool is_digit(char c) { return c >= '0' && c <= '9'; }
+
+// Exponents beyond this are refused: 10^100000 has ~330k bits, which is already absurd for a
+// probability and keeps hostile input from asking GMP for gigabytes.
+constexpr long kMaxExponent = 100000;
+
+Rational power_of_ten(long exponent) {
+  mpz_class power;
+  mpz_ui_pow_ui(power.get_mpz_t(), 10, static_cast<unsigned long>(exponent));
+  return Rational(power);
+}
+
+}  // namespace
+
+std::optional<Rational> parse_decimal(std::string_view text) {
+  std::size_t i = 0;
+  std::string digits;
+  long scale = 0;  // number of digits after the point
+  while (i < text.size() && is_digit(text[i])) digits += text[i++];
+  if (i < text.size() && text[i] == '.') {
+    ++i;
+    while (i < text.size() && is_digit(text[i])) {
+      digits += text[i++];
+      ++scale;
+    }
+  }
+  if (digits.empty()) return std::nullopt;
+  long exponent = 0;
+  if (i < text.size() && (text[i] == 'e' || text[i] == 'E')) {
+    ++i;
+    bool negative = false;
+    if (i < text.size() && (text[i] == '+' || text[i] == '-')) negative = text[i++] == '-';
+    const char* first = text.data() + i;
+    const char* last = text.data() + text.size();
+    auto [end, ec] = std::from_chars(first, last, exponent);
+    if (ec != std::errc() || end == first || exponent > kMaxExponent) return std::nullopt;
+    i += static_cast<std::size_t>(end - first);
+    if (negative) exponent = -exponent;
+  }
+  if (i != text.size()) return std::nullopt;
+  Rational value(mpz_class(digits, 10));
+  const long shift = exponent - scale;
+  if (shift > 0) value *= power_of_ten(shift);
+  if (shift < 0) value /= power_of_ten(-shift);
+  value.canonicalize();
+  return value;
+}
+
+std::optional<Rational> parse_rational(std::string_view text) {
+  bool negative = false;
+  if (!text.empty() && (text[0] == '-' || text[0] == '+')) {
+    negative = text[0] == '-';
+    text.remove_prefix(1);
+  }
+  const std::size_t slash = text.find('/');
+  std::optional<Rational> value;
+  if (slash == std::string_view::npos) {
+    value = parse_decimal(text);
+  } else {
+    auto numerator = parse_decimal(text.substr(0, slash));
+    auto denominator = parse_decimal(text.substr(slash + 1));
+    if (!numerator || !denominator || *denominator == 0) return std::nullopt;
+    value = *numerator / *denominator;
+  }
+  if (value && negative) *value = -*value;
+  return value;
+}
+
+std::string to_string(const Rational& value) { return value.get_str(10); }
+
+double to_double(const Rational& value) { return value.get_d(); }
+
+std::string describe(const Rational& value) {
+  if (value.get_den() == 1) return to_string(value);
+  char decimal[32];
+  std::snprintf(decimal, sizeof decimal, "%.6g", to_double(value));
+  return to_string(value) + " (" + decimal + ")";
+}
+
+std::size_t hash_value(const Rational& value) {
+  // Hash the limbs of numerator and denominator; equal canonical rationals hash equally.
+  auto hash_integer = [](mpz_srcptr z, std::size_t seed) {
+    const std::size_t limbs = mpz_size(z);
+    seed ^= static_cast<std::size_t>(mpz_sgn(z)) + 0x9e3779b97f4a7c15ULL;
+    for (std::size_t i = 0; i < limbs; ++i) {
+      seed = (seed ^ static_cast<std::size_t>(mpz_getlimbn(z, static_cast<mp_size_t>(i)))) *
+             0x100000001b3ULL;
+    }
+    return seed;
+  };
+  return hash_integer(value.get_den_mpz_t(), hash_integer(value.get_num_mpz_t(), 0xcbf29ce484222325ULL));
+}
+
+RationalPool::RationalPool() {
+  intern(Rational(0));
+  intern(Rational(1));
+}
+
+ValueId RationalPool::intern(const Rational& value) {
+  auto [it, inserted] = index_.try_emplace(value, static_cast<ValueId>(values_.size()));
+  if (inserted) values_.push_back(value);
+  return it->second;
+}
+
+}  // namespace oasis

@@ -1,0 +1,58 @@
+#pragma once
+// Exact rationals (GMP) for every probability and reward the compiler handles, and the
+// parsing and printing of the notations specs and model files use: integers, decimals with
+// an optional exponent (`0.125`, `1e-3`) and fractions (`1/3`).
+
+#include <gmpxx.h>
+
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <unordered_map>
+#include <vector>
+
+namespace oasis {
+
+using Rational = mpq_class;
+
+// Parses `digits[.digits][e[+-]digits]` exactly; no sign. Returns nullopt on bad syntax.
+std::optional<Rational> parse_decimal(std::string_view text);
+// Parses a decimal or `p/q` where p and q are decimals, with an optional leading sign.
+std::optional<Rational> parse_rational(std::string_view text);
+
+// "1/3", "2", "-5/2": exact and canonical.
+std::string to_string(const Rational& value);
+// "1/3 (0.333333)" for messages; plain "2" when the value is an integer.
+std::string describe(const Rational& value);
+// The nearest double (what emitted tables carry).
+double to_double(const Rational& value);
+
+std::size_t hash_value(const Rational& value);
+
+struct RationalHash {
+  std::size_t operator()(const Rational& value) const { return hash_value(value); }
+};
+
+using ValueId = std::uint32_t;
+
+// The distinct rationals of a model. Edges and rewards refer to them by a 4-byte id, so a
+// model with 10^7 edges and a handful of distinct probabilities stays small and exact.
+class RationalPool {
+ public:
+  RationalPool();  // id 0 is always 0 and id 1 is always 1
+
+  ValueId intern(const Rational& value);
+  [[nodiscard]] const Rational& operator[](ValueId id) const { return values_[id]; }
+  [[nodiscard]] std::size_t size() const { return values_.size(); }
+
+  static constexpr ValueId kZero = 0;
+  static constexpr ValueId kOne = 1;
+
+ private:
+  std::vector<Rational> values_;
+  std::unordered_map<Rational, ValueId, RationalHash> index_;
+};
+
+}  // namespace oasis

@@ -1,0 +1,65 @@
+#pragma once
+// The text of every input file, and the mapping from byte offsets to line and column that
+// diagnostics need. Files are kept for the whole run so locations stay valid.
+
+#include <cstdint>
+#include <deque>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "support/mapped_file.hpp"
+
+namespace oasis {
+
+using FileId = std::uint32_t;
+
+// A point in an input file. Offsets are bytes; `file` indexes the SourceManager.
+struct SourceLocation {
+  FileId file = 0;
+  std::uint32_t offset = 0;
+};
+
+// 1-based line and column. Columns count Unicode code points, so a caret lines up under
+// non-ASCII text the way an editor shows it.
+struct LineColumn {
+  std::uint32_t line = 1;
+  std::uint32_t column = 1;
+};
+
+class SourceFile {
+ public:
+  SourceFile(std::string path, MappedFile contents);
+  SourceFile(std::string path, std::string contents);
+
+  [[nodiscard]] const std::string& path() const { return path_; }
+  [[nodiscard]] std::string_view text() const { return text_; }
+
+  [[nodiscard]] LineColumn line_column(std::uint32_t offset) const;
+  // The line that holds `offset`, without its line terminator.
+  [[nodiscard]] std::string_view line_text(std::uint32_t offset) const;
+
+ private:
+  void index_lines() const;
+  [[nodiscard]] std::size_t line_index(std::uint32_t offset) const;
+
+  std::string path_;
+  MappedFile mapped_;
+  std::string owned_;
+  std::string_view text_;
+  // Computed on the first diagnostic only: a clean run over a large mapped file never pays.
+  mutable std::vector<std::uint32_t> line_starts_;
+};
+
+class SourceManager {
+ public:
+  FileId add(std::string path, MappedFile contents);
+  FileId add(std::string path, std::string contents);
+
+  [[nodiscard]] const SourceFile& file(FileId id) const { return files_.at(id); }
+
+ private:
+  std::deque<SourceFile> files_;  // deque: references stay valid as files are added
+};
+
+}  // namespace oasis
