@@ -3,6 +3,7 @@
 #include <charconv>
 #include <cmath>
 #include <cstdio>
+#include <utility>
 
 namespace oasis {
 namespace {
@@ -87,6 +88,7 @@ std::string describe(const Rational& value) {
 }
 
 std::size_t hash_value(const Rational& value) {
+  // Assumes canonical form (see RationalPool::intern).
   // Hash the limbs of numerator and denominator; equal canonical rationals hash equally.
   auto hash_integer = [](mpz_srcptr z, std::size_t seed) {
     const std::size_t limbs = mpz_size(z);
@@ -106,8 +108,11 @@ RationalPool::RationalPool() {
 }
 
 ValueId RationalPool::intern(const Rational& value) {
-  auto [it, inserted] = index_.try_emplace(value, static_cast<ValueId>(values_.size()));
-  if (inserted) values_.push_back(value);
+  // mpq_class(2, 4) is not reduced by GMP; hashing and equality need the canonical form.
+  Rational canonical = value;
+  canonical.canonicalize();
+  auto [it, inserted] = index_.try_emplace(canonical, static_cast<ValueId>(values_.size()));
+  if (inserted) values_.push_back(std::move(canonical));
   return it->second;
 }
 
