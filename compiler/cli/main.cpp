@@ -1,1 +1,47 @@
-int main() { return 0; }
+// oasisc: the oasis abstraction compiler.
+
+#include <CLI/CLI.hpp>
+
+#include <iostream>
+#include <map>
+
+#include "cli/commands.hpp"
+
+int main(int argc, char** argv) {
+  CLI::App app{"oasisc " OASIS_VERSION
+               ": compile MDP context specs into bisimulation abstractions for Online "
+               "Attention Switching",
+               "oasisc"};
+  app.require_subcommand(1);
+  app.set_version_flag("--version", std::string("oasisc ") + OASIS_VERSION);
+  app.footer("Run 'oasisc COMMAND --help' for a command's options. The spec language is\n"
+             "described in docs/spec-language.md.");
+
+  std::map<const CLI::App*, oasis::cli::CommandRunner> runners;
+  auto add = [&](oasis::cli::CommandRunner runner) {
+    runners.emplace(app.get_subcommands({}).back(), std::move(runner));
+  };
+  add(oasis::cli::add_check_command(app));
+  add(oasis::cli::add_info_command(app));
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForVersion& e) {
+    return app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    app.exit(e);
+    return 2;  // bad usage, distinct from 1 (the input has errors)
+  }
+  try {
+    for (const CLI::App* command : app.get_subcommands()) return runners.at(command)();
+  } catch (const std::bad_alloc&) {
+    std::cerr << "oasisc: error: out of memory\n";
+    return 1;
+  } catch (const std::exception& e) {
+    std::cerr << "oasisc: error: " << e.what() << '\n';
+    return 1;
+  }
+  return 2;
+}

@@ -33,10 +33,15 @@ Rational ExplicitModel::reward(std::size_t context, StateIndex s, ActionIndex a)
 }
 
 TransitionBuilder::TransitionBuilder(std::uint32_t num_states, std::uint32_t num_actions)
-    : num_states_(num_states), num_actions_(num_actions) {
-  if (static_cast<std::uint64_t>(num_states) * num_actions >= UINT32_MAX) {
+    : num_states_(0), num_actions_(num_actions) {
+  set_num_states(num_states);
+}
+
+void TransitionBuilder::set_num_states(std::uint32_t num_states) {
+  if (static_cast<std::uint64_t>(num_states) * num_actions_ >= UINT32_MAX) {
     throw std::length_error("more than 2^32 state-action pairs");
   }
+  num_states_ = num_states;
 }
 
 void TransitionBuilder::reserve(std::size_t edges) {

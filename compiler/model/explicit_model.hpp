@@ -110,6 +110,8 @@ class TransitionBuilder {
   TransitionBuilder(std::uint32_t num_states, std::uint32_t num_actions);
 
   void reserve(std::size_t edges);
+  // For callers that learn the state count only after adding edges (exploration).
+  void set_num_states(std::uint32_t num_states);
   void add(StateIndex source, ActionIndex action, StateIndex target, ValueId probability);
   [[nodiscard]] std::size_t size() const { return targets_.size(); }
 

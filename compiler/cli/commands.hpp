@@ -1,0 +1,29 @@
+#pragma once
+// The subcommands of oasisc. Each registers its options on the CLI11 app and returns the
+// exit status when run: 0 success, 1 the input has errors, 2 bad usage.
+
+#include <CLI/CLI.hpp>
+
+#include <functional>
+
+#include "cli/model_loader.hpp"
+
+namespace oasis::cli {
+
+// Options every subcommand that reads models shares.
+struct CommonOptions {
+  LoadOptions load;
+  std::size_t max_errors = 20;
+  std::string progress = "auto";  // auto | always | never
+};
+
+void add_common_options(CLI::App& command, CommonOptions& options);
+// Resolves "auto" progress against whether stderr is a terminal.
+LoadOptions effective_load_options(const CommonOptions& options);
+
+using CommandRunner = std::function<int()>;
+
+CommandRunner add_check_command(CLI::App& app);
+CommandRunner add_info_command(CLI::App& app);
+
+}  // namespace oasis::cli

@@ -1,0 +1,42 @@
+#include "cli/model_loader.hpp"
+
+#include <cstdio>
+#include <iostream>
+
+#include "model/explorer.hpp"
+#include "spec/frontend.hpp"
+
+namespace oasis::cli {
+namespace {
+
+bool has_suffix(const std::string& text, std::string_view suffix) {
+  return text.size() >= suffix.size() && text.compare(text.size() - suffix.size(), suffix.size(), suffix) == 0;
+}
+
+void print_progress(std::uint64_t found, std::uint64_t explored) {
+  std::cerr << "\rexploring: " << explored << " of " << found << " states found so far" << std::flush;
+}
+
+}  // namespace
+
+std::optional<LoadedModel> load_model(const std::string& path, SourceManager& sources,
+                                      DiagnosticEngine& diagnostics, const LoadOptions& options) {
+  LoadedModel loaded;
+  loaded.path = path;
+  if (has_suffix(path, ".aut") || has_suffix(path, ".tra")) {
+    diagnostics.file_error(path, "importing explicit models is not available in this build yet");
+    return std::nullopt;
+  }
+  loaded.ir = spec::load_spec(path, sources, diagnostics, {.max_bytes = options.max_spec_bytes});
+  if (!loaded.ir) return std::nullopt;
+  if (!options.explore || loaded.ir->kind == model::ModelKind::Continuous) return loaded;
+
+  model::ExploreOptions explore_options{.max_states = options.max_states, .progress = {}};
+  if (options.progress) explore_options.progress = print_progress;
+  loaded.model = model::explore(*loaded.ir, diagnostics, explore_options);
+  if (options.progress) std::cerr << "\r\033[K" << std::flush;
+  if (!loaded.model) return std::nullopt;
+  return loaded;
+}
+
+}  // namespace oasis::cli

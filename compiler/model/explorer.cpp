@@ -1,0 +1,292 @@
+#include "model/explorer.hpp"
+
+#include <memory>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "model/state_store.hpp"
+
+namespace oasis::model {
+namespace {
+
+std::string quoted(std::string_view text) { return "'" + std::string(text) + "'"; }
+
+// Raised after a diagnostic has been reported; ends exploration.
+struct ExplorationFailed {};
+
+class Explorer {
+ public:
+  Explorer(const ModelIR& ir, DiagnosticEngine& diagnostics, const ExploreOptions& options)
+      : ir_(ir),
+        diagnostics_(diagnostics),
+        options_(options),
+        store_(ir.variables),
+        valuation_(ir.variables.size()),
+        successor_(ir.variables.size()),
+        key_(store_.words_per_state()) {}
+
+  std::optional<ExplicitModel> run() {
+    if (ir_.kind == ModelKind::Continuous) {
+      diagnostics_.error(ir_.range, "model " + quoted(ir_.name) + " has continuous state; it "
+                                    "needs the geometry layer, not exploration");
+      return std::nullopt;
+    }
+    try {
+      prepare_tables();
+      add_initial_states();
+      explore_states();
+      return build_model();
+    } catch (const ExplorationFailed&) {
+      return std::nullopt;
+    }
+  }
+
+ private:
+  // Per command table: for explicit models an index from (action, state) to its command,
+  // so a step is a lookup rather than a scan of every guard.
+  struct Table {
+    const CommandTable* commands = nullptr;
+    std::vector<std::vector<const Command*>> by_state;  // [action][state]; explicit only
+    std::unique_ptr<TransitionBuilder> builder;  // the state count is set at the end
+  };
+
+  void prepare_tables() {
+    const auto num_actions = static_cast<std::uint32_t>(ir_.actions.size());
+    for (const CommandTable& commands : ir_.command_tables) {
+      Table table;
+      table.commands = &commands;
+      if (ir_.kind == ModelKind::Explicit) {
+        const std::size_t n = ir_.state_names.size();
+        table.by_state.assign(num_actions, std::vector<const Command*>(n, nullptr));
+        for (std::uint32_t a = 0; a < num_actions; ++a) {
+          for (const Command& command : commands.by_action[a]) table.by_state[a][command.guard.slot] = &command;
+        }
+      }
+      table.builder = std::make_unique<TransitionBuilder>(0, num_actions);
+      tables_.push_back(std::move(table));
+    }
+  }
+
+  void add_initial_states() {
+    if (ir_.kind == ModelKind::Explicit) {
+      // Every declared state, in declaration order, reachable or not.
+      for (std::int64_t s = 0; s < static_cast<std::int64_t>(ir_.state_names.size()); ++s) {
+        const std::int64_t state[] = {s};
+        intern(state, ir_.range);
+      }
+    }
+    for (const auto& valuation : ir_.initial) initial_.push_back(intern(valuation, ir_.range));
+  }
+
+  std::uint32_t intern(Valuation valuation, SourceRange cause) {
+    store_.pack(valuation, key_);
+    const auto [index, inserted] = store_.insert(key_);
+    if (inserted && store_.size() > options_.max_states) {
+      diagnostics_.error(cause, "exploration passed the limit of " +
+                                    std::to_string(options_.max_states) +
+                                    " states (raise it with --max-states)");
+      throw ExplorationFailed{};
+    }
+    return index;
+  }
+
+  void explore_states() {
+    const auto num_actions = static_cast<std::uint32_t>(ir_.actions.size());
+    for (std::uint32_t s = 0; s < store_.size(); ++s) {
+      store_.unpack(s, valuation_);
+      for (std::size_t t = 0; t < tables_.size(); ++t) {
+        for (std::uint32_t a = 0; a < num_actions; ++a) step(t, s, a);
+      }
+      if (options_.progress && (s & 0xFFFFU) == 0xFFFFU) options_.progress(store_.size(), s + 1);
+    }
+  }
+
+  const Command* enabled_command(std::size_t t, std::uint32_t s, std::uint32_t a) {
+    const Table& table = tables_[t];
+    if (!table.by_state.empty()) return table.by_state[a][s];
+    const Command* found = nullptr;
+    for (const Command& command : table.commands->by_action[a]) {
+      if (!evaluate([&] { return evaluate_bool(command.guard, valuation_); })) continue;
+      if (found != nullptr) {
+        diagnostics_.error(command.range, "commands for action " + quoted(ir_.actions[a]) +
+                                              " overlap: both are enabled in state " +
+                                              state_text() + ", which an MDP does not allow");
+        diagnostics_.note(found->range, "the other enabled command");
+        throw ExplorationFailed{};
+      }
+      found = &command;
+    }
+    return found;
+  }
+
+  void step(std::size_t t, std::uint32_t s, std::uint32_t a) {
+    const Command* command = enabled_command(t, s, a);
+    if (command == nullptr) {
+      missing(t, s, a);
+      return;
+    }
+    Rational sum = 0;
+    for (const Outcome& outcome : command->outcomes) {
+      const ValueId p = probability(outcome);
+      if (p == RationalPool::kZero) continue;
+      if (!outcome.probability.is_constant()) sum += values_[p];
+      successor_ = valuation_;
+      for (const Update& update : outcome.updates) apply(update);
+      const std::uint32_t target = intern(successor_, outcome.range);
+      tables_[t].builder->add(s, a, target, p);
+    }
+    if (!command->outcomes.empty() && !command->outcomes.front().probability.is_constant()) {
+      check_sum(*command, sum);
+    }
+  }
+
+  void missing(std::size_t t, std::uint32_t s, std::uint32_t a) {
+    switch (ir_.missing) {
+      case MissingPolicy::SelfLoop:
+        tables_[t].builder->add(s, a, s, RationalPool::kOne);
+        return;
+      case MissingPolicy::Disabled:
+        return;
+      case MissingPolicy::Error:
+        diagnostics_.error(ir_.range, "in state " + state_text() + " no command of action " +
+                                          quoted(ir_.actions[a]) +
+                                          " is enabled (add one, or write 'default self;' or "
+                                          "'default disabled;' in the model)");
+        throw ExplorationFailed{};
+    }
+  }
+
+  ValueId probability(const Outcome& outcome) {
+    const Expression& p = outcome.probability;
+    if (p.is_constant()) return values_.intern(p.constant);
+    const Rational value = evaluate([&] { return evaluate_number(p, valuation_); });
+    if (value < 0 || value > 1) {
+      diagnostics_.error(p.range, "probability " + describe(value) + " in state " + state_text() +
+                                      " is " + (value < 0 ? "negative" : "greater than 1"));
+      throw ExplorationFailed{};
+    }
+    return values_.intern(value);
+  }
+
+  void check_sum(const Command& command, const Rational& state_dependent_sum) {
+    Rational sum = state_dependent_sum;
+    for (const Outcome& outcome : command.outcomes) {
+      if (outcome.probability.is_constant()) sum += outcome.probability.constant;
+    }
+    if (sum != 1) {
+      diagnostics_.error(command.range, "in state " + state_text() + " the probabilities sum to " +
+                                            describe(sum) + ", not 1");
+      throw ExplorationFailed{};
+    }
+  }
+
+  void apply(const Update& update) {
+    const std::int64_t value = evaluate([&] { return evaluate_int(update.value, valuation_); });
+    const DiscreteVariable& var = ir_.variables[update.variable];
+    if (value < var.low || value > var.high) {
+      diagnostics_.error(update.range, "update sets " + quoted(var.name) + " to " +
+                                           std::to_string(value) + ", outside its range [" +
+                                           std::to_string(var.low) + " .. " +
+                                           std::to_string(var.high) + "], in state " + state_text());
+      throw ExplorationFailed{};
+    }
+    successor_[update.variable] = value;
+  }
+
+  // Runs an evaluation, turning an evaluation error into a diagnostic about this state.
+  template <typename Evaluate>
+  auto evaluate(Evaluate&& run) -> decltype(run()) {
+    try {
+      return run();
+    } catch (const EvaluationError& error) {
+      diagnostics_.error(error.where, std::string(error.what()) + " in state " + state_text());
+      throw ExplorationFailed{};
+    }
+  }
+
+  [[nodiscard]] std::string state_text() const {
+    if (ir_.kind == ModelKind::Explicit) return quoted(ir_.state_names[valuation_[0]]);
+    std::string text = "(";
+    for (std::size_t v = 0; v < ir_.variables.size(); ++v) {
+      if (v > 0) text += ',';
+      text += ir_.variables[v].name + '=' + std::to_string(valuation_[v]);
+    }
+    return text + ')';
+  }
+
+  ExplicitModel build_model() {
+    ExplicitModel model;
+    model.name = ir_.name;
+    model.actions = ir_.actions;
+    model.switching = ir_.switching;
+    model.objective = ir_.objective;
+    fill_state_space(model.states);
+    std::vector<std::shared_ptr<const TransitionMatrix>> matrices;
+    for (Table& table : tables_) {
+      table.builder->set_num_states(store_.size());
+      matrices.push_back(std::make_shared<const TransitionMatrix>(table.builder->finish(values_)));
+      table.builder.reset();
+    }
+    for (const ContextIR& context : ir_.contexts) {
+      model.contexts.push_back({context.name, matrices[context.command_table], rewards(context)});
+    }
+    model.values = std::move(values_);
+    return model;
+  }
+
+  void fill_state_space(StateSpace& space) {
+    space.size = store_.size();
+    space.initial = initial_;
+    if (ir_.kind == ModelKind::Explicit) {
+      space.names = ir_.state_names;
+      return;
+    }
+    for (const DiscreteVariable& var : ir_.variables) space.variables.push_back(var.name);
+    space.valuations.resize(std::size_t{store_.size()} * ir_.variables.size());
+    for (std::uint32_t s = 0; s < store_.size(); ++s) {
+      store_.unpack(s, std::span(space.valuations).subspan(std::size_t{s} * ir_.variables.size(),
+                                                           ir_.variables.size()));
+    }
+  }
+
+  RewardTable rewards(const ContextIR& context) {
+    const std::uint32_t n = store_.size();
+    const std::size_t num_actions = ir_.actions.size();
+    RewardTable table;
+    table.state.assign(n, RationalPool::kZero);
+    bool has_action_rewards = false;
+    for (const Reward& reward : context.rewards) has_action_rewards |= reward.action.has_value();
+    if (has_action_rewards) table.choice.assign(std::size_t{n} * num_actions, RationalPool::kZero);
+    for (std::uint32_t s = 0; s < n; ++s) {
+      store_.unpack(s, valuation_);
+      for (const Reward& reward : context.rewards) {
+        if (!evaluate([&] { return evaluate_bool(reward.guard, valuation_); })) continue;
+        ValueId& slot = reward.action ? table.choice[s * num_actions + *reward.action] : table.state[s];
+        const Rational value = evaluate([&] { return evaluate_number(reward.value, valuation_); });
+        slot = slot == RationalPool::kZero ? values_.intern(value) : values_.intern(values_[slot] + value);
+      }
+    }
+    return table;
+  }
+
+  const ModelIR& ir_;
+  DiagnosticEngine& diagnostics_;
+  const ExploreOptions& options_;
+  StateStore store_;
+  std::vector<std::int64_t> valuation_;
+  std::vector<std::int64_t> successor_;
+  std::vector<std::uint64_t> key_;
+  std::vector<Table> tables_;
+  std::vector<std::uint32_t> initial_;
+  RationalPool values_;
+};
+
+}  // namespace
+
+std::optional<ExplicitModel> explore(const ModelIR& ir, DiagnosticEngine& diagnostics,
+                                     const ExploreOptions& options) {
+  return Explorer(ir, diagnostics, options).run();
+}
+
+}  // namespace oasis::model

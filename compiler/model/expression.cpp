@@ -1,0 +1,196 @@
+#include "model/expression.hpp"
+
+#include <algorithm>
+#include <utility>
+
+namespace oasis::model {
+namespace {
+
+[[noreturn]] void overflow(const Expression& expr) {
+  throw EvaluationError(expr.range, "integer overflow (values must fit in 64 bits)");
+}
+
+std::int64_t checked(const Expression& expr, bool failed, std::int64_t value) {
+  if (failed) overflow(expr);
+  return value;
+}
+
+std::int64_t floor_div(std::int64_t a, std::int64_t b) {
+  std::int64_t q = a / b;
+  if ((a % b != 0) && ((a < 0) != (b < 0))) --q;
+  return q;
+}
+
+bool compare(Op op, const Rational& a, const Rational& b) {
+  switch (op) {
+    case Op::Equal: return a == b;
+    case Op::NotEqual: return a != b;
+    case Op::Less: return a < b;
+    case Op::LessEqual: return a <= b;
+    case Op::Greater: return a > b;
+    case Op::GreaterEqual: return a >= b;
+    default: return false;
+  }
+}
+
+bool compare(Op op, std::int64_t a, std::int64_t b) {
+  switch (op) {
+    case Op::Equal: return a == b;
+    case Op::NotEqual: return a != b;
+    case Op::Less: return a < b;
+    case Op::LessEqual: return a <= b;
+    case Op::Greater: return a > b;
+    case Op::GreaterEqual: return a >= b;
+    default: return false;
+  }
+}
+
+std::int64_t to_int64(const Expression& expr, const Rational& value) {
+  if (value.get_den() != 1) {
+    throw EvaluationError(expr.range, "value " + describe(value) + " is not an integer");
+  }
+  if (!value.get_num().fits_slong_p()) overflow(expr);
+  return value.get_num().get_si();
+}
+
+}  // namespace
+
+std::string_view describe(Type type) {
+  switch (type) {
+    case Type::Bool: return "bool";
+    case Type::Int: return "int";
+    case Type::Real: return "number";
+  }
+  return "?";
+}
+
+bool Expression::depends_on_state() const {
+  if (op == Op::Variable || op == Op::StateIs) return true;
+  return std::any_of(operands.begin(), operands.end(),
+                     [](const Expression& e) { return e.depends_on_state(); });
+}
+
+Expression Expression::make_constant(Rational value, Type type, SourceRange range) {
+  Expression expr;
+  expr.op = Op::Constant;
+  expr.type = type;
+  expr.constant = std::move(value);
+  expr.range = range;
+  return expr;
+}
+
+bool evaluate_bool(const Expression& expr, Valuation state) {
+  const auto& args = expr.operands;
+  switch (expr.op) {
+    case Op::Constant: return expr.constant != 0;
+    case Op::StateIs: return state[0] == static_cast<std::int64_t>(expr.slot);
+    case Op::Not: return !evaluate_bool(args[0], state);
+    case Op::And: return evaluate_bool(args[0], state) && evaluate_bool(args[1], state);
+    case Op::Or: return evaluate_bool(args[0], state) || evaluate_bool(args[1], state);
+    case Op::Equal:
+    case Op::NotEqual:
+      if (args[0].type == Type::Bool) {
+        const bool same = evaluate_bool(args[0], state) == evaluate_bool(args[1], state);
+        return expr.op == Op::Equal ? same : !same;
+      }
+      [[fallthrough]];
+    case Op::Less:
+    case Op::LessEqual:
+    case Op::Greater:
+    case Op::GreaterEqual:
+      if (args[0].type == Type::Int && args[1].type == Type::Int) {
+        return compare(expr.op, evaluate_int(args[0], state), evaluate_int(args[1], state));
+      }
+      return compare(expr.op, evaluate_number(args[0], state), evaluate_number(args[1], state));
+    default:
+      throw EvaluationError(expr.range, "expression cannot be evaluated over a discrete state");
+  }
+}
+
+std::int64_t evaluate_int(const Expression& expr, Valuation state) {
+  const auto& args = expr.operands;
+  std::int64_t result = 0;
+  switch (expr.op) {
+    case Op::Constant: return to_int64(expr, expr.constant);
+    case Op::Variable: return state[expr.slot];
+    case Op::Negate: {
+      const std::int64_t v = evaluate_int(args[0], state);
+      return checked(expr, __builtin_sub_overflow(std::int64_t{0}, v, &result), result);
+    }
+    case Op::Add:
+      return checked(expr, __builtin_add_overflow(evaluate_int(args[0], state),
+                                                  evaluate_int(args[1], state), &result), result);
+    case Op::Subtract:
+      return checked(expr, __builtin_sub_overflow(evaluate_int(args[0], state),
+                                                  evaluate_int(args[1], state), &result), result);
+    case Op::Multiply:
+      return checked(expr, __builtin_mul_overflow(evaluate_int(args[0], state),
+                                                  evaluate_int(args[1], state), &result), result);
+    case Op::Min:
+    case Op::Max: {
+      std::int64_t best = evaluate_int(args[0], state);
+      for (std::size_t i = 1; i < args.size(); ++i) {
+        const std::int64_t v = evaluate_int(args[i], state);
+        best = expr.op == Op::Min ? std::min(best, v) : std::max(best, v);
+      }
+      return best;
+    }
+    case Op::Abs: {
+      const std::int64_t v = evaluate_int(args[0], state);
+      if (v == INT64_MIN) overflow(expr);
+      return v < 0 ? -v : v;
+    }
+    case Op::Mod: {
+      const std::int64_t a = evaluate_int(args[0], state);
+      const std::int64_t b = evaluate_int(args[1], state);
+      if (b == 0) throw EvaluationError(expr.range, "mod by zero");
+      if (b == -1) return 0;
+      return a - floor_div(a, b) * b;  // result has the sign of b, like Python and PRISM
+    }
+    case Op::Floor:
+    case Op::Ceil: {
+      const Rational v = evaluate_number(args[0], state);
+      mpz_class q;
+      if (expr.op == Op::Floor) {
+        mpz_fdiv_q(q.get_mpz_t(), v.get_num_mpz_t(), v.get_den_mpz_t());
+      } else {
+        mpz_cdiv_q(q.get_mpz_t(), v.get_num_mpz_t(), v.get_den_mpz_t());
+      }
+      if (!q.fits_slong_p()) overflow(expr);
+      return q.get_si();
+    }
+    default:
+      return to_int64(expr, evaluate_number(expr, state));
+  }
+}
+
+Rational evaluate_number(const Expression& expr, Valuation state) {
+  const auto& args = expr.operands;
+  if (expr.type == Type::Int && expr.op != Op::Constant) return Rational(evaluate_int(expr, state));
+  switch (expr.op) {
+    case Op::Constant: return expr.constant;
+    case Op::Negate: return -evaluate_number(args[0], state);
+    case Op::Add: return evaluate_number(args[0], state) + evaluate_number(args[1], state);
+    case Op::Subtract: return evaluate_number(args[0], state) - evaluate_number(args[1], state);
+    case Op::Multiply: return evaluate_number(args[0], state) * evaluate_number(args[1], state);
+    case Op::Divide: {
+      const Rational divisor = evaluate_number(args[1], state);
+      if (divisor == 0) throw EvaluationError(expr.range, "division by zero");
+      return evaluate_number(args[0], state) / divisor;
+    }
+    case Op::Min:
+    case Op::Max: {
+      Rational best = evaluate_number(args[0], state);
+      for (std::size_t i = 1; i < args.size(); ++i) {
+        Rational v = evaluate_number(args[i], state);
+        if (expr.op == Op::Min ? v < best : v > best) best = std::move(v);
+      }
+      return best;
+    }
+    case Op::Abs: return abs(evaluate_number(args[0], state));
+    default:
+      throw EvaluationError(expr.range, "expression cannot be evaluated over a discrete state");
+  }
+}
+
+}  // namespace oasis::model

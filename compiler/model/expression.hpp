@@ -1,0 +1,64 @@
+#pragma once
+// Typed, name-resolved expressions of the model IR, and their evaluation over a state.
+// Constant sub-expressions are folded by the checker, so what remains refers to variables.
+// Integer arithmetic is exact 64-bit with overflow detection; `/` is exact rational division.
+
+#include <cstdint>
+#include <span>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "support/diagnostics.hpp"
+#include "support/rational.hpp"
+
+namespace oasis::model {
+
+enum class Type { Bool, Int, Real };
+
+std::string_view describe(Type type);
+using oasis::describe;  // keep describe(Rational) visible beside the overload above
+
+enum class Op {
+  Constant,            // `constant`
+  Variable,            // discrete variable `slot`
+  ContinuousVariable,  // continuous variable `slot` (not evaluable over discrete states)
+  StateIs,             // explicit models: "the state is `slot`" (slot 0 holds the state index)
+  RegionIs,            // continuous models: "the state lies in region `slot`"
+  Negate, Not,
+  Add, Subtract, Multiply, Divide,
+  Equal, NotEqual, Less, LessEqual, Greater, GreaterEqual,
+  And, Or,
+  Min, Max, Floor, Ceil, Abs, Mod,
+};
+
+struct Expression {
+  Op op = Op::Constant;
+  Type type = Type::Int;
+  Rational constant;       // Op::Constant; booleans are 0 or 1
+  std::uint32_t slot = 0;  // Variable, ContinuousVariable, StateIs, RegionIs
+  std::vector<Expression> operands;
+  SourceRange range;
+
+  [[nodiscard]] bool is_constant() const { return op == Op::Constant; }
+  // True when the expression mentions a discrete variable or explicit state.
+  [[nodiscard]] bool depends_on_state() const;
+
+  static Expression make_constant(Rational value, Type type, SourceRange range);
+};
+
+// Raised when evaluating over a particular state fails (overflow, division by zero, a
+// non-integer where an integer is needed). The caller adds which state it was.
+struct EvaluationError : std::runtime_error {
+  EvaluationError(SourceRange where_, const std::string& message)
+      : std::runtime_error(message), where(where_) {}
+  SourceRange where;
+};
+
+// Evaluation over a valuation of the discrete variables (explicit models: {state index}).
+using Valuation = std::span<const std::int64_t>;
+bool evaluate_bool(const Expression& expr, Valuation state);
+std::int64_t evaluate_int(const Expression& expr, Valuation state);
+Rational evaluate_number(const Expression& expr, Valuation state);
+
+}  // namespace oasis::model

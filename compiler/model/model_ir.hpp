@@ -1,0 +1,120 @@
+#pragma once
+// The typed model IR: a checked spec with every name resolved, every constant evaluated and
+// every context's behaviour spelled out in full. Explicit models are expressed in the same
+// terms as factored ones: one hidden variable holds the state index, `s, a -> p: t` becomes a
+// command guarded by "state is s" that sets the state to t. Exploration turns this into an
+// ExplicitModel; the geometry layer reads the continuous part.
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "model/explicit_model.hpp"
+#include "model/expression.hpp"
+
+namespace oasis::model {
+
+enum class ModelKind { Explicit, Factored, Continuous };
+enum class MissingPolicy { Error, SelfLoop, Disabled };
+
+struct DiscreteVariable {
+  std::string name;
+  std::int64_t low = 0;
+  std::int64_t high = 0;
+  std::int64_t init = 0;
+  SourceRange range;
+};
+
+struct ContinuousVariable {
+  std::string name;
+  Rational low;
+  Rational high;
+  SourceRange range;
+};
+
+struct Update {
+  std::uint32_t variable = 0;
+  Expression value;
+  SourceRange range;
+};
+
+struct Outcome {
+  Expression probability;  // folded to a constant whenever it does not depend on the state
+  std::vector<Update> updates;
+  SourceRange range;
+};
+
+struct Command {
+  ActionIndex action = 0;
+  Expression guard;
+  std::vector<Outcome> outcomes;
+  SourceRange range;
+};
+
+struct Reward {
+  std::optional<ActionIndex> action;
+  Expression guard;
+  Expression value;
+  SourceRange range;
+};
+
+// sum_i coefficients[i] * x_i  (<= or <)  bound, over the continuous variables.
+struct LinearConstraint {
+  std::vector<Rational> coefficients;
+  Rational bound;
+  bool strict = false;
+};
+
+struct Region {
+  std::string name;
+  std::vector<LinearConstraint> constraints;  // a conjunction: a convex polyhedron
+  SourceRange range;
+};
+
+struct DisturbanceModel {
+  enum class Kind { None, Bounded, Gaussian } kind = Kind::None;
+  Rational first;   // lower bound, or mean
+  Rational second;  // upper bound, or standard deviation
+};
+
+// x' = A x + b + w for one action, over the continuous variables.
+struct AffineDynamics {
+  std::vector<std::vector<Rational>> matrix;  // n x n
+  std::vector<Rational> offset;               // n
+  std::vector<DisturbanceModel> disturbance;  // per variable
+  SourceRange range;
+};
+
+// The commands of a context, grouped by action: by_action[a] lists every command of action a.
+struct CommandTable {
+  std::vector<std::vector<Command>> by_action;
+};
+
+struct ContextIR {
+  std::string name;
+  SourceRange range;
+  std::uint32_t command_table = 0;  // contexts that do not override transitions share table 0
+  std::vector<Reward> rewards;
+  std::vector<std::optional<AffineDynamics>> dynamics;  // per action; continuous models only
+};
+
+struct ModelIR {
+  std::string name;
+  SourceRange range;
+  ModelKind kind = ModelKind::Explicit;
+  std::vector<std::string> state_names;          // explicit models
+  std::vector<DiscreteVariable> variables;       // explicit models: the hidden state variable
+  std::vector<ContinuousVariable> continuous;    // continuous models
+  std::vector<std::string> actions;
+  std::vector<std::vector<std::int64_t>> initial;  // valuations of the initial states
+  MissingPolicy missing = MissingPolicy::Error;
+  std::vector<CommandTable> command_tables;
+  std::vector<Region> regions;
+  std::vector<ContextIR> contexts;
+  SwitchingModel switching;
+  Objective objective;
+  std::optional<Rational> period;  // seconds per step (continuous models)
+};
+
+}  // namespace oasis::model

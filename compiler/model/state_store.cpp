@@ -1,0 +1,95 @@
+#include "model/state_store.hpp"
+
+#include <bit>
+#include <stdexcept>
+
+namespace oasis::model {
+namespace {
+
+std::uint64_t mix(std::uint64_t x) {  // splitmix64 finaliser: cheap and well distributed
+  x ^= x >> 30U;
+  x *= 0xbf58476d1ce4e5b9ULL;
+  x ^= x >> 27U;
+  x *= 0x94d049bb133111ebULL;
+  x ^= x >> 31U;
+  return x;
+}
+
+}  // namespace
+
+StateStore::StateStore(const std::vector<DiscreteVariable>& variables) {
+  std::size_t word = 0;
+  unsigned used = 0;
+  for (const DiscreteVariable& var : variables) {
+    const auto span = static_cast<std::uint64_t>(var.high - var.low);
+    const auto bits = static_cast<unsigned>(std::bit_width(span));
+    if (used + bits > 64) {
+      ++word;
+      used = 0;
+    }
+    const std::uint64_t mask = bits == 64 ? ~std::uint64_t{0} : (std::uint64_t{1} << bits) - 1;
+    fields_.push_back({word, used, mask, var.low});
+    used += bits;
+  }
+  words_ = word + 1;
+  slots_.assign(1024, 0);
+}
+
+void StateStore::pack(Valuation valuation, std::span<std::uint64_t> key) const {
+  for (std::uint64_t& w : key) w = 0;
+  for (std::size_t v = 0; v < fields_.size(); ++v) {
+    const Field& f = fields_[v];
+    key[f.word] |= (static_cast<std::uint64_t>(valuation[v] - f.low) & f.mask) << f.shift;
+  }
+}
+
+void StateStore::unpack(std::uint32_t state, std::span<std::int64_t> valuation) const {
+  const std::uint64_t* key = keys_.data() + std::size_t{state} * words_;
+  for (std::size_t v = 0; v < fields_.size(); ++v) {
+    const Field& f = fields_[v];
+    valuation[v] = f.low + static_cast<std::int64_t>((key[f.word] >> f.shift) & f.mask);
+  }
+}
+
+std::uint64_t StateStore::hash(std::span<const std::uint64_t> key) const {
+  std::uint64_t h = 0x9e3779b97f4a7c15ULL;
+  for (std::uint64_t w : key) h = mix(h ^ w);
+  return h;
+}
+
+bool StateStore::key_equals(std::uint32_t state, std::span<const std::uint64_t> key) const {
+  const std::uint64_t* stored = keys_.data() + std::size_t{state} * words_;
+  for (std::size_t i = 0; i < words_; ++i) {
+    if (stored[i] != key[i]) return false;
+  }
+  return true;
+}
+
+std::pair<std::uint32_t, bool> StateStore::insert(std::span<const std::uint64_t> key) {
+  if ((std::size_t{count_} + 1) * 2 > slots_.size()) grow();  // load factor <= 1/2
+  const std::size_t mask = slots_.size() - 1;
+  for (std::size_t i = hash(key) & mask;; i = (i + 1) & mask) {
+    const std::uint32_t slot = slots_[i];
+    if (slot == 0) {
+      if (count_ == UINT32_MAX - 1) throw std::length_error("more than 2^32 states");
+      slots_[i] = count_ + 1;
+      keys_.insert(keys_.end(), key.begin(), key.end());
+      return {count_++, true};
+    }
+    if (key_equals(slot - 1, key)) return {slot - 1, false};
+  }
+}
+
+void StateStore::grow() {
+  std::vector<std::uint32_t> bigger(slots_.size() * 2, 0);
+  const std::size_t mask = bigger.size() - 1;
+  for (std::uint32_t state = 0; state < count_; ++state) {
+    std::span<const std::uint64_t> key(keys_.data() + std::size_t{state} * words_, words_);
+    std::size_t i = hash(key) & mask;
+    while (bigger[i] != 0) i = (i + 1) & mask;
+    bigger[i] = state + 1;
+  }
+  slots_ = std::move(bigger);
+}
+
+}  // namespace oasis::model

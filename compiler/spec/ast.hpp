@@ -1,0 +1,188 @@
+#pragma once
+// The abstract syntax tree of a .oasis spec: what was written, with where it was written.
+// Names and numbers are views into the source text, which outlives the tree. Meaning (types,
+// name resolution, probabilities) is the checker's job.
+
+#include <memory>
+#include <optional>
+#include <string_view>
+#include <vector>
+
+#include "spec/token.hpp"
+#include "support/diagnostics.hpp"
+
+namespace oasis::spec::ast {
+
+struct Name {
+  std::string_view text;
+  SourceRange range;
+};
+
+enum class ExprKind { Number, Boolean, Name, Unary, Binary, Call };
+
+struct Expr {
+  ExprKind kind = ExprKind::Number;
+  SourceRange range;        // the whole expression
+  std::string_view text;    // Number: its spelling; Name and Call: the name; Boolean: true/false
+  TokenKind op = TokenKind::Invalid;  // Unary and Binary
+  SourceRange op_range;     // where the operator is
+  std::vector<std::unique_ptr<Expr>> operands;
+  int depth = 1;  // height of the tree; the parser bounds it (kMaxNesting)
+};
+using ExprPtr = std::unique_ptr<Expr>;
+
+// `x' = e` in a factored update, or a dynamics equation.
+struct Assignment {
+  Name variable;
+  ExprPtr value;
+  SourceRange range;
+};
+
+// One term `p : target` of a distribution. `probability` is null when the term is written
+// without one (a single certain outcome). Explicit models and switching rows have a `target`
+// name; factored commands have `updates` (empty for `true`, "nothing changes").
+struct Branch {
+  ExprPtr probability;
+  std::optional<Name> target;
+  std::vector<Assignment> updates;
+  SourceRange range;
+};
+
+struct Distribution {
+  std::vector<Branch> branches;
+  SourceRange range;
+};
+
+// `s, a -> distribution;` in an explicit model.
+struct ExplicitTransition {
+  Name state;
+  Name action;
+  Distribution distribution;
+  SourceRange range;
+};
+
+// `[a] guard -> distribution;` in a factored model.
+struct Command {
+  Name action;
+  ExprPtr guard;
+  Distribution distribution;
+  SourceRange range;
+};
+
+// `reward [a] guard : value;` (the action part is optional).
+struct RewardItem {
+  std::optional<Name> action;
+  ExprPtr guard;
+  ExprPtr value;
+  SourceRange range;
+};
+
+// `disturbance x in [lo, hi];` or `disturbance x ~ gaussian(mean, sd);`
+struct Disturbance {
+  Name variable;
+  bool gaussian = false;
+  ExprPtr first;   // lower bound, or mean
+  ExprPtr second;  // upper bound, or standard deviation
+  SourceRange range;
+};
+
+// `dynamics [a] { x' = e; ... disturbance ...; }`
+struct Dynamics {
+  Name action;
+  std::vector<Assignment> equations;
+  std::vector<Disturbance> disturbances;
+  SourceRange range;
+};
+
+// Items a context may override: transitions (explicit or factored), rewards, dynamics.
+struct Behaviour {
+  std::vector<ExplicitTransition> transitions;
+  std::vector<Command> commands;
+  std::vector<RewardItem> rewards;
+  std::vector<Dynamics> dynamics;
+  std::vector<Disturbance> disturbances;  // apply to every action
+};
+
+struct ConstDecl {
+  Name name;
+  ExprPtr value;
+  SourceRange range;
+};
+
+// `var x : [lo .. hi] init e;` or `continuous x : [lo .. hi];`
+struct VarDecl {
+  Name name;
+  bool continuous = false;
+  ExprPtr low;
+  ExprPtr high;
+  ExprPtr init;  // discrete only; null means the lower bound
+  SourceRange range;
+};
+
+// `region r = linear constraints;`
+struct RegionDecl {
+  Name name;
+  ExprPtr constraint;
+  SourceRange range;
+};
+
+enum class MissingTransitions { Error, SelfLoop, Disabled };
+
+struct Setting {  // `discount e;`, `horizon e;`, `period e;`
+  ExprPtr value;
+  SourceRange range;
+};
+
+struct MdpDecl {
+  Name name;
+  SourceRange range;
+  std::vector<Name> states;
+  std::vector<Name> actions;
+  std::vector<Name> initial;
+  std::vector<ConstDecl> constants;
+  std::vector<VarDecl> variables;
+  std::vector<RegionDecl> regions;
+  MissingTransitions missing = MissingTransitions::Error;
+  std::optional<SourceRange> missing_range;
+  Behaviour behaviour;
+  std::optional<Setting> discount;
+  std::optional<Setting> horizon;
+  std::optional<Setting> period;
+};
+
+struct ContextDecl {
+  Name name;
+  bool is_base = false;  // `context c = base;`
+  Behaviour behaviour;
+  SourceRange range;
+};
+
+// `switching stay p;` or `switching { c1 -> 0.8: c1 + 0.2: c2; ... }`
+struct SwitchingDecl {
+  ExprPtr stay;
+  std::vector<std::pair<Name, Distribution>> rows;
+  SourceRange range;
+};
+
+// `prior uniform;` or `prior 0.5: c1 + 0.5: c2;`
+struct PriorDecl {
+  bool uniform = false;
+  Distribution distribution;
+  SourceRange range;
+};
+
+struct CatalogDecl {
+  std::optional<Name> name;
+  std::vector<ContextDecl> contexts;
+  std::optional<SwitchingDecl> switching;
+  std::optional<PriorDecl> prior;
+  SourceRange range;
+};
+
+struct SpecFile {
+  FileId file = 0;
+  std::vector<MdpDecl> mdps;
+  std::vector<CatalogDecl> catalogs;
+};
+
+}  // namespace oasis::spec::ast

@@ -1,0 +1,20 @@
+#pragma once
+// The catalog-wide parts of a spec: the abstraction transition model p(phi_t | phi_{t-1})
+// ("switching") and the prior p(phi_0).
+
+#include <cstdint>
+
+#include "model/model_ir.hpp"
+#include "spec/ast.hpp"
+#include "spec/expression_checker.hpp"
+#include "spec/scope.hpp"
+
+namespace oasis::spec {
+
+// Fills ir.switching from the catalog; `contexts` maps context names to their index in
+// ir.contexts. Reports rows that do not sum to 1, unknown or missing contexts, and so on.
+void check_switching_and_prior(const ast::CatalogDecl& catalog,
+                               const NameTable<std::uint32_t>& contexts, model::ModelIR& ir,
+                               DiagnosticEngine& diagnostics, ExpressionChecker& expressions);
+
+}  // namespace oasis::spec

@@ -1,0 +1,17 @@
+#pragma once
+// Semantic checks: turns a parsed spec into the typed model IR, reporting every problem it
+// finds (unknown or duplicate names, type errors, probabilities that are negative, over 1
+// or do not sum to exactly 1, missing transitions, empty contexts or catalogs, ...).
+
+#include <optional>
+
+#include "model/model_ir.hpp"
+#include "spec/ast.hpp"
+#include "support/diagnostics.hpp"
+
+namespace oasis::spec {
+
+// nullopt when any error was reported.
+std::optional<model::ModelIR> check(const ast::SpecFile& spec, DiagnosticEngine& diagnostics);
+
+}  // namespace oasis::spec

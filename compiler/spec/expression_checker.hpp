@@ -1,0 +1,52 @@
+#pragma once
+// Checks an AST expression against the scope: resolves names, infers types (bool, int,
+// number), folds constant sub-expressions exactly, and refuses what the place it appears in
+// does not allow (state variables in a constant, continuous variables in a guard, ...).
+
+#include <optional>
+#include <string_view>
+
+#include "model/expression.hpp"
+#include "spec/ast.hpp"
+#include "spec/scope.hpp"
+
+namespace oasis::spec {
+
+// What an expression may refer to where it appears.
+struct ExpressionRules {
+  bool discrete_state = false;  // discrete variables and explicit state names
+  bool continuous = false;      // continuous variables
+  bool regions = false;         // region names
+  std::string_view place = "here";  // for messages: "in a constant", "in a guard", ...
+};
+
+class ExpressionChecker {
+ public:
+  ExpressionChecker(const Scope& scope, DiagnosticEngine& diagnostics)
+      : scope_(scope), diagnostics_(diagnostics) {}
+
+  // nullopt when an error was reported.
+  std::optional<model::Expression> check(const ast::Expr& expr, const ExpressionRules& rules);
+
+  // Checks and requires the result to have `type` (Real accepts Int).
+  std::optional<model::Expression> check_typed(const ast::Expr& expr, const ExpressionRules& rules,
+                                               model::Type type, std::string_view what);
+
+  // A constant number (constant folding must succeed). `what` is used in messages.
+  std::optional<Rational> constant_number(const ast::Expr& expr, std::string_view what);
+  // A constant integer that fits in 64 bits.
+  std::optional<std::int64_t> constant_integer(const ast::Expr& expr, std::string_view what);
+
+ private:
+  std::optional<model::Expression> name(const ast::Expr& expr, const ExpressionRules& rules);
+  std::optional<model::Expression> unary(const ast::Expr& expr, const ExpressionRules& rules);
+  std::optional<model::Expression> binary(const ast::Expr& expr, const ExpressionRules& rules);
+  std::optional<model::Expression> call(const ast::Expr& expr, const ExpressionRules& rules);
+  std::optional<model::Expression> fold(model::Expression expr);
+  bool expect_type(const model::Expression& expr, model::Type type, std::string_view context);
+
+  const Scope& scope_;
+  DiagnosticEngine& diagnostics_;
+};
+
+}  // namespace oasis::spec

@@ -1,0 +1,19 @@
+#pragma once
+// Recursive-descent parser for .oasis specs (grammar: docs/spec-language.md).
+// It reports every syntax error it can: after an error it skips to the end of the statement
+// (`;` or `}`) and goes on. Expressions nested deeper than kMaxNesting are refused with an
+// error, never a stack overflow.
+
+#include <vector>
+
+#include "spec/ast.hpp"
+#include "spec/token.hpp"
+#include "support/diagnostics.hpp"
+
+namespace oasis::spec {
+
+inline constexpr int kMaxNesting = 200;
+
+ast::SpecFile parse(FileId file, const std::vector<Token>& tokens, DiagnosticEngine& diagnostics);
+
+}  // namespace oasis::spec

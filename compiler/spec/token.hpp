@@ -1,0 +1,41 @@
+#pragma once
+// Tokens of the .oasis spec language (docs/spec-language.md).
+
+#include <cstdint>
+#include <string_view>
+
+#include "support/rational.hpp"
+#include "support/source_manager.hpp"
+
+namespace oasis::spec {
+
+enum class TokenKind : std::uint8_t {
+  EndOfFile,
+  Identifier,
+  Number,
+  // Keywords.
+  KwMdp, KwCatalog, KwContext, KwStates, KwActions, KwInit, KwConst, KwVar, KwContinuous,
+  KwDefault, KwSelf, KwDisabled, KwReward, KwRegion, KwDynamics, KwDisturbance, KwIn,
+  KwGaussian, KwSwitching, KwStay, KwPrior, KwUniform, KwDiscount, KwHorizon, KwPeriod, KwTrue,
+  KwFalse, KwBase,
+  // Punctuation and operators.
+  LeftBrace, RightBrace, LeftBracket, RightBracket, LeftParen, RightParen, Comma, Semicolon,
+  Colon, Prime, Assign, Equal, NotEqual, Less, LessEqual, Greater, GreaterEqual, Plus, Minus,
+  Star, Slash, And, Or, Not, Arrow, DotDot, Tilde,
+  Invalid,  // the lexer has reported an error for it
+};
+
+struct Token {
+  TokenKind kind = TokenKind::EndOfFile;
+  std::string_view text;  // points into the source file
+  SourceLocation location;
+
+  [[nodiscard]] bool is(TokenKind k) const { return kind == k; }
+  [[nodiscard]] std::uint32_t length() const { return static_cast<std::uint32_t>(text.size()); }
+};
+
+// How a token kind is spelled in messages: "'{'", "identifier", "'mdp'".
+std::string_view describe(TokenKind kind);
+using oasis::describe;  // keep describe(Rational) visible beside the overload above
+
+}  // namespace oasis::spec
