@@ -10,10 +10,18 @@ namespace {
   throw EvaluationError(expr.range, "integer overflow (values must fit in 64 bits)");
 }
 
-std::int64_t checked(const Expression& expr, bool failed, std::int64_t value) {
-  if (failed) overflow(expr);
-  return value;
+// Integer operations with overflow detection. (The result must be read after the builtin
+// has written it, so it is not passed alongside the builtin's call as an argument.)
+template <typename Operation>
+std::int64_t checked(const Expression& expr, Operation operation, std::int64_t a, std::int64_t b) {
+  std::int64_t result = 0;
+  if (operation(a, b, &result)) overflow(expr);
+  return result;
 }
+
+bool add(std::int64_t a, std::int64_t b, std::int64_t* r) { return __builtin_add_overflow(a, b, r); }
+bool subtract(std::int64_t a, std::int64_t b, std::int64_t* r) { return __builtin_sub_overflow(a, b, r); }
+bool multiply(std::int64_t a, std::int64_t b, std::int64_t* r) { return __builtin_mul_overflow(a, b, r); }
 
 std::int64_t floor_div(std::int64_t a, std::int64_t b) {
   std::int64_t q = a / b;
@@ -109,23 +117,16 @@ bool evaluate_bool(const Expression& expr, Valuation state) {
 
 std::int64_t evaluate_int(const Expression& expr, Valuation state) {
   const auto& args = expr.operands;
-  std::int64_t result = 0;
   switch (expr.op) {
     case Op::Constant: return to_int64(expr, expr.constant);
     case Op::Variable: return state[expr.slot];
-    case Op::Negate: {
-      const std::int64_t v = evaluate_int(args[0], state);
-      return checked(expr, __builtin_sub_overflow(std::int64_t{0}, v, &result), result);
-    }
+    case Op::Negate: return checked(expr, subtract, 0, evaluate_int(args[0], state));
     case Op::Add:
-      return checked(expr, __builtin_add_overflow(evaluate_int(args[0], state),
-                                                  evaluate_int(args[1], state), &result), result);
+      return checked(expr, add, evaluate_int(args[0], state), evaluate_int(args[1], state));
     case Op::Subtract:
-      return checked(expr, __builtin_sub_overflow(evaluate_int(args[0], state),
-                                                  evaluate_int(args[1], state), &result), result);
+      return checked(expr, subtract, evaluate_int(args[0], state), evaluate_int(args[1], state));
     case Op::Multiply:
-      return checked(expr, __builtin_mul_overflow(evaluate_int(args[0], state),
-                                                  evaluate_int(args[1], state), &result), result);
+      return checked(expr, multiply, evaluate_int(args[0], state), evaluate_int(args[1], state));
     case Op::Min:
     case Op::Max: {
       std::int64_t best = evaluate_int(args[0], state);

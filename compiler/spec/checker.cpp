@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <map>
+#include <set>
 #include <string>
 #include <utility>
 
@@ -335,6 +336,9 @@ class Checker {
     auto state = resolve_state(transition.state);
     auto action = resolve_action(transition.action);
     if (!state || !action) return;
+    // The pair counts as given even when its distribution is rejected below, so that one
+    // mistake does not also produce a "no transition" error.
+    given_pairs_.insert({*state, *action});
     Command command;
     command.action = *action;
     command.range = transition.range;
@@ -589,7 +593,7 @@ class Checker {
     if (ir_.missing != model::MissingPolicy::Error) return;
     for (std::uint32_t s = 0; s < ir_.state_names.size() && !diagnostics_.should_stop(); ++s) {
       for (std::uint32_t a = 0; a < ir_.actions.size(); ++a) {
-        if (base_.explicit_transitions.count({s, a}) != 0) continue;
+        if (given_pairs_.count({s, a}) != 0) continue;
         diagnostics_.error(state_ranges_[s], "state " + quoted(ir_.state_names[s]) +
                                                  " has no transition for action " +
                                                  quoted(ir_.actions[a]) +
@@ -690,6 +694,7 @@ class Checker {
   model::ModelIR ir_;
   LoweredBehaviour base_;
   std::vector<SourceRange> state_ranges_;
+  std::set<std::pair<std::uint32_t, std::uint32_t>> given_pairs_;  // base (state, action) pairs
 };
 
 }  // namespace

@@ -54,6 +54,23 @@ class Parser {
     previous_ = &token;
     return token;
   }
+  // Contextual keywords are identifiers with a given spelling.
+  [[nodiscard]] bool at_word(std::string_view word) const {
+    return at(TokenKind::Identifier) && peek().text == word;
+  }
+  bool accept_word(std::string_view word) {
+    if (!at_word(word)) return false;
+    advance();
+    return true;
+  }
+  const Token& expect_word(std::string_view word, std::string_view context) {
+    if (!at_word(word)) {
+      fail(peek(), "expected '" + std::string(word) + "' " + std::string(context) + ", found " +
+                       found(peek()));
+    }
+    return advance();
+  }
+
   bool accept(TokenKind kind) {
     if (!at(kind)) return false;
     advance();
@@ -86,7 +103,7 @@ class Parser {
   Name expect_name(std::string_view what) {
     if (!at(TokenKind::Identifier)) {
       std::string message = "expected " + std::string(what) + ", found " + found(peek());
-      if (peek().kind >= TokenKind::KwMdp && peek().kind <= TokenKind::KwBase) {
+      if (peek().kind >= TokenKind::KwMdp && peek().kind <= TokenKind::KwFalse) {
         message += " (a keyword cannot be used as a name)";
       }
       fail(peek(), message);
@@ -280,9 +297,9 @@ class Parser {
 
   void missing_transitions(MdpDecl& decl) {
     const SourceRange start = range_of(advance());
-    if (accept(TokenKind::KwSelf)) {
+    if (accept_word("self")) {
       decl.missing = MissingTransitions::SelfLoop;
-    } else if (accept(TokenKind::KwDisabled)) {
+    } else if (accept_word("disabled")) {
       decl.missing = MissingTransitions::Disabled;
     } else {
       fail(peek(), "expected 'self' or 'disabled' after 'default', found " + found(peek()));
@@ -364,7 +381,7 @@ class Parser {
     Disturbance result;
     const SourceRange start = range_of(advance());
     result.variable = expect_name("a variable name");
-    if (accept(TokenKind::KwIn)) {
+    if (accept_word("in")) {
       expect(TokenKind::LeftBracket);
       result.first = expression();
       expect(TokenKind::DotDot, "between the bounds");
@@ -372,7 +389,7 @@ class Parser {
       expect(TokenKind::RightBracket);
     } else if (accept(TokenKind::Tilde)) {
       result.gaussian = true;
-      expect(TokenKind::KwGaussian);
+      expect_word("gaussian", "after '~'");
       expect(TokenKind::LeftParen);
       result.first = expression();
       expect(TokenKind::Comma, "between the mean and the standard deviation");
@@ -480,7 +497,7 @@ class Parser {
     const SourceRange start = range_of(advance());
     decl.name = expect_name("a context name");
     if (accept(TokenKind::Assign)) {
-      expect(TokenKind::KwBase, "after '=' (a context can only alias the base model)");
+      expect_word("base", "after '=' (a context can only alias the base model)");
       expect(TokenKind::Semicolon);
       decl.is_base = true;
     } else {
@@ -498,7 +515,7 @@ class Parser {
   SwitchingDecl switching() {
     SwitchingDecl decl;
     const SourceRange start = range_of(advance());
-    if (accept(TokenKind::KwStay)) {
+    if (accept_word("stay")) {
       decl.stay = expression();
       expect(TokenKind::Semicolon);
     } else {
@@ -517,7 +534,7 @@ class Parser {
   PriorDecl prior() {
     PriorDecl decl;
     const SourceRange start = range_of(advance());
-    if (accept(TokenKind::KwUniform)) {
+    if (accept_word("uniform")) {
       decl.uniform = true;
     } else {
       decl.distribution = distribution(/*updates=*/false);

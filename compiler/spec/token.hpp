@@ -14,10 +14,11 @@ enum class TokenKind : std::uint8_t {
   Identifier,
   Number,
   // Keywords.
+  // Reserved words. Words that only mean something in one spot (self, disabled, in, gaussian,
+  // stay, uniform, base) are not reserved: the parser recognises them there by spelling.
   KwMdp, KwCatalog, KwContext, KwStates, KwActions, KwInit, KwConst, KwVar, KwContinuous,
-  KwDefault, KwSelf, KwDisabled, KwReward, KwRegion, KwDynamics, KwDisturbance, KwIn,
-  KwGaussian, KwSwitching, KwStay, KwPrior, KwUniform, KwDiscount, KwHorizon, KwPeriod, KwTrue,
-  KwFalse, KwBase,
+  KwDefault, KwReward, KwRegion, KwDynamics, KwDisturbance, KwSwitching, KwPrior, KwDiscount,
+  KwHorizon, KwPeriod, KwTrue, KwFalse,
   // Punctuation and operators.
   LeftBrace, RightBrace, LeftBracket, RightBracket, LeftParen, RightParen, Comma, Semicolon,
   Colon, Prime, Assign, Equal, NotEqual, Less, LessEqual, Greater, GreaterEqual, Plus, Minus,
