@@ -58,6 +58,7 @@ class Explorer {
       table.commands = &commands;
       if (ir_.kind == ModelKind::Explicit) {
         const std::size_t n = ir_.state_names.size();
+        check_explicit_size(n, num_actions);
         table.by_state.assign(num_actions, std::vector<const Command*>(n, nullptr));
         for (std::uint32_t a = 0; a < num_actions; ++a) {
           for (const Command& command : commands.by_action[a]) table.by_state[a][command.guard.slot] = &command;
@@ -65,6 +66,20 @@ class Explorer {
       }
       table.builder = std::make_unique<TransitionBuilder>(0, num_actions);
       tables_.push_back(std::move(table));
+    }
+  }
+
+  void check_explicit_size(std::size_t states, std::size_t actions) {
+    if (states > options_.max_states) {
+      diagnostics_.error(ir_.range, "model lists " + std::to_string(states) +
+                                        " states, more than the limit of " +
+                                        std::to_string(options_.max_states) +
+                                        " (raise it with --max-states)");
+      throw ExplorationFailed{};
+    }
+    if (std::uint64_t{states} * actions >= UINT32_MAX) {
+      diagnostics_.error(ir_.range, "model has more than 2^32 state-action pairs");
+      throw ExplorationFailed{};
     }
   }
 
@@ -86,6 +101,13 @@ class Explorer {
       diagnostics_.error(cause, "exploration passed the limit of " +
                                     std::to_string(options_.max_states) +
                                     " states (raise it with --max-states)");
+      throw ExplorationFailed{};
+    }
+    // CSR arrays index (state, action) pairs with 32 bits.
+    if (inserted && std::uint64_t{store_.size()} * ir_.actions.size() >= UINT32_MAX) {
+      diagnostics_.error(cause, "model has more than 2^32 state-action pairs (" +
+                                    std::to_string(store_.size()) + " states x " +
+                                    std::to_string(ir_.actions.size()) + " actions)");
       throw ExplorationFailed{};
     }
     return index;

@@ -22,6 +22,9 @@ using model::Type;
 
 std::string quoted(std::string_view text) { return "'" + std::string(text) + "'"; }
 
+// A catalog holds at most this many contexts: the filter's cost grows with N^2.
+constexpr std::size_t kMaxContexts = 4096;
+
 // A variable's range may hold at most this many values, so that exploration can pack states.
 constexpr std::int64_t kMaxVariableRange = std::int64_t{1} << 40;
 
@@ -666,6 +669,12 @@ class Checker {
     const ast::CatalogDecl& catalog = spec_.catalogs.front();
     if (catalog.contexts.empty()) {
       diagnostics_.error(catalog.range, "catalog is empty: declare at least one 'context'");
+      return;
+    }
+    if (catalog.contexts.size() > kMaxContexts) {
+      diagnostics_.error(catalog.contexts[kMaxContexts].range,
+                         "catalog has more than " + std::to_string(kMaxContexts) +
+                             " contexts (the switching model alone would need N^2 entries)");
       return;
     }
     NameTable<std::uint32_t> names;

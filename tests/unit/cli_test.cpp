@@ -1,0 +1,146 @@
+// End-to-end tests of the oasisc command line: exit statuses, JSON output, help, and the
+// errors for files that cannot be read.
+
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+
+#include <array>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <string>
+
+namespace {
+
+struct Result {
+  int status = -1;
+  std::string output;  // stdout and stderr together
+};
+
+Result run(const std::string& arguments) {
+  const std::string command = std::string(OASISC_PATH) + " " + arguments + " 2>&1";
+  Result result;
+  FILE* pipe = ::popen(command.c_str(), "r");
+  if (pipe == nullptr) return result;
+  std::array<char, 4096> buffer{};
+  std::size_t count = 0;
+  while ((count = std::fread(buffer.data(), 1, buffer.size(), pipe)) > 0) result.output.append(buffer.data(), count);
+  const int status = ::pclose(pipe);
+  result.status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  return result;
+}
+
+std::string spec(const std::string& name) { return std::string(OASIS_SOURCE_DIR) + "/specs/" + name; }
+
+std::filesystem::path write_temp(const std::string& name, const std::string& text) {
+  const auto path = std::filesystem::temp_directory_path() / ("oasis_cli_test_" + name);
+  std::ofstream(path) << text;
+  return path;
+}
+
+TEST(Cli, InfoJsonOnDiscreteTracking) {
+  const Result result = run("info --json " + spec("discrete_tracking.oasis"));
+  ASSERT_EQ(result.status, 0) << result.output;
+  const auto json = nlohmann::json::parse(result.output);
+  EXPECT_EQ(json["states"], 3);
+  EXPECT_EQ(json["actions"], 2);
+  ASSERT_EQ(json["contexts"].size(), 2U);
+  EXPECT_EQ(json["contexts"][0]["name"], "object_at_s3");
+  EXPECT_EQ(json["contexts"][1]["name"], "object_at_s1");
+  for (const auto& context : json["contexts"]) {
+    EXPECT_EQ(context["states"], 3);
+    EXPECT_EQ(context["actions"], 2);
+    EXPECT_EQ(context["transitions"], 10);  // 1+2+2 for L, 2+2+1 for R
+  }
+  EXPECT_EQ(json["switching"][0][0], "4/5");
+  EXPECT_EQ(json["prior"][1], "1/2");
+}
+
+TEST(Cli, CheckShippedSpecsSucceeds) {
+  const Result result =
+      run("check " + spec("discrete_tracking.oasis") + " " + spec("go1_treat.oasis"));
+  EXPECT_EQ(result.status, 0) << result.output;
+  EXPECT_NE(result.output.find("discrete_tracking.oasis: ok"), std::string::npos);
+}
+
+TEST(Cli, ContinuousInfoHasNoFiniteStates) {
+  const Result result = run("info --json " + spec("go1_treat.oasis"));
+  ASSERT_EQ(result.status, 0) << result.output;
+  const auto json = nlohmann::json::parse(result.output);
+  EXPECT_TRUE(json["states"].is_null());
+  EXPECT_EQ(json["continuous_variables"].size(), 4U);
+  EXPECT_EQ(json["actions"], 6);
+  EXPECT_EQ(json["contexts"].size(), 2U);
+}
+
+TEST(Cli, HelpOnEveryCommand) {
+  for (const char* command : {"", "check ", "info "}) {
+    const Result result = run(std::string(command) + "--help");
+    EXPECT_EQ(result.status, 0) << command;
+    EXPECT_NE(result.output.find("Usage"), std::string::npos) << command << result.output;
+  }
+}
+
+TEST(Cli, BadUsageExitsWithTwo) {
+  EXPECT_EQ(run("").status, 2);
+  EXPECT_EQ(run("frobnicate").status, 2);
+  EXPECT_EQ(run("check").status, 2);  // no files
+  EXPECT_EQ(run("check --max-states 0 x.oasis").status, 2);
+}
+
+TEST(Cli, UnreadableFilesAreErrorsNotCrashes) {
+  Result result = run("check /nonexistent/file.oasis");
+  EXPECT_EQ(result.status, 1);
+  EXPECT_NE(result.output.find("/nonexistent/file.oasis: error: cannot read spec: no such file"),
+            std::string::npos)
+      << result.output;
+
+  result = run("check " + std::filesystem::temp_directory_path().string());
+  EXPECT_EQ(result.status, 1);
+  EXPECT_NE(result.output.find("is a directory"), std::string::npos) << result.output;
+
+  result = run("check /dev/null");
+  EXPECT_EQ(result.status, 1);
+  EXPECT_NE(result.output.find("spec declares no model"), std::string::npos) << result.output;
+}
+
+TEST(Cli, SizeLimitIsAnError) {
+  const Result result = run("check --max-spec-size 100 " + spec("discrete_tracking.oasis"));
+  EXPECT_EQ(result.status, 1);
+  EXPECT_NE(result.output.find("larger than the limit of 100 bytes"), std::string::npos)
+      << result.output;
+}
+
+TEST(Cli, StateLimitIsAnError) {
+  const auto path = write_temp("big.oasis",
+                               "mdp big { var x : [0 .. 999]; actions up; default self;\n"
+                               "  [up] x < 999 -> (x' = x + 1); }\n");
+  const Result result = run("check --max-states 100 " + path.string());
+  EXPECT_EQ(result.status, 1);
+  EXPECT_NE(result.output.find("exploration passed the limit of 100 states"), std::string::npos)
+      << result.output;
+  std::filesystem::remove(path);
+}
+
+TEST(Cli, ErrorLimitStopsTheFlood) {
+  std::string text = "mdp m { states a; actions go; a, go -> a;\n";
+  for (int i = 0; i < 50; ++i) text += "  reward nowhere" + std::to_string(i) + " : 1;\n";
+  text += "}\n";
+  const auto path = write_temp("flood.oasis", text);
+  const Result result = run("check --max-errors 5 " + path.string());
+  EXPECT_EQ(result.status, 1);
+  EXPECT_NE(result.output.find("too many errors emitted"), std::string::npos) << result.output;
+  EXPECT_NE(result.output.find("5 errors in"), std::string::npos) << result.output;
+  std::filesystem::remove(path);
+}
+
+TEST(Cli, OneBadFileDoesNotHideTheOthers) {
+  const auto bad = write_temp("bad.oasis", "mdp m { states a; }\n");
+  const Result result = run("check " + bad.string() + " " + spec("discrete_tracking.oasis"));
+  EXPECT_EQ(result.status, 1);
+  EXPECT_NE(result.output.find("discrete_tracking.oasis: ok"), std::string::npos) << result.output;
+  std::filesystem::remove(bad);
+}
+
+}  // namespace
