@@ -29,19 +29,9 @@ std::int64_t floor_div(std::int64_t a, std::int64_t b) {
   return q;
 }
 
-bool compare(Op op, const Rational& a, const Rational& b) {
-  switch (op) {
-    case Op::Equal: return a == b;
-    case Op::NotEqual: return a != b;
-    case Op::Less: return a < b;
-    case Op::LessEqual: return a <= b;
-    case Op::Greater: return a > b;
-    case Op::GreaterEqual: return a >= b;
-    default: return false;
-  }
-}
-
-bool compare(Op op, std::int64_t a, std::int64_t b) {
+// Comparison for int64 and exact rationals alike.
+template <typename Number>
+bool compare(Op op, const Number& a, const Number& b) {
   switch (op) {
     case Op::Equal: return a == b;
     case Op::NotEqual: return a != b;
