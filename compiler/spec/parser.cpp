@@ -591,10 +591,14 @@ class Parser {
     if (level == 3) return not_level();
     if (level > 6) return unary();
     ExprPtr left = binary_level(level + 1);
+    // Whether this loop has already read a comparison. Asking whether `left` is one would
+    // also refuse `(a < b) == c`, where the parentheses make the grouping explicit.
+    bool compared = false;
     while (precedence(peek().kind) == level) {
-      if (level == 4 && left->kind == ExprKind::Binary && precedence(left->op) == 4) {
+      if (level == 4 && compared) {
         fail(peek(), "comparisons cannot be chained; combine them with '&'");
       }
+      compared = true;
       const Token& op = advance();
       ExprPtr right = binary_level(level + 1);
       left = make_binary(op, std::move(left), std::move(right));
