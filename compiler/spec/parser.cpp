@@ -428,8 +428,10 @@ class Parser {
   [[nodiscard]] bool branch_without_probability(bool updates) const {
     if (updates) {
       if (at(TokenKind::KwTrue)) return !peek(1).is(TokenKind::Colon);
+      // `(x = e)` is a mistyped update, not a probability: reading it as one would answer
+      // "use '=='" instead of asking for the prime. No expression has '=' after a name.
       return at(TokenKind::LeftParen) && peek(1).is(TokenKind::Identifier) &&
-             peek(2).is(TokenKind::Prime);
+             (peek(2).is(TokenKind::Prime) || peek(2).is(TokenKind::Assign));
     }
     if (!at(TokenKind::Identifier)) return false;
     const TokenKind next = peek(1).kind;
