@@ -46,13 +46,13 @@ class AtomicFile {
   }
   // Any integer, in decimal.
   template <typename Integer>
-    requires std::is_integral_v<Integer>
+  requires std::is_integral_v<Integer>
   void append_number(Integer value) {
     if (capacity_ - used_ < kMaxNumberLength) flush_buffer();
     if (capacity_ - used_ < kMaxNumberLength) return;  // not open, or failed
     char* begin = buffer_.get() + used_;
-    used_ += static_cast<std::size_t>(std::to_chars(begin, begin + kMaxNumberLength, value).ptr -
-                                      begin);
+    used_ +=
+        static_cast<std::size_t>(std::to_chars(begin, begin + kMaxNumberLength, value).ptr - begin);
   }
 
   // Flushes, fsyncs and renames the temporary file over the destination. On failure (or
