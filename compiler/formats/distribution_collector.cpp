@@ -1,0 +1,119 @@
+#include "formats/distribution_collector.hpp"
+
+#include <algorithm>
+
+namespace oasis::formats {
+
+void DistributionCollector::reserve(std::size_t distributions, std::size_t edges) {
+  sources_.reserve(distributions);
+  actions_.reserve(distributions);
+  offsets_.reserve(distributions);
+  payloads_.reserve(distributions);
+  edge_begin_.reserve(distributions);
+  targets_.reserve(edges);
+  probabilities_.reserve(edges);
+}
+
+void DistributionCollector::begin(model::StateIndex source, model::ActionIndex action,
+                                  std::uint32_t offset, std::uint32_t payload) {
+  sources_.push_back(source);
+  actions_.push_back(action);
+  offsets_.push_back(offset);
+  payloads_.push_back(payload);
+  edge_begin_.push_back(static_cast<model::EdgeIndex>(targets_.size()));
+}
+
+void DistributionCollector::cancel() {
+  if (sources_.empty()) return;
+  targets_.resize(edge_begin_.back());
+  probabilities_.resize(edge_begin_.back());
+  sources_.pop_back();
+  actions_.pop_back();
+  offsets_.pop_back();
+  payloads_.pop_back();
+  edge_begin_.pop_back();
+}
+
+std::optional<model::TransitionMatrix> DistributionCollector::finish(
+    std::uint32_t num_states, std::uint32_t num_actions, RationalPool& values,
+    std::vector<Duplicate>& duplicates) {
+  const std::size_t num_choices = std::size_t{num_states} * num_actions;
+  model::TransitionMatrix matrix;
+  matrix.num_states = num_states;
+  matrix.num_actions = num_actions;
+  // First the distribution of each choice, in the array that becomes choice_begin.
+  std::vector<model::EdgeIndex>& owner = matrix.choice_begin;
+  owner.assign(num_choices + 1, kNone);
+  bool in_order = sorted_;
+  std::size_t previous = 0;
+  for (std::uint32_t d = 0; d < size(); ++d) {
+    const std::size_t c = std::size_t{sources_[d]} * num_actions + actions_[d];
+    if (owner[c] != kNone) {
+      duplicates.push_back({owner[c], d});
+      continue;
+    }
+    owner[c] = d;
+    if (d > 0 && c < previous) in_order = false;
+    previous = c;
+  }
+  if (!duplicates.empty()) return std::nullopt;
+  if (in_order) {
+    build_in_place(matrix);
+  } else {
+    build_copying(matrix, values);
+  }
+  return matrix;
+}
+
+// Distributions already in choice order with sorted targets: the collected edge arrays are
+// the CSR arrays; only the choice offsets need filling in.
+void DistributionCollector::build_in_place(model::TransitionMatrix& matrix) {
+  std::vector<model::EdgeIndex>& begin = matrix.choice_begin;
+  model::EdgeIndex next = static_cast<model::EdgeIndex>(targets_.size());
+  begin.back() = next;
+  for (std::size_t c = begin.size() - 1; c-- > 0;) {
+    if (begin[c] != kNone) next = edge_begin_[begin[c]];
+    begin[c] = next;
+  }
+  matrix.edge_target = std::move(targets_);
+  matrix.edge_probability = std::move(probabilities_);
+  targets_.clear();
+  probabilities_.clear();
+}
+
+void DistributionCollector::build_copying(model::TransitionMatrix& matrix, RationalPool& values) {
+  std::vector<model::EdgeIndex>& begin = matrix.choice_begin;
+  matrix.edge_target.reserve(targets_.size());
+  matrix.edge_probability.reserve(targets_.size());
+  std::vector<std::pair<model::StateIndex, ValueId>> row;
+  for (std::size_t c = 0; c + 1 < begin.size(); ++c) {
+    const std::uint32_t d = begin[c];
+    begin[c] = static_cast<model::EdgeIndex>(matrix.edge_target.size());
+    if (d == kNone) continue;
+    const std::size_t first = edge_begin_[d];
+    const std::size_t last = d + 1 < size() ? edge_begin_[d + 1] : targets_.size();
+    row.clear();
+    for (std::size_t e = first; e < last; ++e)
+      row.emplace_back(targets_[e], probabilities_[e]);
+    std::stable_sort(row.begin(), row.end(),
+                     [](const auto& x, const auto& y) { return x.first < y.first; });
+    for (std::size_t i = 0; i < row.size();) {
+      std::size_t j = i + 1;
+      ValueId probability = row[i].second;
+      if (j < row.size() && row[j].first == row[i].first) {
+        Rational sum = values[probability];
+        for (; j < row.size() && row[j].first == row[i].first; ++j)
+          sum += values[row[j].second];
+        probability = values.intern(sum);
+      }
+      matrix.edge_target.push_back(row[i].first);
+      matrix.edge_probability.push_back(probability);
+      i = j;
+    }
+  }
+  begin.back() = static_cast<model::EdgeIndex>(matrix.edge_target.size());
+  std::vector<model::StateIndex>().swap(targets_);
+  std::vector<ValueId>().swap(probabilities_);
+}
+
+}  // namespace oasis::formats

@@ -1,0 +1,74 @@
+#pragma once
+// Collects the distributions of an MDP file, one per (source state, action), in file order,
+// and turns them into the CSR TransitionMatrix. Unlike TransitionBuilder it keeps each
+// distribution as a unit, so it can tell when a file gives one state two distributions for
+// the same action (not an MDP) and point at both places. The action set may still grow
+// while distributions are added: choice indices are only formed in finish().
+//
+// Files written in (state, action) order with sorted targets, which is what our writers and
+// most tools produce, are finished without copying a single edge.
+
+#include <cstdint>
+#include <optional>
+#include <vector>
+
+#include "model/explicit_model.hpp"
+
+namespace oasis::formats {
+
+class DistributionCollector {
+ public:
+  struct Duplicate {
+    std::uint32_t first;   // the distribution given first in the file
+    std::uint32_t second;  // a later one for the same (source, action)
+  };
+
+  void reserve(std::size_t distributions, std::size_t edges);
+
+  // Starts distribution number size(). `offset` locates it in its file for diagnostics;
+  // `payload` is the reader's (a reward id, a choice index).
+  void begin(model::StateIndex source, model::ActionIndex action, std::uint32_t offset,
+             std::uint32_t payload);
+  void add(model::StateIndex target, ValueId probability) {
+    // Within one distribution targets should strictly increase; otherwise finish() sorts.
+    if (targets_.size() > edge_begin_.back() && targets_.back() >= target) sorted_ = false;
+    targets_.push_back(target);
+    probabilities_.push_back(probability);
+  }
+  // Drops the distribution begun last (its line turned out to be malformed).
+  void cancel();
+
+  [[nodiscard]] std::size_t size() const { return sources_.size(); }
+  [[nodiscard]] std::size_t num_edges() const { return targets_.size(); }
+  // Edge indices are 32-bit; readers stop before this is reached.
+  [[nodiscard]] bool full() const { return targets_.size() >= UINT32_MAX - 1; }
+  [[nodiscard]] model::StateIndex source(std::uint32_t d) const { return sources_[d]; }
+  [[nodiscard]] model::ActionIndex action(std::uint32_t d) const { return actions_[d]; }
+  [[nodiscard]] std::uint32_t offset(std::uint32_t d) const { return offsets_[d]; }
+  [[nodiscard]] std::uint32_t payload(std::uint32_t d) const { return payloads_[d]; }
+
+  // Builds the matrix; `num_states * num_actions` must be below 2^32. Repeated
+  // (source, action) pairs are listed in `duplicates` in file order and yield nullopt.
+  // Probabilities of a target repeated within one distribution are added. The collected
+  // edges are consumed; the per-distribution accessors stay valid.
+  std::optional<model::TransitionMatrix> finish(std::uint32_t num_states, std::uint32_t num_actions,
+                                                RationalPool& values,
+                                                std::vector<Duplicate>& duplicates);
+
+ private:
+  static constexpr std::uint32_t kNone = UINT32_MAX;
+
+  void build_copying(model::TransitionMatrix& matrix, RationalPool& values);
+  void build_in_place(model::TransitionMatrix& matrix);
+
+  std::vector<model::StateIndex> sources_;
+  std::vector<model::ActionIndex> actions_;
+  std::vector<std::uint32_t> offsets_;
+  std::vector<std::uint32_t> payloads_;
+  std::vector<model::EdgeIndex> edge_begin_;  // where each distribution's edges start
+  std::vector<model::StateIndex> targets_;
+  std::vector<ValueId> probabilities_;
+  bool sorted_ = true;  // targets strictly increase within every distribution
+};
+
+}  // namespace oasis::formats

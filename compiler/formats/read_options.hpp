@@ -1,0 +1,25 @@
+#pragma once
+// Limits and leniency for reading explicit model files written by other tools.
+
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+
+#include "support/rational.hpp"
+
+namespace oasis::formats {
+
+struct ReadOptions {
+  // Larger files are refused before they are read. Source offsets are 32-bit, so the
+  // readers never accept more than 2^32 - 1 bytes whatever this says.
+  std::size_t max_bytes = 1ULL << 32;
+  // A file declaring more states is refused before anything is allocated for them.
+  std::uint32_t max_states = 50'000'000;
+  // PRISM files written with doubles rarely sum to exactly 1. When set, a choice whose
+  // probabilities sum to within `tolerance` of 1 is accepted and its values are kept as
+  // written (so the model is then only approximately stochastic). .aut files need no
+  // tolerance: their last target takes the exact remainder.
+  std::optional<Rational> tolerance;
+};
+
+}  // namespace oasis::formats
