@@ -661,7 +661,10 @@ class Checker {
   void check_catalog(const ast::MdpDecl& mdp) {
     ir_.command_tables.push_back(build_table(base_, nullptr));
     if (spec_.catalogs.empty()) {
-      ir_.contexts.push_back(make_context("default", mdp.name.range, base_));
+      // The one context is the model as written, like `context default = base;`: it changes
+      // nothing, so it uses the base table. (Passing `base_` as its body made a second,
+      // identical table, and exploration stepped through every command twice.)
+      ir_.contexts.push_back(make_context("default", mdp.name.range, LoweredBehaviour{}));
       ir_.switching.matrix = {Rational(1)};
       ir_.switching.prior = {Rational(1)};
       return;
