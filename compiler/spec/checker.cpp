@@ -67,6 +67,12 @@ class Checker {
     bool empty = true;
   };
 
+  // A checked `disturbance` item: the continuous variable it acts on, and how.
+  struct LoweredDisturbance {
+    std::uint32_t variable = 0;
+    model::DisturbanceModel model;
+  };
+
   // ---- model-level declarations -----------------------------------------------------------
 
   const ast::MdpDecl* single_model() {
@@ -319,11 +325,24 @@ class Checker {
       lowered.has_rewards = true;
       if (auto lowered_reward = lower_reward(reward)) lowered.rewards.push_back(std::move(*lowered_reward));
     }
-    for (const auto& dynamics : body.dynamics) lower_dynamics(dynamics, body, lowered);
-    if (!body.disturbances.empty() && body.dynamics.empty() && is_context) {
+    // Disturbances outside a dynamics block hold for every block of this body. They are
+    // checked here, once: checked per block, a mistake in one was reported once per block,
+    // and not at all when there was no block (or in a discrete model, which ignored them).
+    std::vector<LoweredDisturbance> shared;
+    if (ir_.kind != ModelKind::Continuous) {
+      for (const auto& disturbance : body.disturbances) {
+        diagnostics_.error(disturbance.range,
+                           "disturbances belong to models with continuous variables");
+      }
+    } else if (!body.disturbances.empty() && body.dynamics.empty() && is_context) {
       diagnostics_.error(body.disturbances.front().range,
                          "a context's disturbance must sit inside its 'dynamics' blocks");
+    } else {
+      for (const auto& disturbance : body.disturbances) {
+        if (auto checked = lower_disturbance(disturbance)) shared.push_back(*checked);
+      }
     }
+    for (const auto& dynamics : body.dynamics) lower_dynamics(dynamics, shared, lowered);
     lowered.empty = body.transitions.empty() && body.commands.empty() && body.rewards.empty() &&
                     body.dynamics.empty() && body.disturbances.empty();
     return lowered;
@@ -505,7 +524,7 @@ class Checker {
     return reward;
   }
 
-  void lower_dynamics(const ast::Dynamics& dynamics, const ast::Behaviour& body,
+  void lower_dynamics(const ast::Dynamics& dynamics, const std::vector<LoweredDisturbance>& shared,
                       LoweredBehaviour& lowered) {
     if (ir_.kind != ModelKind::Continuous) {
       diagnostics_.error(dynamics.range, "'dynamics' blocks belong to models with continuous "
@@ -531,8 +550,14 @@ class Checker {
     for (const ast::Assignment& equation : dynamics.equations) {
       if (!lower_equation(equation, affine, assigned)) return;
     }
-    for (const auto& disturbance : body.disturbances) lower_disturbance(disturbance, affine);
-    for (const auto& disturbance : dynamics.disturbances) lower_disturbance(disturbance, affine);
+    for (const LoweredDisturbance& disturbance : shared) {
+      affine.disturbance[disturbance.variable] = disturbance.model;
+    }
+    for (const auto& disturbance : dynamics.disturbances) {
+      if (auto checked = lower_disturbance(disturbance)) {
+        affine.disturbance[checked->variable] = checked->model;
+      }
+    }
     lowered.dynamics[*action] = std::move(affine);
   }
 
@@ -565,29 +590,30 @@ class Checker {
     return true;
   }
 
-  void lower_disturbance(const ast::Disturbance& disturbance, model::AffineDynamics& affine) {
+  std::optional<LoweredDisturbance> lower_disturbance(const ast::Disturbance& disturbance) {
     const auto* entry = scope_.find(disturbance.variable.text);
     if (entry == nullptr || entry->value.kind != SymbolKind::ContinuousVariable) {
       diagnostics_.error(disturbance.variable.range,
                          "unknown continuous variable " + quoted(disturbance.variable.text));
-      return;
+      return std::nullopt;
     }
     auto first = expressions_.constant_number(*disturbance.first, disturbance.gaussian ? "a mean" : "a bound");
     auto second = expressions_.constant_number(*disturbance.second,
                                                disturbance.gaussian ? "a standard deviation" : "a bound");
-    if (!first || !second) return;
+    if (!first || !second) return std::nullopt;
     if (disturbance.gaussian && *second <= 0) {
       diagnostics_.error(disturbance.second->range, "standard deviation must be positive");
-      return;
+      return std::nullopt;
     }
     if (!disturbance.gaussian && *first > *second) {
       diagnostics_.error(disturbance.range, "empty disturbance interval: " + describe(*first) +
                                                 " is above " + describe(*second));
-      return;
+      return std::nullopt;
     }
     using Kind = model::DisturbanceModel::Kind;
-    affine.disturbance[entry->value.index] = {disturbance.gaussian ? Kind::Gaussian : Kind::Bounded,
-                                              *first, *second};
+    return LoweredDisturbance{
+        entry->value.index,
+        {disturbance.gaussian ? Kind::Gaussian : Kind::Bounded, *first, *second}};
   }
 
   // ---- completeness -----------------------------------------------------------------------
