@@ -1,0 +1,94 @@
+// The .lab file; only its "init" label matters to us (our models have no atomic
+// propositions).
+//
+//   0="init" 1="deadlock" 2="done"
+//   0: 0
+//   4: 1 2
+
+#include "formats/prism_parts.hpp"
+
+namespace oasis::formats {
+namespace {
+
+class LabelsReader {
+ public:
+  LabelsReader(FileId file, DiagnosticEngine& diagnostics, std::uint32_t num_states,
+               std::vector<model::StateIndex>& initial)
+      : scan_(file, diagnostics), num_states_(num_states), initial_(initial) {}
+
+  bool read(bool& found) {
+    const std::size_t errors = scan_.diagnostics().error_count();
+    if (!read_names()) return false;
+    found = init_ != kNone;
+    while (scan_.next_line() && !scan_.diagnostics().should_stop()) {
+      read_state();
+      scan_.skip_line();
+    }
+    return scan_.diagnostics().error_count() == errors;
+  }
+
+ private:
+  static constexpr std::uint32_t kNone = UINT32_MAX;
+
+  // `0="init" 1="deadlock" ...`: indices in order from 0, as PRISM writes and requires.
+  bool read_names() {
+    if (!scan_.next_line()) return true;  // an empty file: no labels at all
+    while (!scan_.at_line_end()) {
+      const char* token = scan_.position();
+      std::uint32_t index = 0;
+      if (!scan_.read_index("a label index", index)) return false;
+      if (index != count_) {
+        scan_.error_at(token, 1, "expected label index " + std::to_string(count_));
+        return false;
+      }
+      if (!scan_.expect('=', "expected '=' after the label index")) return false;
+      if (!scan_.expect('"', "expected the quoted label name")) return false;
+      const std::string_view rest = scan_.rest_of_line();
+      const std::size_t close = rest.find('"');
+      if (close == std::string_view::npos) {
+        scan_.error_here("unterminated label name");
+        return false;
+      }
+      if (rest.substr(0, close) == "init") init_ = index;
+      scan_.seek(scan_.position() + close + 1);
+      ++count_;
+      scan_.skip_blanks();
+    }
+    scan_.skip_line();
+    return true;
+  }
+
+  void read_state() {
+    model::StateIndex state = 0;
+    if (!scan_.read_state(num_states_, "a state index", state)) return;
+    scan_.skip_blanks();
+    if (!scan_.expect(':', "expected ':' after the state index")) return;
+    for (scan_.skip_blanks(); !scan_.at_line_end(); scan_.skip_blanks()) {
+      const char* token = scan_.position();
+      std::uint32_t label = 0;
+      if (!scan_.read_index("a label index", label)) return;
+      if (label >= count_) {
+        scan_.error_at(token, 1,
+                       "label " + std::to_string(label) + " is not declared in the first line");
+        return;
+      }
+      if (label == init_) initial_.push_back(state);
+    }
+  }
+
+  PrismScanner scan_;
+  std::uint32_t num_states_;
+  std::vector<model::StateIndex>& initial_;
+  std::uint32_t count_ = 0;
+  std::uint32_t init_ = kNone;
+};
+
+}  // namespace
+
+bool read_prism_initial_states(FileId file, DiagnosticEngine& diagnostics, std::uint32_t num_states,
+                               std::vector<model::StateIndex>& initial, bool& found) {
+  found = false;
+  return LabelsReader(file, diagnostics, num_states, initial).read(found);
+}
+
+}  // namespace oasis::formats
