@@ -148,19 +148,23 @@ class Explorer {
       missing(t, s, a);
       return;
     }
-    Rational sum = 0;
+    Rational sum = 0;  // of the state-dependent probabilities
+    bool state_dependent = false;
     for (const Outcome& outcome : command->outcomes) {
       const ValueId p = probability(outcome);
+      if (!outcome.probability.is_constant()) {
+        state_dependent = true;
+        sum += values_[p];
+      }
       if (p == RationalPool::kZero) continue;
-      if (!outcome.probability.is_constant()) sum += values_[p];
       successor_ = valuation_;
       for (const Update& update : outcome.updates) apply(update);
       const std::uint32_t target = intern(successor_, outcome.range);
       tables_[t].builder->add(s, a, target, p);
     }
-    if (!command->outcomes.empty() && !command->outcomes.front().probability.is_constant()) {
-      check_sum(*command, sum);
-    }
+    // The checker has summed the commands whose probabilities are all constant. A single
+    // state-dependent one, wherever it is (not only first), leaves the sum to each state.
+    if (state_dependent) check_sum(*command, sum);
   }
 
   void missing(std::size_t t, std::uint32_t s, std::uint32_t a) {
