@@ -3,6 +3,7 @@
 #include <cstdio>
 #include <iostream>
 
+#include "formats/model_file.hpp"
 #include "model/explorer.hpp"
 #include "spec/frontend.hpp"
 
@@ -24,8 +25,12 @@ std::optional<LoadedModel> load_model(const std::string& path, SourceManager& so
   LoadedModel loaded;
   loaded.path = path;
   if (has_suffix(path, ".aut") || has_suffix(path, ".tra")) {
-    diagnostics.file_error(path, "importing explicit models is not available in this build yet");
-    return std::nullopt;
+    formats::ReadOptions read_options;
+    read_options.max_bytes = options.max_model_bytes;
+    read_options.max_states = options.max_states;
+    loaded.model = formats::read_model_file(path, sources, diagnostics, read_options);
+    if (!loaded.model) return std::nullopt;
+    return loaded;
   }
   loaded.ir = spec::load_spec(path, sources, diagnostics, {.max_bytes = options.max_spec_bytes});
   if (!loaded.ir) return std::nullopt;
