@@ -23,17 +23,6 @@ void DistributionCollector::begin(model::StateIndex source, model::ActionIndex a
   edge_begin_.push_back(static_cast<model::EdgeIndex>(targets_.size()));
 }
 
-void DistributionCollector::cancel() {
-  if (sources_.empty()) return;
-  targets_.resize(edge_begin_.back());
-  probabilities_.resize(edge_begin_.back());
-  sources_.pop_back();
-  actions_.pop_back();
-  offsets_.pop_back();
-  payloads_.pop_back();
-  edge_begin_.pop_back();
-}
-
 std::optional<model::TransitionMatrix> DistributionCollector::finish(
     std::uint32_t num_states, std::uint32_t num_actions, RationalPool& values,
     std::vector<Duplicate>& duplicates) {

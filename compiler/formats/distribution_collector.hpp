@@ -35,9 +35,6 @@ class DistributionCollector {
     targets_.push_back(target);
     probabilities_.push_back(probability);
   }
-  // Drops the distribution begun last (its line turned out to be malformed).
-  void cancel();
-
   [[nodiscard]] std::size_t size() const { return sources_.size(); }
   [[nodiscard]] std::size_t num_edges() const { return targets_.size(); }
   // Edge indices are 32-bit; readers stop before this is reached.
