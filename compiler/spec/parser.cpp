@@ -81,8 +81,13 @@ class Parser {
   }
 
   [[noreturn]] void fail(const Token& token, const std::string& message) {
-    // An Invalid token was already reported by the lexer: say nothing more about it.
-    if (!token.is(TokenKind::Invalid)) diagnostics_.error(range_of(token), message);
+    // An Invalid token was already reported by the lexer: say nothing more about it. Nor
+    // about a token that already has an error: recovery that cannot advance (at the end of
+    // the file, every enclosing block's missing '}') would only echo the first message.
+    if (!token.is(TokenKind::Invalid) && &token != last_failed_) {
+      diagnostics_.error(range_of(token), message);
+    }
+    last_failed_ = &token;
     throw SyntaxError{};
   }
 
@@ -720,6 +725,7 @@ class Parser {
   std::size_t pos_ = 0;
   const Token* previous_ = nullptr;
   int nesting_ = 0;
+  const Token* last_failed_ = nullptr;  // the token of the last syntax error
   SpecFile result_;
 };
 
