@@ -611,6 +611,15 @@ TEST(ParserErrors, UnclosedBlock) {
       << parsed.output();
 }
 
+TEST(ParserErrors, UnclosedNestedBlocksGiveOneError) {
+  // Each enclosing block meets the same end of file; that is one mistake, said once.
+  for (const char* text : {"mdp m {\n  states a;\n  dynamics [a] {\n",
+                           "catalog { context c { reward a : 1;", "mdp m { dynamics [a] { x' ="}) {
+    Parsed parsed(text);
+    EXPECT_EQ(parsed.errors(), 1U) << text << "\n" << parsed.output();
+  }
+}
+
 TEST(ParserErrors, MissingModelName) {
   Parsed parsed("mdp { }");
   EXPECT_TRUE(parsed.reported("1:5: error: expected a model name after 'mdp', found '{'"))
