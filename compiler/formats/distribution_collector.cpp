@@ -84,21 +84,7 @@ void DistributionCollector::build_copying(model::TransitionMatrix& matrix, Ratio
     row.clear();
     for (std::size_t e = first; e < last; ++e)
       row.emplace_back(targets_[e], probabilities_[e]);
-    std::stable_sort(row.begin(), row.end(),
-                     [](const auto& x, const auto& y) { return x.first < y.first; });
-    for (std::size_t i = 0; i < row.size();) {
-      std::size_t j = i + 1;
-      ValueId probability = row[i].second;
-      if (j < row.size() && row[j].first == row[i].first) {
-        Rational sum = values[probability];
-        for (; j < row.size() && row[j].first == row[i].first; ++j)
-          sum += values[row[j].second];
-        probability = values.intern(sum);
-      }
-      matrix.edge_target.push_back(row[i].first);
-      matrix.edge_probability.push_back(probability);
-      i = j;
-    }
+    model::append_distribution(row, values, matrix);
   }
   begin.back() = static_cast<model::EdgeIndex>(matrix.edge_target.size());
   std::vector<model::StateIndex>().swap(targets_);

@@ -92,26 +92,31 @@ TransitionMatrix TransitionBuilder::finish(RationalPool& values) {
     matrix.choice_begin[c] = row_begin;
     row.clear();
     for (EdgeIndex e = begin; e < end; ++e) row.emplace_back(sorted_target[e], sorted_probability[e]);
-    const bool sorted = std::is_sorted(row.begin(), row.end(), [](auto& x, auto& y) {
-      return x.first < y.first;
-    });
-    if (!sorted) std::sort(row.begin(), row.end());
-    for (std::size_t i = 0; i < row.size();) {
-      std::size_t j = i + 1;
-      ValueId probability = row[i].second;
-      if (j < row.size() && row[j].first == row[i].first) {
-        Rational sum = values[probability];
-        for (; j < row.size() && row[j].first == row[i].first; ++j) sum += values[row[j].second];
-        probability = values.intern(sum);
-      }
-      matrix.edge_target.push_back(row[i].first);
-      matrix.edge_probability.push_back(probability);
-      i = j;
-    }
+    append_distribution(row, values, matrix);
     row_begin = static_cast<EdgeIndex>(matrix.edge_target.size());
   }
   matrix.choice_begin[num_choices] = row_begin;
   return matrix;
+}
+
+void append_distribution(std::vector<std::pair<StateIndex, ValueId>>& row, RationalPool& values,
+                         TransitionMatrix& matrix) {
+  const auto by_target = [](const auto& x, const auto& y) { return x.first < y.first; };
+  if (!std::is_sorted(row.begin(), row.end(), by_target)) {
+    std::stable_sort(row.begin(), row.end(), by_target);
+  }
+  for (std::size_t i = 0; i < row.size();) {
+    std::size_t j = i + 1;
+    ValueId probability = row[i].second;
+    if (j < row.size() && row[j].first == row[i].first) {
+      Rational sum = values[probability];
+      for (; j < row.size() && row[j].first == row[i].first; ++j) sum += values[row[j].second];
+      probability = values.intern(sum);
+    }
+    matrix.edge_target.push_back(row[i].first);
+    matrix.edge_probability.push_back(probability);
+    i = j;
+  }
 }
 
 std::optional<std::string> find_structural_problem(const ExplicitModel& model) {

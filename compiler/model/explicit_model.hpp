@@ -126,6 +126,12 @@ class TransitionBuilder {
   std::vector<ValueId> probabilities_;
 };
 
+// Appends one distribution to the end of `matrix`'s edge arrays: sorts `row` by target
+// (stably) and merges repeated targets by adding their probabilities exactly. The caller
+// sets choice_begin.
+void append_distribution(std::vector<std::pair<StateIndex, ValueId>>& row, RationalPool& values,
+                         TransitionMatrix& matrix);
+
 // Structural problems of a model, for tests and for checking imported files: a target out of
 // range, a distribution that does not sum to exactly 1, a non-positive probability, arrays of
 // the wrong size. Returns the first problem found as a sentence, or nullopt.
