@@ -49,6 +49,7 @@ class Explorer {
     const CommandTable* commands = nullptr;
     std::vector<std::vector<const Command*>> by_state;  // [action][state]; explicit only
     std::unique_ptr<TransitionBuilder> builder;  // the state count is set at the end
+    bool used = false;                           // by some context: only these are explored
   };
 
   void prepare_tables() {
@@ -67,6 +68,9 @@ class Explorer {
       table.builder = std::make_unique<TransitionBuilder>(0, num_actions);
       tables_.push_back(std::move(table));
     }
+    // When every context replaces the model's commands of some action, the model's own table
+    // (0) is no context's: the states only it reaches must not join the state space.
+    for (const ContextIR& context : ir_.contexts) tables_.at(context.command_table).used = true;
   }
 
   void check_explicit_size(std::size_t states, std::size_t actions) {
@@ -118,6 +122,7 @@ class Explorer {
     for (std::uint32_t s = 0; s < store_.size(); ++s) {
       store_.unpack(s, valuation_);
       for (std::size_t t = 0; t < tables_.size(); ++t) {
+        if (!tables_[t].used) continue;
         for (std::uint32_t a = 0; a < num_actions; ++a) step(t, s, a);
       }
       if (options_.progress && (s & 0xFFFFU) == 0xFFFFU) options_.progress(store_.size(), s + 1);
@@ -250,6 +255,10 @@ class Explorer {
     fill_state_space(model.states);
     std::vector<std::shared_ptr<const TransitionMatrix>> matrices;
     for (Table& table : tables_) {
+      if (!table.used) {
+        matrices.push_back(nullptr);
+        continue;
+      }
       table.builder->set_num_states(store_.size());
       matrices.push_back(std::make_shared<const TransitionMatrix>(table.builder->finish(values_)));
       table.builder.reset();
