@@ -372,6 +372,26 @@ TEST(ExploreFactored, ContextsReachMoreStatesTogether) {
   EXPECT_EQ(row(model, 1, state_named(model, "(x=2)"), 0), (Row{{"(x=3)", 1}}));
 }
 
+TEST(ExploreFactored, OnlyStatesSomeContextReaches) {
+  // Every context replaces the model's `go`, so the model's own commands describe no
+  // context: the states only they reach (x = 2 .. 5) are in no context's state space.
+  const auto explored = explore_text(
+      "mdp m {\n"
+      "  var x : [0 .. 10];\n"
+      "  actions go;\n"
+      "  default self;\n"
+      "  [go] x < 5 -> (x' = x + 1);\n"
+      "}\n"
+      "catalog {\n"
+      "  context slow { [go] x < 1 -> (x' = x + 1); }\n"
+      "  context stuck { [go] true -> true; }\n"
+      "  switching stay 0.5;\n"
+      "}\n");
+  ASSERT_TRUE(explored->model) << explored->output();
+  EXPECT_EQ(state_names(*explored->model), (std::vector<std::string>{"(x=0)", "(x=1)"}));
+  EXPECT_EQ(row(*explored->model, 0, 1, 0), (Row{{"(x=1)", 1}}));
+}
+
 TEST(ExploreFactored, StateAndChoiceRewardsAddUp) {
   const auto explored = explore_text(
       "mdp m {\n"
