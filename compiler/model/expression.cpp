@@ -23,12 +23,6 @@ bool add(std::int64_t a, std::int64_t b, std::int64_t* r) { return __builtin_add
 bool subtract(std::int64_t a, std::int64_t b, std::int64_t* r) { return __builtin_sub_overflow(a, b, r); }
 bool multiply(std::int64_t a, std::int64_t b, std::int64_t* r) { return __builtin_mul_overflow(a, b, r); }
 
-std::int64_t floor_div(std::int64_t a, std::int64_t b) {
-  std::int64_t q = a / b;
-  if ((a % b != 0) && ((a < 0) != (b < 0))) --q;
-  return q;
-}
-
 // Comparison for int64 and exact rationals alike.
 template <typename Number>
 bool compare(Op op, const Number& a, const Number& b) {
@@ -135,8 +129,12 @@ std::int64_t evaluate_int(const Expression& expr, Valuation state) {
       const std::int64_t a = evaluate_int(args[0], state);
       const std::int64_t b = evaluate_int(args[1], state);
       if (b == 0) throw EvaluationError(expr.range, "mod by zero");
-      if (b == -1) return 0;
-      return a - floor_div(a, b) * b;  // result has the sign of b, like Python and PRISM
+      if (b == -1) return 0;  // a % -1 would overflow for INT64_MIN
+      // The result has the sign of b, like Python and PRISM. Adjusting the truncated
+      // remainder cannot overflow (r and b have opposite signs); a - floor(a / b) * b did,
+      // e.g. for mod(1, INT64_MIN), where floor(a / b) * b is 2^63.
+      const std::int64_t r = a % b;
+      return r != 0 && ((r < 0) != (b < 0)) ? r + b : r;
     }
     case Op::Floor:
     case Op::Ceil: {
