@@ -534,6 +534,30 @@ TEST(Checker, FoldingOfFunctionsAndIntegers) {
   EXPECT_EQ(update.value.type, model::Type::Int);
 }
 
+TEST(Checker, ModFollowsTheSignOfTheDivisorEvenAtTheLimits) {
+  // Each variable's range is the single value under test.
+  const std::vector<std::pair<std::string, std::int64_t>> cases = {
+      {"mod(-7, 3)", 2},     {"mod(7, -3)", -2},
+      {"mod(-7, -3)", -1},   {"mod(7, 3)", 1},
+      {"mod(MIN, -1)", 0},   {"mod(1, MIN)", INT64_MIN + 1},
+      {"mod(-1, MIN)", -1},  {"mod(MIN, MIN)", 0},
+      {"mod(MAX, MIN)", -1}, {"mod(MIN, MAX)", INT64_MAX - 1},
+      {"mod(MAX, 2)", 1},    {"mod(MIN, 3)", 1},
+  };
+  std::string spec =
+      "mdp m {\n  const MAX = 9223372036854775807;\n  const MIN = -MAX - 1;\n"
+      "  actions go;\n  default self;\n";
+  for (std::size_t i = 0; i < cases.size(); ++i) {
+    spec +=
+        "  var v" + std::to_string(i) + " : [" + cases[i].first + " .. " + cases[i].first + "];\n";
+  }
+  const ModelIR ir = expect_ok(spec + "}\n");
+  ASSERT_EQ(ir.variables.size(), cases.size());
+  for (std::size_t i = 0; i < cases.size(); ++i) {
+    EXPECT_EQ(ir.variables[i].low, cases[i].second) << cases[i].first;
+  }
+}
+
 TEST(Checker, StateDependentProbabilitiesStayExpressions) {
   const ModelIR ir =
       expect_ok(factored_model("[go] true -> x / 3 : (x' = 0) + (3 - x) / 3 : (x' = 3);"));
