@@ -488,6 +488,34 @@ TEST(CheckerErrors, DuplicateNamesHaveANoteAtTheFirst) {
       << checked.output;
 }
 
+TEST(CheckerErrors, EveryRepeatHasANoteAtTheFirst) {
+  struct NoteCase {
+    std::string source;
+    std::string note;  // `check.oasis:LINE:COL: note: ...`
+  };
+  const std::vector<NoteCase> cases = {
+      {"mdp m {\n  states a, b;\n  actions go;\n  a, go -> b;\n  b, go -> a;\n  a, go -> a;\n}",
+       "check.oasis:4:3: note: the first transition is here"},
+      {factored_model("[go] true -> (x' = 1) & (x' = 2);"),
+       "check.oasis:5:15: note: first update here"},
+      {continuous_model("dynamics [go] { }\n  dynamics [go] { }"),
+       "check.oasis:6:1: note: first dynamics here"},
+      {with_catalog(kExplicit,
+                    "context c = base; context d = base;\n"
+                    "switching { c -> c; d -> d; c -> d; }"),
+       "check.oasis:4:13: note: first row here"},
+      {with_catalog(kExplicit, "context c = base; context c = base;"),
+       "check.oasis:3:9: note: 'c' was first declared here"},
+      {"mdp m { states a; actions go, go; default self; }",
+       "check.oasis:1:27: note: 'go' was first declared here"},
+  };
+  for (const NoteCase& c : cases) {
+    const Checked checked = check_source(c.source);
+    EXPECT_FALSE(checked.ir);
+    EXPECT_NE(checked.output.find(c.note), std::string::npos) << c.note << "\n" << checked.output;
+  }
+}
+
 TEST(CheckerErrors, SeveralErrorsInOneSpecAreAllReported) {
   const Checked checked =
       check_source(factored_model("[go] x == 0 -> (x' = 9);\n"
