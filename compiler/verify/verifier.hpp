@@ -1,0 +1,20 @@
+#pragma once
+// The independent check of a bisimulation result: is `partition` exactly the coarsest
+// bisimulation of one context of `model`? Used by `oasisc verify` and by the tests of the
+// bisimulation engine, and written to share nothing with it but the model and Partition.
+
+#include <cstddef>
+
+#include "bisim/partition.hpp"
+#include "model/explicit_model.hpp"
+#include "verify/violation.hpp"
+
+namespace oasis::verify {
+
+// Runs check_partition_shape, check_bisimulation and check_coarsest in turn and returns the
+// first violation, if any. Exact throughout: probabilities and rewards are compared as GMP
+// rationals.
+VerificationResult verify_partition(const model::ExplicitModel& model, std::size_t context,
+                                    const bisim::Partition& partition);
+
+}  // namespace oasis::verify
