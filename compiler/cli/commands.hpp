@@ -26,5 +26,6 @@ using CommandRunner = std::function<int()>;
 CommandRunner add_check_command(CLI::App& app);
 CommandRunner add_info_command(CLI::App& app);
 CommandRunner add_export_command(CLI::App& app);
+CommandRunner add_quotient_command(CLI::App& app);
 
 }  // namespace oasis::cli

@@ -1,0 +1,43 @@
+#pragma once
+// The coarsest bisimulation of one context of an explicit MDP (Definition 1 of the paper,
+// after Givan, Dean and Greig 2003): states s and t are equivalent iff for every action a
+//   - a is enabled in both or in neither,
+//   - R(s, a) = R(t, a), and
+//   - P(B | s, a) = P(B | t, a) for every block B of the partition.
+// Computed by partition refinement that processes the smaller half (see refinement.cpp).
+
+#include <cstdint>
+#include <functional>
+#include <optional>
+
+#include "bisim/partition.hpp"
+#include "model/explicit_model.hpp"
+
+namespace oasis::bisim {
+
+struct RefinementProgress {
+  std::uint64_t splitters_processed = 0;
+  std::uint64_t splitters_queued = 0;
+  std::uint32_t blocks = 0;
+};
+
+struct RefinementOptions {
+  // Approximate mode for models whose probabilities were floating point; see
+  // docs/bisimulation.md for exactly what it guarantees. Unset: exact.
+  std::optional<double> epsilon;
+  // Called now and then during refinement.
+  std::function<void(const RefinementProgress&)> progress;
+};
+
+struct RefinementStatistics {
+  std::uint64_t splitters = 0;      // blocks used as splitters
+  std::uint64_t edge_visits = 0;    // incoming edges scanned over all splitters
+  std::uint32_t initial_blocks = 0;  // blocks of the reward/enabled-action signature
+  bool exact_integer_sums = false;  // sums were exact integers over a common denominator
+};
+
+Partition coarsest_bisimulation(const model::ExplicitModel& model, std::size_t context,
+                                const RefinementOptions& options = {},
+                                RefinementStatistics* statistics = nullptr);
+
+}  // namespace oasis::bisim

@@ -1,0 +1,39 @@
+#pragma once
+// How refinement adds up probabilities. Three exact-or-declared-approximate representations
+// behind one small interface, chosen once per context:
+//   - Integer: every probability of the context is k / D for one common denominator D that
+//     fits in 62 bits, so a sum of probabilities (at most 1) is an exact integer <= D.
+//     This is the fast path and covers every model written with decimals or small fractions.
+//   - Rational: exact GMP sums, for denominators whose common multiple is too large.
+//   - Rounded (--epsilon): doubles, compared after rounding to a multiple of epsilon.
+
+#include <cmath>
+#include <cstdint>
+#include <optional>
+#include <vector>
+
+#include "model/explicit_model.hpp"
+
+namespace oasis::bisim {
+
+enum class WeightMode { Integer, Rational, Rounded };
+
+// Per probability id of the model's pool: its value in the chosen representation.
+struct WeightTable {
+  WeightMode mode = WeightMode::Integer;
+  std::vector<std::uint64_t> integer;  // Integer: numerator over the common denominator
+  std::vector<double> real;            // Rounded: the nearest double
+  double epsilon = 0;
+
+  // Picks Integer when the common denominator of the probabilities used by `matrix` fits,
+  // Rational otherwise; Rounded when `epsilon` is given.
+  static WeightTable choose(const model::ExplicitModel& model, const model::TransitionMatrix& matrix,
+                            std::optional<double> epsilon);
+
+  // The key a summed weight is compared by in Rounded mode.
+  [[nodiscard]] std::int64_t rounded_key(double weight) const {
+    return std::llround(weight / epsilon);
+  }
+};
+
+}  // namespace oasis::bisim

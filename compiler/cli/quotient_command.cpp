@@ -1,0 +1,205 @@
+// `oasisc quotient FILE`: the coarsest bisimulation quotient of every context.
+
+#include <sys/resource.h>
+#include <unistd.h>
+
+#include <atomic>
+#include <chrono>
+#include <iomanip>
+#include <iostream>
+#include <memory>
+#include <mutex>
+#include <nlohmann/json.hpp>
+#include <thread>
+
+#include "bisim/quotient.hpp"
+#include "bisim/refinement.hpp"
+#include "cli/commands.hpp"
+#include "cli/quotient_output.hpp"
+#include "formats/aut_writer.hpp"
+#include "support/atomic_file.hpp"
+
+namespace oasis::cli {
+namespace {
+
+struct QuotientOptions {
+  std::string file;
+  std::vector<std::string> contexts;
+  std::string format = "text";
+  std::string output;
+  bool partition = false;
+  std::optional<double> epsilon;
+  unsigned jobs = 0;
+  CommonOptions common;
+};
+
+double peak_memory_mib() {
+  rusage usage{};
+  ::getrusage(RUSAGE_SELF, &usage);
+  return static_cast<double>(usage.ru_maxrss) / 1024.0;
+}
+
+// The contexts to quotient: those named, or all.
+std::optional<std::vector<std::size_t>> select_contexts(const model::ExplicitModel& model,
+                                                        const QuotientOptions& options) {
+  std::vector<std::size_t> selected;
+  if (options.contexts.empty()) {
+    for (std::size_t c = 0; c < model.contexts.size(); ++c) selected.push_back(c);
+    return selected;
+  }
+  for (const std::string& name : options.contexts) {
+    std::size_t c = 0;
+    while (c < model.contexts.size() && model.contexts[c].name != name) ++c;
+    if (c == model.contexts.size()) {
+      std::cerr << options.file << ": error: the model has no context '" << name << "' (it has:";
+      for (const auto& context : model.contexts) std::cerr << ' ' << context.name;
+      std::cerr << ")\n";
+      return std::nullopt;
+    }
+    selected.push_back(c);
+  }
+  return selected;
+}
+
+// Quotients the selected contexts on up to `jobs` threads: contexts are independent and
+// share the model read-only.
+std::vector<ContextResult> run_contexts(const model::ExplicitModel& model,
+                                        const std::vector<std::size_t>& selected,
+                                        const QuotientOptions& options, bool progress) {
+  std::vector<ContextResult> results(selected.size());
+  std::atomic<std::size_t> next{0};
+  std::mutex output;
+  auto worker = [&] {
+    for (std::size_t i = next++; i < selected.size(); i = next++) {
+      const std::size_t c = selected[i];
+      bisim::RefinementOptions refinement;
+      refinement.epsilon = options.epsilon;
+      if (progress) {
+        refinement.progress = [&, c](const bisim::RefinementProgress& p) {
+          const std::lock_guard lock(output);
+          std::cerr << "\rrefining " << model.contexts[c].name << ": " << p.blocks << " blocks, "
+                    << p.splitters_processed << " splitters done, " << p.splitters_queued
+                    << " queued\033[K" << std::flush;
+        };
+      }
+      const auto start = std::chrono::steady_clock::now();
+      ContextResult& result = results[i];
+      result.context = c;
+      result.partition = bisim::coarsest_bisimulation(model, c, refinement, &result.statistics);
+      result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    }
+  };
+  const unsigned hardware = std::max(1U, std::thread::hardware_concurrency());
+  const unsigned jobs = std::min<std::size_t>(options.jobs == 0 ? hardware : options.jobs, selected.size());
+  std::vector<std::thread> threads;
+  for (unsigned j = 1; j < jobs; ++j) threads.emplace_back(worker);
+  worker();
+  for (std::thread& thread : threads) thread.join();
+  if (progress) std::cerr << "\r\033[K" << std::flush;
+  return results;
+}
+
+int write_output(const LoadedModel& loaded, const std::vector<ContextResult>& results,
+                 const QuotientOptions& options, double load_seconds) {
+  const model::ExplicitModel& model = *loaded.model;
+  const bool to_stdout = options.output.empty() || options.output == "-";
+  std::ostream& summary = (options.format == "text" || !to_stdout) ? std::cout : std::cerr;
+  print_summary(summary, model, results, load_seconds, peak_memory_mib(), options.epsilon);
+  if (options.format == "text") return 0;
+
+  std::string error;
+  for (std::size_t i = 0; i < results.size(); ++i) {
+    if (options.format == "json" && i > 0) break;  // one JSON document holds every context
+    std::string text;
+    if (options.format == "json") {
+      text = quotient_json(loaded, results, load_seconds, peak_memory_mib(), options.partition,
+                           options.epsilon)
+                 .dump(2) + "\n";
+    } else {
+      const model::ExplicitModel quotient = bisim::build_quotient(model, results[i].context, results[i].partition);
+      if (options.format == "aut") {
+        const std::string path = output_path(options.output, "aut", model.contexts[results[i].context].name,
+                                             results.size() > 1);
+        if (!formats::write_aut_file(quotient, 0, path, error)) {
+          std::cerr << path << ": error: " << error << '\n';
+          return 1;
+        }
+        continue;
+      }
+      text = quotient_dot(model, results[i], quotient);
+    }
+    if (to_stdout) {
+      std::cout << text;
+      continue;
+    }
+    const std::string path = output_path(options.output, options.format, model.contexts[results[i].context].name,
+                                         options.format != "json" && results.size() > 1);
+    AtomicFile file;
+    if (!file.open(path, error) || (file.append(text), !file.commit(error))) {
+      std::cerr << path << ": error: " << error << '\n';
+      return 1;
+    }
+  }
+  return 0;
+}
+
+int run_quotient(const QuotientOptions& options) {
+  if (options.format == "aut" && (options.output.empty() || options.output == "-")) {
+    std::cerr << "oasisc: error: --format aut writes files: give one with -o FILE\n";
+    return 2;
+  }
+  SourceManager sources;
+  DiagnosticEngine diagnostics(sources, std::cerr, options.common.max_errors);
+  const auto start = std::chrono::steady_clock::now();
+  const LoadOptions load_options = effective_load_options(options.common);
+  auto loaded = load_model(options.file, sources, diagnostics, load_options);
+  if (!loaded || diagnostics.has_errors()) return 1;
+  if (!loaded->model) {
+    std::cerr << options.file << ": error: continuous models are partitioned by the geometry "
+                                 "layer, which this build does not have yet\n";
+    return 1;
+  }
+  const double load_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const auto selected = select_contexts(*loaded->model, options);
+  if (!selected) return 1;
+  const auto results = run_contexts(*loaded->model, *selected, options, load_options.progress);
+  return write_output(*loaded, results, options, load_seconds);
+}
+
+}  // namespace
+
+CommandRunner add_quotient_command(CLI::App& app) {
+  auto options = std::make_shared<QuotientOptions>();
+  CLI::App* command = app.add_subcommand(
+      "quotient", "Compute the coarsest bisimulation quotient of every context");
+  command->footer(
+      "Two states are bisimilar when, for every action, both have it enabled or neither,\n"
+      "their rewards R(s,a) are equal, and their probabilities of reaching every block are\n"
+      "equal (the paper's Definition 1). Probabilities are compared exactly; --epsilon\n"
+      "rounds them instead, for models written with floating-point numbers, and says so in\n"
+      "its output (docs/bisimulation.md explains what that mode guarantees).\n\n"
+      "Formats: text (a summary), json (keys contexts[].name, states, transitions, blocks,\n"
+      "seconds; with --partition also contexts[].partition), aut (the quotient MDP for\n"
+      "mCRL2 and 'oasisc info'), dot (Graphviz). With several contexts, aut and dot write\n"
+      "one file per context: OUT with the context name before the extension.\n\n"
+      "Examples:\n"
+      "  oasisc quotient specs/discrete_tracking.oasis\n"
+      "  oasisc quotient specs/discrete_tracking.oasis --format json --partition -o result.json\n"
+      "  oasisc verify specs/discrete_tracking.oasis result.json\n"
+      "  oasisc quotient model.aut --format aut -o model.min.aut");
+  command->add_option("file", options->file, "Spec (.oasis) or model (.aut, .tra) file")->required();
+  command->add_option("-c,--context", options->contexts, "Quotient only this context (repeatable)");
+  command->add_option("-f,--format", options->format, "Output: text, json, aut or dot")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"text", "json", "aut", "dot"}));
+  command->add_option("-o,--output", options->output, "Output file (default: standard output)");
+  command->add_flag("--partition", options->partition, "Include the blocks in the JSON output");
+  command->add_option("--epsilon", options->epsilon,
+                      "Compare probabilities rounded to multiples of E (approximate mode)")
+      ->check(CLI::Range(1e-15, 0.5));
+  command->add_option("-j,--jobs", options->jobs, "Contexts quotiented in parallel (default: cores)");
+  add_common_options(*command, options->common);
+  return [options] { return run_quotient(*options); };
+}
+
+}  // namespace oasis::cli

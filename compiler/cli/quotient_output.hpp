@@ -1,0 +1,44 @@
+#pragma once
+// What `oasisc quotient` prints and writes: the summary table, the JSON document, DOT.
+
+#include <iosfwd>
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "bisim/partition.hpp"
+#include "bisim/refinement.hpp"
+#include "cli/model_loader.hpp"
+
+namespace oasis::cli {
+
+struct ContextResult {
+  std::size_t context = 0;
+  bisim::Partition partition;
+  bisim::RefinementStatistics statistics;
+  double seconds = 0;
+};
+
+void print_summary(std::ostream& out, const model::ExplicitModel& model,
+                   const std::vector<ContextResult>& results, double load_seconds,
+                   double peak_mib, std::optional<double> epsilon);
+
+// Keys: file, model, exact, epsilon, load_seconds, peak_memory_mib, contexts[] with name,
+// states, transitions, blocks, seconds, splitters, edge_visits (and partition when asked:
+// blocks as lists of state names, or of indices for unnamed imported states).
+nlohmann::json quotient_json(const LoadedModel& loaded, const std::vector<ContextResult>& results,
+                             double load_seconds, double peak_mib, bool with_partition,
+                             std::optional<double> epsilon);
+
+// Graphviz: a node per block (its first members and rewards), a point per enabled
+// (block, action) and edges labelled with exact probabilities.
+std::string quotient_dot(const model::ExplicitModel& model, const ContextResult& result,
+                         const model::ExplicitModel& quotient);
+
+// `output` itself, or with ".CONTEXT" inserted before the extension when several contexts
+// go to separate files.
+std::string output_path(const std::string& output, const std::string& format,
+                        const std::string& context, bool per_context);
+
+}  // namespace oasis::cli
