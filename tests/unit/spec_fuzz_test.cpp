@@ -358,6 +358,8 @@ ProcessResult run_oasisc_check(const fs::path& file, const fs::path& stderr_file
     const char* argv[] = {OASISC_PATH,        "check",      "--max-states",
                           max_states.c_str(), path.c_str(), nullptr};
     ::execv(OASISC_PATH, const_cast<char* const*>(argv));
+    const char message[] = "spec_fuzz_test: cannot execute " OASISC_PATH "\n";
+    [[maybe_unused]] const auto written = ::write(STDERR_FILENO, message, sizeof message - 1);
     ::_exit(127);
   }
   if (pid < 0) return result;
@@ -379,6 +381,7 @@ ProcessResult run_oasisc_check(const fs::path& file, const fs::path& stderr_file
 }
 
 TEST(SpecFuzzProcess, OasiscCheckSurvivesMutatedFiles) {
+  ASSERT_TRUE(fs::exists(OASISC_PATH)) << OASISC_PATH << " is missing: build oasisc first";
   const std::vector<SpecInput> inputs = spec_inputs();
   ASSERT_FALSE(inputs.empty());
   const fs::path directory =
