@@ -1,0 +1,34 @@
+#pragma once
+// Reading the partitions in a RESULT file (`oasisc quotient --format json --partition`) back
+// into Partitions of a model's states, for `oasisc verify`. Every way the file can fail to
+// describe a partition of the model is an error here, so that the verifier only ever sees
+// well-formed partitions and its violations are about bisimulation.
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "bisim/partition.hpp"
+#include "model/explicit_model.hpp"
+
+namespace oasis::cli {
+
+struct ContextPartition {
+  std::size_t context = 0;  // index in model.contexts
+  // Blocks numbered from 0 in the order the file lists them (not renumbered), so that
+  // messages about "block 2" point at the file's third block.
+  bisim::Partition partition;
+};
+
+struct PartitionResult {
+  std::vector<ContextPartition> contexts;  // in the order of the file
+  bool approximate = false;                // the file says "exact": false (--epsilon)
+};
+
+// Reads `path`. States are names as model.states.name() prints them, or integer indices.
+// On failure returns nullopt and sets `error` to one sentence (without the path).
+std::optional<PartitionResult> read_partition_result(const std::string& path,
+                                                     const model::ExplicitModel& model,
+                                                     std::string& error);
+
+}  // namespace oasis::cli
