@@ -24,7 +24,7 @@ using verify::ViolationKind;
 
 // Sanitizers make everything ~10x slower; fewer models keep that run near a minute.
 #if defined(__SANITIZE_ADDRESS__)
-constexpr std::uint64_t kModels = 1500;
+constexpr std::uint64_t kModels = 1000;
 #else
 constexpr std::uint64_t kModels = 3000;
 #endif
