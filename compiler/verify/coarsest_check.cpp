@@ -1,8 +1,8 @@
 #include "verify/coarsest_check.hpp"
 
-#include <map>
+#include <algorithm>
 #include <optional>
-#include <tuple>
+#include <unordered_map>
 #include <vector>
 
 #include "verify/block_distribution.hpp"
@@ -13,73 +13,126 @@ namespace {
 using model::ActionIndex;
 using model::StateIndex;
 
-using Distribution = std::vector<std::pair<std::uint32_t, Rational>>;
-
-// One block of the quotient: for each action, nothing when it is disabled, else its reward
-// and its distribution over blocks.
-struct QuotientState {
-  std::vector<std::optional<std::pair<Rational, Distribution>>> choices;
+// An enabled choice of a quotient state. Rewards and probabilities are ids in a pool local
+// to the check, so that signatures are vectors of integers: equal ids, equal rationals.
+struct QuotientChoice {
+  ActionIndex action = 0;
+  ValueId reward = 0;
+  std::vector<std::pair<bisim::BlockIndex, ValueId>> distribution;
 };
 
-// (current class, [(action, reward, distribution over classes)] for the enabled actions).
-using Signature =
-    std::pair<std::uint32_t, std::vector<std::tuple<ActionIndex, Rational, Distribution>>>;
-
-std::vector<QuotientState> build_quotient(const model::ExplicitModel& model, std::size_t context,
-                                          const bisim::Partition& partition) {
+// The quotient: block b behaves as its first member does (all members agree, since the
+// partition is a bisimulation).
+std::vector<std::vector<QuotientChoice>> build_quotient(const model::ExplicitModel& model,
+                                                        std::size_t context,
+                                                        const bisim::Partition& partition,
+                                                        RationalPool& pool) {
   const model::TransitionMatrix& matrix = *model.contexts[context].transitions;
   std::vector<std::optional<StateIndex>> first_member(partition.num_blocks);
   for (StateIndex s = 0; s < partition.num_states(); ++s) {
     if (!first_member[partition.block_of[s]]) first_member[partition.block_of[s]] = s;
   }
-  std::vector<QuotientState> quotient(partition.num_blocks);
+  std::vector<std::vector<QuotientChoice>> quotient(partition.num_blocks);
   for (bisim::BlockIndex b = 0; b < partition.num_blocks; ++b) {
     const StateIndex r = *first_member[b];
-    quotient[b].choices.resize(model.num_actions());
     for (ActionIndex a = 0; a < model.num_actions(); ++a) {
       if (!matrix.enabled(r, a)) continue;
-      quotient[b].choices[a].emplace(model.reward(context, r, a),
-                                     block_distribution(model, context, partition.block_of, r, a));
+      QuotientChoice choice{a, pool.intern(model.reward(context, r, a)), {}};
+      for (const auto& [block, p] : block_distribution(model, context, partition.block_of, r, a)) {
+        choice.distribution.emplace_back(block, pool.intern(p));
+      }
+      quotient[b].push_back(std::move(choice));
     }
   }
   return quotient;
 }
 
-// The distribution over blocks `d` as a distribution over classes.
-Distribution over_classes(const Distribution& d, const std::vector<std::uint32_t>& class_of) {
-  std::map<std::uint32_t, Rational> sums;
-  for (const auto& [block, p] : d)
-    sums[class_of[block]] += p;
-  return {sums.begin(), sums.end()};
+// Exact addition of pooled values, remembered: the same few sums recur in every round (a
+// class holding both targets of a choice), and GMP arithmetic would dominate the check.
+class PooledSums {
+ public:
+  explicit PooledSums(RationalPool& pool) : pool_(pool) {}
+
+  ValueId add(ValueId x, ValueId y) {
+    if (x > y) std::swap(x, y);
+    const std::uint64_t key = (std::uint64_t{x} << 32) | y;
+    const auto it = sums_.find(key);
+    if (it != sums_.end()) return it->second;
+    const ValueId sum = pool_.intern(pool_[x] + pool_[y]);
+    sums_.emplace(key, sum);
+    return sum;
+  }
+
+ private:
+  RationalPool& pool_;
+  std::unordered_map<std::uint64_t, ValueId> sums_;
+};
+
+struct SignatureHash {
+  std::size_t operator()(const std::vector<std::uint32_t>& signature) const {
+    std::uint64_t hash = signature.size();
+    for (std::uint32_t x : signature)
+      hash = (hash ^ x) * 0x9e3779b97f4a7c15ULL;
+    return hash ^ (hash >> 29);
+  }
+};
+
+// One round of naive refinement: the new class of every quotient state is its signature
+//   (class, [action, reward, k, (class, probability) * k] for each enabled action),
+// where the probabilities of reaching each class are summed exactly. Returns the number of
+// classes.
+std::size_t refine(const std::vector<std::vector<QuotientChoice>>& quotient, PooledSums& sums,
+                   std::vector<std::uint32_t>& class_of) {
+  std::unordered_map<std::vector<std::uint32_t>, std::uint32_t, SignatureHash> numbering;
+  std::vector<std::uint32_t> next(quotient.size());
+  std::vector<std::uint32_t> signature;
+  std::vector<std::pair<std::uint32_t, ValueId>> by_class;
+  for (std::size_t b = 0; b < quotient.size(); ++b) {
+    signature.assign(1, class_of[b]);
+    for (const QuotientChoice& choice : quotient[b]) {
+      by_class.clear();
+      for (const auto& [block, p] : choice.distribution)
+        by_class.emplace_back(class_of[block], p);
+      std::sort(by_class.begin(), by_class.end());
+      signature.push_back(choice.action);
+      signature.push_back(choice.reward);
+      const std::size_t count_at = signature.size();
+      signature.push_back(0);
+      for (std::size_t i = 0; i < by_class.size();) {
+        std::size_t j = i + 1;
+        ValueId probability = by_class[i].second;
+        for (; j < by_class.size() && by_class[j].first == by_class[i].first; ++j) {
+          probability = sums.add(probability, by_class[j].second);
+        }
+        signature.push_back(by_class[i].first);
+        signature.push_back(probability);
+        ++signature[count_at];
+        i = j;
+      }
+    }
+    next[b] = numbering.try_emplace(signature, static_cast<std::uint32_t>(numbering.size()))
+                  .first->second;
+  }
+  class_of = std::move(next);
+  return numbering.size();
 }
 
 }  // namespace
 
 VerificationResult check_coarsest(const model::ExplicitModel& model, std::size_t context,
                                   const bisim::Partition& partition) {
-  const std::vector<QuotientState> quotient = build_quotient(model, context, partition);
+  RationalPool pool;
+  const auto quotient = build_quotient(model, context, partition, pool);
+  PooledSums sums(pool);
   const std::size_t n = quotient.size();
   std::vector<std::uint32_t> class_of(n, 0);
   std::size_t num_classes = n == 0 ? 0 : 1;
   while (true) {
-    std::map<Signature, std::uint32_t> numbering;
-    std::vector<std::uint32_t> next(n);
-    for (std::size_t b = 0; b < n; ++b) {
-      Signature signature{class_of[b], {}};
-      for (ActionIndex a = 0; a < quotient[b].choices.size(); ++a) {
-        const auto& choice = quotient[b].choices[a];
-        if (!choice) continue;
-        signature.second.emplace_back(a, choice->first, over_classes(choice->second, class_of));
-      }
-      const auto [it, inserted] =
-          numbering.try_emplace(std::move(signature), static_cast<std::uint32_t>(numbering.size()));
-      next[b] = it->second;
-    }
-    class_of = std::move(next);
+    const std::size_t count = refine(quotient, sums, class_of);
     // Each round only splits classes (the old class is part of the signature), so an
     // unchanged count means an unchanged partition: the fixpoint.
-    if (numbering.size() == num_classes) break;
-    num_classes = numbering.size();
+    if (count == num_classes) break;
+    num_classes = count;
   }
   if (num_classes == n) return {};
 
