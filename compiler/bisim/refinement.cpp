@@ -31,16 +31,18 @@
 //
 // Cost. A state enters the queue in a part at most half the size of the part it entered
 // before, so it is in a processed splitter O(log n) times and each edge is walked O(log n)
-// times: O(m log n) edge visits. Grouping hashes each touched state's signature: expected
-// O(1) per touched (state, action) pair, which is charged to the edge that touched it.
+// times: O(m log n) edge visits. Grouping reads each touched state's |A| choice records and
+// hashes its signature: O(|A|) per touched state, charged to the edge that touched it, so
+// O(|A| m log n) in all (|A| is a small constant for the models this tool is for).
 // Memory: compact arrays only, 32-bit indices; about 25 bytes per edge and 24 per choice.
 
 #include "bisim/refinement.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <limits>
-#include <unordered_map>
 
+#include "bisim/initial_partition.hpp"
 #include "bisim/weights.hpp"
 
 namespace oasis::bisim {
@@ -62,6 +64,20 @@ std::uint64_t mix(std::uint64_t x) {
   return x;
 }
 
+class Stopwatch {
+ public:
+  // Seconds since the previous lap (or construction).
+  double lap() {
+    const auto now = std::chrono::steady_clock::now();
+    const double seconds = std::chrono::duration<double>(now - last_).count();
+    last_ = now;
+    return seconds;
+  }
+
+ private:
+  std::chrono::steady_clock::time_point last_ = std::chrono::steady_clock::now();
+};
+
 class Refiner {
  public:
   Refiner(const model::ExplicitModel& model, std::size_t context, const RefinementOptions& options)
@@ -76,21 +92,31 @@ class Refiner {
   Partition run(RefinementStatistics* statistics) {
     statistics_.exact_integer_sums = weights_.mode == WeightMode::Integer;
     if (num_states_ == 0) return {};
+    Stopwatch clock;
     build_reverse_edges();
+    statistics_.setup_seconds = clock.lap();
     initial_partition();
+    statistics_.initial_seconds = clock.lap();
     allocate_scratch();
     while (!queue_.empty()) {
-      const BlockIndex splitter = queue_.back();
-      queue_.pop_back();
-      blocks_[splitter].queued = false;
-      split_by(splitter);
-      ++statistics_.splitters;
-      if (options_.progress && (statistics_.splitters & 0x3FFFU) == 0) {
+      if (batch_pays_off()) {
+        split_by_whole_queue();
+      } else {
+        const BlockIndex splitter = queue_.back();
+        queue_.pop_back();
+        dequeue(splitter);
+        split_by(splitter);
+        ++statistics_.splitters;
+      }
+      if (options_.progress && (++steps_ & 0x3FFFU) == 0) {
         options_.progress({statistics_.splitters, queue_.size(), static_cast<std::uint32_t>(blocks_.size())});
       }
     }
+    statistics_.splitting_seconds = clock.lap();
     if (statistics != nullptr) *statistics = statistics_;
-    return canonical_partition(block_of_);
+    std::vector<BlockIndex> block_of(num_states_);
+    for (StateIndex s = 0; s < num_states_; ++s) block_of[s] = state_scratch_[s].block;
+    return canonical_partition(block_of);
   }
 
  private:
@@ -106,72 +132,71 @@ class Refiner {
     StateIndex representative;
     BlockIndex block;
     std::uint32_t size;
-    StateIndex first_state;  // list through next_in_group_
+    StateIndex first_state;  // list through StateScratch::next_in_group
     std::uint32_t next_in_block;  // list of the block's groups
     std::uint32_t next_same_hash;
+    std::uint32_t signature_begin;  // the representative's signature in group_signatures_
+    std::uint32_t signature_end;
+  };
+
+  // One (action, weight) pair of a signature. `key` is the integer sum (Integer mode), the
+  // rounded sum (Rounded) or the slot of the exact sum in rational_sum_ (Rational).
+  struct SignatureEntry {
+    ActionIndex action;
+    std::uint32_t splitter;  // batch passes: which queued splitter; 0 otherwise
+    std::uint64_t key;
+    double real = 0;  // batch passes in Rounded mode: the unrounded sum
+  };
+
+  // Per choice, scratch for one splitter: the summed weight and whether an edge reached
+  // it. The choices of a state are adjacent (s * |A| + a), so a state's signature is one
+  // short scan, usually within one cache line.
+  struct ChoiceScratch {
+    std::uint64_t sum = 0;
+    std::uint32_t touched = 0;
+  };
+
+  // Per state: its block and position (kept), whether the splitter touched it and its next
+  // state in its group (scratch). One record, so that a state costs one cache miss.
+  struct StateScratch {
+    BlockIndex block = 0;
+    std::uint32_t position = 0;
+    std::uint32_t touched = 0;
+    StateIndex next_in_group = kNone;
+  };
+
+  struct IncomingEdge {
+    ChoiceIndex choice;
+    ValueId probability;
   };
 
   // ---- set-up -----------------------------------------------------------------------------
 
-  // in_*: for every state t, the (choice, probability) of each edge into t.
+  // For every state t, the (choice, probability) of each edge into t.
   void build_reverse_edges() {
     in_begin_.assign(std::size_t{num_states_} + 1, 0);
     for (StateIndex t : matrix_.edge_target) ++in_begin_[t + 1];
     for (std::size_t t = 0; t < num_states_; ++t) in_begin_[t + 1] += in_begin_[t];
-    in_choice_.resize(matrix_.num_edges());
-    in_probability_.resize(matrix_.num_edges());
+    incoming_.resize(matrix_.num_edges());
     std::vector<EdgeIndex> cursor(in_begin_.begin(), in_begin_.end() - 1);
     const std::size_t num_choices = std::size_t{num_states_} * num_actions_;
     for (ChoiceIndex c = 0; c < num_choices; ++c) {
       for (EdgeIndex e = matrix_.choice_begin[c]; e < matrix_.choice_begin[c + 1]; ++e) {
-        const EdgeIndex slot = cursor[matrix_.edge_target[e]]++;
-        in_choice_[slot] = c;
-        in_probability_[slot] = matrix_.edge_probability[e];
+        incoming_[cursor[matrix_.edge_target[e]]++] = {c, matrix_.edge_probability[e]};
       }
     }
   }
 
-  // Blocks by (enabled actions, R(s, a) for each action): the coarsest partition that can
-  // hold a bisimulation, and stable with respect to the set of all states.
   void initial_partition() {
-    RationalPool rewards;  // R(s, a) values, interned so signatures compare as integers
-    std::vector<std::uint32_t> signature(num_actions_);
-    std::unordered_map<std::uint64_t, std::vector<std::pair<std::vector<std::uint32_t>, BlockIndex>>> seen;
-    block_of_.resize(num_states_);
-    std::vector<std::uint32_t> sizes;
+    const InitialBlocks initial = blocks_by_rewards(model_, context_, options_.epsilon);
+    state_scratch_.resize(num_states_);
+    std::vector<std::uint32_t> sizes(initial.count, 0);
     for (StateIndex s = 0; s < num_states_; ++s) {
-      std::uint64_t hash = 0x9e3779b97f4a7c15ULL;
-      for (ActionIndex a = 0; a < num_actions_; ++a) {
-        signature[a] = matrix_.enabled(s, a) ? reward_id(rewards, s, a) : kNone;
-        hash = mix(hash ^ signature[a]);
-      }
-      auto& candidates = seen[hash];
-      BlockIndex block = kNone;
-      for (const auto& [other, index] : candidates) {
-        if (other == signature) block = index;
-      }
-      if (block == kNone) {
-        block = static_cast<BlockIndex>(sizes.size());
-        sizes.push_back(0);
-        candidates.emplace_back(signature, block);
-      }
-      block_of_[s] = block;
-      ++sizes[block];
+      state_scratch_[s].block = initial.block_of[s];
+      ++sizes[initial.block_of[s]];
     }
     place_initial_blocks(sizes);
     statistics_.initial_blocks = static_cast<std::uint32_t>(blocks_.size());
-  }
-
-  std::uint32_t reward_id(RationalPool& rewards, StateIndex s, ActionIndex a) {
-    const model::RewardTable& table = model_.contexts[context_].rewards;
-    if (table.choice.empty() && weights_.mode != WeightMode::Rounded) {
-      return rewards.intern(model_.values[table.state[s]]);
-    }
-    Rational value = model_.reward(context_, s, a);
-    if (weights_.mode == WeightMode::Rounded) {
-      value = Rational(weights_.rounded_key(to_double(value)));  // rewards are rounded too
-    }
-    return rewards.intern(value);
   }
 
   void place_initial_blocks(const std::vector<std::uint32_t>& sizes) {
@@ -183,10 +208,10 @@ class Refiner {
       if (sizes[b] > sizes[largest]) largest = b;
     }
     elements_.resize(num_states_);
-    position_.resize(num_states_);
     for (StateIndex s = 0; s < num_states_; ++s) {
-      Block& block = blocks_[block_of_[s]];
-      position_[s] = block.end;
+      StateScratch& state = state_scratch_[s];
+      Block& block = blocks_[state.block];
+      state.position = block.end;
       elements_[block.end++] = s;
     }
     for (BlockIndex b = 0; b < blocks_.size(); ++b) {
@@ -196,21 +221,119 @@ class Refiner {
 
   void allocate_scratch() {
     const std::size_t num_choices = std::size_t{num_states_} * num_actions_;
-    switch (weights_.mode) {
-      case WeightMode::Integer: integer_sum_.assign(num_choices, 0); break;
-      case WeightMode::Rounded: real_sum_.assign(num_choices, 0.0); break;
-      case WeightMode::Rational: rational_slot_.assign(num_choices, kNone); break;
-    }
-    touched_choice_.assign(num_choices, false);
-    choice_next_.assign(num_choices, kNone);
-    state_head_.assign(num_states_, kNone);
-    next_in_group_.assign(num_states_, kNone);
+    if (weights_.mode == WeightMode::Rounded) real_sum_.assign(num_choices, 0.0);
+    if (weights_.mode == WeightMode::Rational) rational_slot_.assign(num_choices, kNone);
+    choice_scratch_.assign(num_choices, ChoiceScratch{});
     block_first_group_.assign(num_states_, kNone);
   }
 
-  void enqueue(BlockIndex block) {
+  void enqueue(BlockIndex block, bool count_edges = true) {
     blocks_[block].queued = true;
     queue_.push_back(block);
+    if (count_edges) queued_edges_ += incoming_edges(block);
+  }
+
+  void dequeue(BlockIndex block) {
+    blocks_[block].queued = false;
+    queued_edges_ -= incoming_edges(block);
+  }
+
+  // Edges into the block's states. Summing costs the block's size; a state is enqueued
+  // O(log n) times, so this adds O(n log n) in all.
+  [[nodiscard]] std::uint64_t incoming_edges(BlockIndex block) const {
+    std::uint64_t count = 0;
+    for (std::uint32_t i = blocks_[block].begin; i < blocks_[block].end; ++i) {
+      const StateIndex t = elements_[i];
+      count += in_begin_[t + 1] - in_begin_[t];
+    }
+    return count;
+  }
+
+  // ---- the whole queue at once ------------------------------------------------------------
+  //
+  // When the queued splitters together receive a large share of the edges, walking their
+  // incoming edges one splitter at a time scatters reads and writes over the whole model.
+  // Then one forward pass over every choice, in memory order, computes each state's weight
+  // to every queued splitter at once; blocks split by the joint signature. This is the same
+  // refinement as taking the splitters one by one (a state's weights to several splitters
+  // separate it exactly when the weights to some one of them do), the queue rule for the
+  // parts is unchanged, and the pass costs O(m + n |A|), charged to the >= m / 4 edge
+  // visits it replaces, so the O(m log n) bound stands. Exact rational sums are left to the
+  // one-splitter path.
+
+  [[nodiscard]] bool batch_pays_off() const {
+    return weights_.mode != WeightMode::Rational && queued_edges_ * 4 >= incoming_.size() &&
+           queue_.size() > 1;
+  }
+
+  void split_by_whole_queue() {
+    if (batch_slot_.size() < blocks_.size()) batch_slot_.resize(blocks_.size(), kNone);
+    for (std::size_t i = 0; i < queue_.size(); ++i) {
+      batch_slot_[queue_[i]] = static_cast<std::uint32_t>(i);
+      blocks_[queue_[i]].queued = false;
+    }
+    const std::vector<BlockIndex> batch = std::move(queue_);
+    queue_.clear();
+    queued_edges_ = 0;
+    statistics_.splitters += batch.size();
+    statistics_.edge_visits += incoming_.size();
+    ++statistics_.batch_passes;
+
+    groups_.clear();
+    group_signatures_.clear();
+    std::size_t table_size = 16;
+    while (table_size < 2 * std::size_t{num_states_}) table_size *= 2;
+    group_table_.assign(table_size, kNone);
+    for (StateIndex s = 0; s < num_states_; ++s) {
+      batch_signature(s, signature_);
+      if (!signature_.empty()) add_to_group(s, signature_);
+    }
+    for (BlockIndex b : batch) batch_slot_[b] = kNone;
+    split_touched_blocks();
+    reset_scratch();
+  }
+
+  // For each enabled action of `s`, the weight to each queued splitter its edges reach, in
+  // (action, splitter) order. Empty when no edge reaches a splitter.
+  void batch_signature(StateIndex s, std::vector<SignatureEntry>& out) {
+    out.clear();
+    constexpr std::uint32_t kAhead = 16;
+    for (ActionIndex a = 0; a < num_actions_; ++a) {
+      const ChoiceIndex c = s * num_actions_ + a;
+      const std::size_t first = out.size();
+      for (EdgeIndex e = matrix_.choice_begin[c]; e < matrix_.choice_begin[c + 1]; ++e) {
+        if (e + kAhead < matrix_.edge_target.size()) {
+          __builtin_prefetch(&state_scratch_[matrix_.edge_target[e + kAhead]]);
+        }
+        const std::uint32_t slot = batch_slot_[state_scratch_[matrix_.edge_target[e]].block];
+        if (slot == kNone) continue;
+        add_batch_weight(out, first, a, slot, matrix_.edge_probability[e]);
+      }
+      std::sort(out.begin() + static_cast<std::ptrdiff_t>(first), out.end(),
+                [](const SignatureEntry& x, const SignatureEntry& y) { return x.splitter < y.splitter; });
+    }
+  }
+
+  void add_batch_weight(std::vector<SignatureEntry>& out, std::size_t first, ActionIndex a,
+                        std::uint32_t slot, ValueId probability) const {
+    for (std::size_t i = first; i < out.size(); ++i) {
+      if (out[i].splitter == slot) {
+        add_to_key(out[i], probability);
+        return;
+      }
+    }
+    out.push_back({a, slot, 0});
+    add_to_key(out.back(), probability);
+  }
+
+  // Rounded keys are summed as doubles in `real` and rounded by finish_batch_key().
+  void add_to_key(SignatureEntry& entry, ValueId probability) const {
+    if (weights_.mode == WeightMode::Integer) {
+      entry.key += weights_.integer[probability];
+    } else {
+      entry.real += weights_.real[probability];
+      entry.key = static_cast<std::uint64_t>(weights_.rounded_key(entry.real));
+    }
   }
 
   // ---- one splitter -----------------------------------------------------------------------
@@ -222,69 +345,93 @@ class Refiner {
     reset_scratch();
   }
 
+  // Random access into the per-choice and per-state records dominates on large models, so
+  // the records of edges a few steps ahead are prefetched.
   void accumulate_weights(BlockIndex splitter) {
+    constexpr std::uint32_t kAhead = 16;
     const Block block = blocks_[splitter];
     for (std::uint32_t i = block.begin; i < block.end; ++i) {
+      if (i + kAhead < block.end) __builtin_prefetch(&in_begin_[elements_[i + kAhead]]);
       const StateIndex t = elements_[i];
-      statistics_.edge_visits += in_begin_[t + 1] - in_begin_[t];
-      for (EdgeIndex e = in_begin_[t]; e < in_begin_[t + 1]; ++e) add_weight(in_choice_[e], in_probability_[e]);
+      const EdgeIndex end = in_begin_[t + 1];
+      statistics_.edge_visits += end - in_begin_[t];
+      for (EdgeIndex e = in_begin_[t]; e < end; ++e) {
+        if (e + kAhead < incoming_.size()) {
+          const ChoiceIndex ahead = incoming_[e + kAhead].choice;
+          __builtin_prefetch(&choice_scratch_[ahead], 1);
+          __builtin_prefetch(&state_scratch_[ahead / num_actions_], 1);
+        }
+        add_weight(incoming_[e].choice, incoming_[e].probability);
+      }
     }
   }
 
   void add_weight(ChoiceIndex c, ValueId probability) {
-    if (!touched_choice_[c]) {
-      touched_choice_[c] = true;
-      touched_choices_.push_back(c);
+    ChoiceScratch& choice = choice_scratch_[c];
+    if (choice.touched == 0) {
+      choice.touched = 1;
       const StateIndex s = c / num_actions_;
-      if (state_head_[s] == kNone) touched_states_.push_back(s);
-      choice_next_[c] = state_head_[s];
-      state_head_[s] = c;
+      std::uint32_t& state_touched = state_scratch_[s].touched;
+      if (state_touched == 0) touched_states_.push_back(s);
+      state_touched = 1;
       if (weights_.mode == WeightMode::Rational) {
-        rational_slot_[c] = static_cast<std::uint32_t>(touched_choices_.size() - 1);
+        rational_slot_[c] = static_cast<std::uint32_t>(touched_choices_.size());
+        touched_choices_.push_back(c);
         if (rational_sum_.size() < touched_choices_.size()) rational_sum_.emplace_back();
         rational_sum_[rational_slot_[c]] = 0;
       }
     }
     switch (weights_.mode) {
-      case WeightMode::Integer: integer_sum_[c] += weights_.integer[probability]; break;
+      case WeightMode::Integer: choice.sum += weights_.integer[probability]; break;
       case WeightMode::Rounded: real_sum_[c] += weights_.real[probability]; break;
       case WeightMode::Rational: rational_sum_[rational_slot_[c]] += model_.values[probability]; break;
     }
   }
 
-  // The touched choices of `s`, sorted by action: its signature.
-  void collect_signature(StateIndex s, std::vector<ChoiceIndex>& out) const {
+  // The touched choices of `s` in action order, with their weights: its signature. The
+  // choice records are cleared on the way, while their cache line is at hand. Costs O(|A|)
+  // per touched state: one cache line for the small action sets of robot models.
+  void collect_signature(StateIndex s, std::vector<SignatureEntry>& out) {
     out.clear();
-    for (ChoiceIndex c = state_head_[s]; c != kNone; c = choice_next_[c]) out.push_back(c);
-    std::sort(out.begin(), out.end());  // choices of one state sort by action
-  }
-
-  [[nodiscard]] std::uint64_t weight_key(ChoiceIndex c) const {
-    switch (weights_.mode) {
-      case WeightMode::Integer: return integer_sum_[c];
-      case WeightMode::Rounded: return static_cast<std::uint64_t>(weights_.rounded_key(real_sum_[c]));
-      case WeightMode::Rational: return hash_value(rational_sum_[rational_slot_[c]]);
+    const ChoiceIndex first = s * num_actions_;
+    for (ActionIndex a = 0; a < num_actions_; ++a) {
+      ChoiceScratch& choice = choice_scratch_[first + a];
+      if (choice.touched == 0) continue;
+      switch (weights_.mode) {
+        case WeightMode::Integer: out.push_back({a, 0, choice.sum}); break;
+        case WeightMode::Rounded:
+          out.push_back({a, 0, static_cast<std::uint64_t>(weights_.rounded_key(real_sum_[first + a]))});
+          real_sum_[first + a] = 0;
+          break;
+        case WeightMode::Rational: out.push_back({a, 0, rational_slot_[first + a]}); break;
+      }
+      choice = ChoiceScratch{};
     }
-    return 0;
   }
 
-  [[nodiscard]] bool same_weight(ChoiceIndex c, ChoiceIndex d) const {
-    if (weights_.mode == WeightMode::Rational) {
-      return rational_sum_[rational_slot_[c]] == rational_sum_[rational_slot_[d]];
-    }
-    return weight_key(c) == weight_key(d);
+  [[nodiscard]] std::uint64_t entry_hash(const SignatureEntry& entry) const {
+    if (weights_.mode == WeightMode::Rational) return hash_value(rational_sum_[entry.key]);
+    return entry.key;
   }
 
-  [[nodiscard]] std::uint64_t signature_hash(BlockIndex block, const std::vector<ChoiceIndex>& signature) const {
+  [[nodiscard]] bool same_entry(const SignatureEntry& a, const SignatureEntry& b) const {
+    if (a.action != b.action || a.splitter != b.splitter) return false;
+    if (weights_.mode == WeightMode::Rational) return rational_sum_[a.key] == rational_sum_[b.key];
+    return a.key == b.key;
+  }
+
+  [[nodiscard]] std::uint64_t signature_hash(BlockIndex block, const std::vector<SignatureEntry>& signature) const {
     std::uint64_t hash = mix(block + 0x9e3779b97f4a7c15ULL);
-    for (ChoiceIndex c : signature) hash = mix(hash ^ (c % num_actions_)) ^ mix(weight_key(c));
+    for (const SignatureEntry& entry : signature) {
+      hash = mix(hash ^ entry.action ^ (std::uint64_t{entry.splitter} << 32U)) ^ mix(entry_hash(entry));
+    }
     return hash;
   }
 
-  [[nodiscard]] bool same_signature(const std::vector<ChoiceIndex>& a, const std::vector<ChoiceIndex>& b) const {
-    if (a.size() != b.size()) return false;
+  [[nodiscard]] bool same_signature(const std::vector<SignatureEntry>& a, const Group& group) const {
+    if (a.size() != group.signature_end - group.signature_begin) return false;
     for (std::size_t i = 0; i < a.size(); ++i) {
-      if (a[i] % num_actions_ != b[i] % num_actions_ || !same_weight(a[i], b[i])) return false;
+      if (!same_entry(a[i], group_signatures_[group.signature_begin + i])) return false;
     }
     return true;
   }
@@ -294,31 +441,46 @@ class Refiner {
   // seen so far. Each slot heads a chain of groups whose signature hashes collide there.
   void group_touched_states() {
     groups_.clear();
+    group_signatures_.clear();
     std::size_t table_size = 16;
     while (table_size < 2 * touched_states_.size()) table_size *= 2;
     group_table_.assign(table_size, kNone);
-    for (StateIndex s : touched_states_) {
-      const BlockIndex block = block_of_[s];
+    constexpr std::size_t kAhead = 8;
+    for (std::size_t i = 0; i < touched_states_.size(); ++i) {
+      if (i + kAhead < touched_states_.size()) {
+        const StateIndex ahead = touched_states_[i + kAhead];
+        __builtin_prefetch(&state_scratch_[ahead]);
+        __builtin_prefetch(&choice_scratch_[std::size_t{ahead} * num_actions_]);
+      }
+      const StateIndex s = touched_states_[i];
       collect_signature(s, signature_);
-      const std::uint64_t hash = signature_hash(block, signature_);
-      std::uint32_t& head = group_table_[hash & (table_size - 1)];
-      std::uint32_t group = head;
-      for (; group != kNone; group = groups_[group].next_same_hash) {
-        if (groups_[group].block != block) continue;
-        collect_signature(groups_[group].representative, other_signature_);
-        if (same_signature(signature_, other_signature_)) break;
-      }
-      if (group == kNone) {
-        group = static_cast<std::uint32_t>(groups_.size());
-        groups_.push_back({s, block, 0, kNone, block_first_group_[block], head});
-        head = group;
-        if (block_first_group_[block] == kNone) touched_blocks_.push_back(block);
-        block_first_group_[block] = group;
-      }
-      next_in_group_[s] = groups_[group].first_state;
-      groups_[group].first_state = s;
-      ++groups_[group].size;
+      add_to_group(s, signature_);
     }
+  }
+
+  // Puts `s` into the group of its block with the same signature, making one if needed.
+  void add_to_group(StateIndex s, const std::vector<SignatureEntry>& signature) {
+    const BlockIndex block = state_scratch_[s].block;
+    const std::uint64_t hash = signature_hash(block, signature);
+    std::uint32_t& head = group_table_[hash & (group_table_.size() - 1)];
+    std::uint32_t group = head;
+    for (; group != kNone; group = groups_[group].next_same_hash) {
+      if (groups_[group].block == block && same_signature(signature, groups_[group])) break;
+    }
+    if (group == kNone) {
+      group = static_cast<std::uint32_t>(groups_.size());
+      const auto begin = static_cast<std::uint32_t>(group_signatures_.size());
+      group_signatures_.insert(group_signatures_.end(), signature.begin(), signature.end());
+      groups_.push_back({s, block, 0, kNone, block_first_group_[block], head, begin,
+                         static_cast<std::uint32_t>(group_signatures_.size())});
+      head = group;
+      if (block_first_group_[block] == kNone) touched_blocks_.push_back(block);
+      block_first_group_[block] = group;
+    }
+    state_scratch_[s].next_in_group = groups_[group].first_state;
+    state_scratch_[s].touched = 1;
+    groups_[group].first_state = s;
+    ++groups_[group].size;
   }
 
   void split_touched_blocks() {
@@ -334,12 +496,15 @@ class Refiner {
     std::uint32_t touched = 0;
     for (std::uint32_t g = first_group; g != kNone; g = groups_[g].next_in_block) touched += groups_[g].size;
     const std::uint32_t untouched = range.size() - touched;
-    if (untouched == 0 && groups_[first_group].next_in_block == kNone) return;  // one group: no split
+    if (untouched == 0 && groups_[first_group].next_in_block == kNone) {  // one group: no split
+      for (StateIndex s = groups_[first_group].first_state; s != kNone;) s = clear_state(s);
+      return;
+    }
 
     // Move the touched states to the tail of the range, then lay them out group by group.
     std::uint32_t tail = range.end;
     for (std::uint32_t g = first_group; g != kNone; g = groups_[g].next_in_block) {
-      for (StateIndex s = groups_[g].first_state; s != kNone; s = next_in_group_[s]) swap_to(s, --tail);
+      for (StateIndex s = groups_[g].first_state; s != kNone; s = state_scratch_[s].next_in_group) swap_to(s, --tail);
     }
     std::uint32_t cursor = range.begin + untouched;
     const bool was_queued = range.queued;
@@ -351,7 +516,10 @@ class Refiner {
     }
     for (std::uint32_t g = first_group; g != kNone; g = groups_[g].next_in_block) {
       const std::uint32_t begin = cursor;
-      for (StateIndex s = groups_[g].first_state; s != kNone; s = next_in_group_[s]) place(s, cursor++);
+      for (StateIndex s = groups_[g].first_state; s != kNone;) {
+        place(s, cursor++);
+        s = clear_state(s);
+      }
       BlockIndex part = block;
       if (parts.empty()) {
         blocks_[block].begin = begin;
@@ -359,7 +527,7 @@ class Refiner {
       } else {
         part = static_cast<BlockIndex>(blocks_.size());
         blocks_.push_back({begin, cursor, false});
-        for (std::uint32_t i = begin; i < cursor; ++i) block_of_[elements_[i]] = part;
+        for (std::uint32_t i = begin; i < cursor; ++i) state_scratch_[elements_[i]].block = part;
       }
       parts.push_back(part);
     }
@@ -373,33 +541,39 @@ class Refiner {
     }
     for (BlockIndex part : parts) {
       if (blocks_[part].queued) continue;  // the original block, still waiting
-      if (was_queued || part != largest) enqueue(part);
+      // Parts carved out of a queued block bring edges already counted in queued_edges_.
+      if (was_queued) {
+        enqueue(part, /*count_edges=*/false);
+      } else if (part != largest) {
+        enqueue(part);
+      }
     }
   }
 
   void swap_to(StateIndex s, std::uint32_t target) {
     const StateIndex other = elements_[target];
-    const std::uint32_t from = position_[s];
+    const std::uint32_t from = state_scratch_[s].position;
     elements_[target] = s;
-    position_[s] = target;
+    state_scratch_[s].position = target;
     elements_[from] = other;
-    position_[other] = from;
+    state_scratch_[other].position = from;
   }
 
   void place(StateIndex s, std::uint32_t target) { swap_to(s, target); }
 
+  // Clears a touched state's scratch and returns the next state of its group.
+  StateIndex clear_state(StateIndex s) {
+    StateScratch& state = state_scratch_[s];
+    const StateIndex next = state.next_in_group;
+    state.touched = 0;
+    state.next_in_group = kNone;
+    return next;
+  }
+
+  // Choice and state records were cleared while grouping and splitting; what is left is
+  // the bookkeeping of this splitter.
   void reset_scratch() {
-    for (ChoiceIndex c : touched_choices_) {
-      touched_choice_[c] = false;
-      choice_next_[c] = kNone;
-      if (weights_.mode == WeightMode::Integer) integer_sum_[c] = 0;
-      if (weights_.mode == WeightMode::Rounded) real_sum_[c] = 0;
-      if (weights_.mode == WeightMode::Rational) rational_slot_[c] = kNone;
-    }
-    for (StateIndex s : touched_states_) {
-      state_head_[s] = kNone;
-      next_in_group_[s] = kNone;
-    }
+    for (ChoiceIndex c : touched_choices_) rational_slot_[c] = kNone;  // Rational mode only
     for (BlockIndex b : touched_blocks_) block_first_group_[b] = kNone;
     touched_choices_.clear();
     touched_states_.clear();
@@ -416,32 +590,29 @@ class Refiner {
   RefinementStatistics statistics_;
 
   std::vector<EdgeIndex> in_begin_;
-  std::vector<ChoiceIndex> in_choice_;
-  std::vector<ValueId> in_probability_;
+  std::vector<IncomingEdge> incoming_;
 
   std::vector<StateIndex> elements_;
-  std::vector<std::uint32_t> position_;
-  std::vector<BlockIndex> block_of_;
+  std::vector<StateScratch> state_scratch_;
   std::vector<Block> blocks_;
   std::vector<BlockIndex> queue_;
+  std::uint64_t queued_edges_ = 0;  // edges into the queued blocks
+  std::uint64_t steps_ = 0;
+  std::vector<std::uint32_t> batch_slot_;  // per block: its index in the batch, or kNone
 
   // Scratch for one splitter, reset after it.
-  std::vector<std::uint64_t> integer_sum_;
+  std::vector<ChoiceScratch> choice_scratch_;
   std::vector<double> real_sum_;
   std::vector<std::uint32_t> rational_slot_;
   std::vector<Rational> rational_sum_;
-  std::vector<bool> touched_choice_;
-  std::vector<ChoiceIndex> touched_choices_;
-  std::vector<std::uint32_t> choice_next_;
-  std::vector<std::uint32_t> state_head_;
+  std::vector<ChoiceIndex> touched_choices_;  // Rational mode: the choices holding a slot
   std::vector<StateIndex> touched_states_;
-  std::vector<StateIndex> next_in_group_;
   std::vector<std::uint32_t> block_first_group_;  // indexed by block; blocks never exceed states
   std::vector<BlockIndex> touched_blocks_;
   std::vector<Group> groups_;
   std::vector<std::uint32_t> group_table_;
-  std::vector<ChoiceIndex> signature_;
-  std::vector<ChoiceIndex> other_signature_;
+  std::vector<SignatureEntry> signature_;
+  std::vector<SignatureEntry> group_signatures_;
   std::vector<BlockIndex> parts_;
 };
 

@@ -63,7 +63,12 @@ nlohmann::json quotient_json(const LoadedModel& loaded, const std::vector<Contex
                          {"blocks", result.partition.num_blocks},
                          {"seconds", result.seconds},
                          {"splitters", result.statistics.splitters},
-                         {"edge_visits", result.statistics.edge_visits}};
+                         {"edge_visits", result.statistics.edge_visits},
+                         {"exact_integer_sums", result.statistics.exact_integer_sums},
+                         {"phase_seconds",
+                          {{"reverse_edges", result.statistics.setup_seconds},
+                           {"initial_partition", result.statistics.initial_seconds},
+                           {"splitting", result.statistics.splitting_seconds}}}};
     if (with_partition) {
       nlohmann::json blocks = nlohmann::json::array();
       for (const auto& members : result.partition.blocks()) {

@@ -1,0 +1,82 @@
+#include "bisim/initial_partition.hpp"
+
+#include <cmath>
+#include <limits>
+#include <unordered_map>
+
+namespace oasis::bisim {
+namespace {
+
+constexpr std::uint32_t kDisabled = std::numeric_limits<std::uint32_t>::max();
+
+std::uint64_t mix(std::uint64_t x) {
+  x ^= x >> 30U;
+  x *= 0xbf58476d1ce4e5b9ULL;
+  x ^= x >> 27U;
+  x *= 0x94d049bb133111ebULL;
+  x ^= x >> 31U;
+  return x;
+}
+
+// Numbers R(s, a) = state reward + choice reward. Rewards are few distinct values, so the
+// sum is computed once per pair of value ids rather than once per (state, action).
+class RewardNumbering {
+ public:
+  RewardNumbering(const model::ExplicitModel& model, std::size_t context, std::optional<double> rounding)
+      : model_(model), rewards_(model.contexts[context].rewards), rounding_(rounding) {}
+
+  std::uint32_t id(model::StateIndex s, model::ActionIndex a) {
+    const ValueId state_part = rewards_.state[s];
+    const ValueId choice_part =
+        rewards_.choice.empty() ? RationalPool::kZero : rewards_.choice[std::size_t{s} * model_.num_actions() + a];
+    const std::uint64_t key = (std::uint64_t{state_part} << 32U) | choice_part;
+    auto [it, inserted] = cache_.try_emplace(key, 0);
+    if (inserted) {
+      Rational value = model_.values[state_part] + model_.values[choice_part];
+      if (rounding_) value = Rational(static_cast<long>(std::llround(to_double(value) / *rounding_)));
+      it->second = numbers_.intern(value);
+    }
+    return it->second;
+  }
+
+ private:
+  const model::ExplicitModel& model_;
+  const model::RewardTable& rewards_;
+  std::optional<double> rounding_;
+  std::unordered_map<std::uint64_t, std::uint32_t> cache_;
+  RationalPool numbers_;
+};
+
+}  // namespace
+
+InitialBlocks blocks_by_rewards(const model::ExplicitModel& model, std::size_t context,
+                                std::optional<double> rounding) {
+  const model::TransitionMatrix& matrix = *model.contexts[context].transitions;
+  const std::uint32_t num_actions = model.num_actions();
+  RewardNumbering rewards(model, context, rounding);
+  InitialBlocks result;
+  result.block_of.resize(model.num_states());
+  std::vector<std::uint32_t> signature(num_actions);
+  // Signature hash -> the blocks whose signature has that hash, with the signature.
+  std::unordered_map<std::uint64_t, std::vector<std::pair<std::vector<std::uint32_t>, std::uint32_t>>> seen;
+  for (model::StateIndex s = 0; s < model.num_states(); ++s) {
+    std::uint64_t hash = 0x9e3779b97f4a7c15ULL;
+    for (model::ActionIndex a = 0; a < num_actions; ++a) {
+      signature[a] = matrix.enabled(s, a) ? rewards.id(s, a) : kDisabled;
+      hash = mix(hash ^ signature[a]);
+    }
+    auto& candidates = seen[hash];
+    std::uint32_t block = kDisabled;
+    for (const auto& [other, index] : candidates) {
+      if (other == signature) block = index;
+    }
+    if (block == kDisabled) {
+      block = result.count++;
+      candidates.emplace_back(signature, block);
+    }
+    result.block_of[s] = block;
+  }
+  return result;
+}
+
+}  // namespace oasis::bisim
