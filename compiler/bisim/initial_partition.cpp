@@ -26,9 +26,16 @@ class RewardNumbering {
       : model_(model), rewards_(model.contexts[context].rewards), rounding_(rounding) {}
 
   std::uint32_t id(model::StateIndex s, model::ActionIndex a) {
-    const ValueId state_part = rewards_.state[s];
     const ValueId choice_part =
         rewards_.choice.empty() ? RationalPool::kZero : rewards_.choice[std::size_t{s} * model_.num_actions() + a];
+    return number(rewards_.state[s], choice_part);
+  }
+
+  // The state reward alone: what separates states that have no enabled action.
+  std::uint32_t state_only(model::StateIndex s) { return number(rewards_.state[s], RationalPool::kZero); }
+
+ private:
+  std::uint32_t number(ValueId state_part, ValueId choice_part) {
     const std::uint64_t key = (std::uint64_t{state_part} << 32U) | choice_part;
     auto [it, inserted] = cache_.try_emplace(key, 0);
     if (inserted) {
@@ -39,7 +46,6 @@ class RewardNumbering {
     return it->second;
   }
 
- private:
   const model::ExplicitModel& model_;
   const model::RewardTable& rewards_;
   std::optional<double> rounding_;
@@ -56,15 +62,23 @@ InitialBlocks blocks_by_rewards(const model::ExplicitModel& model, std::size_t c
   RewardNumbering rewards(model, context, rounding);
   InitialBlocks result;
   result.block_of.resize(model.num_states());
-  std::vector<std::uint32_t> signature(num_actions);
+  // One entry per action (its reward, or disabled), and a last one that holds the state
+  // reward of a state with no enabled action: R(s) is the reward for being in s, and with
+  // no action there is no R(s, a) to carry it.
+  std::vector<std::uint32_t> signature(num_actions + 1);
   // Signature hash -> the blocks whose signature has that hash, with the signature.
   std::unordered_map<std::uint64_t, std::vector<std::pair<std::vector<std::uint32_t>, std::uint32_t>>> seen;
   for (model::StateIndex s = 0; s < model.num_states(); ++s) {
     std::uint64_t hash = 0x9e3779b97f4a7c15ULL;
+    bool any_enabled = false;
     for (model::ActionIndex a = 0; a < num_actions; ++a) {
-      signature[a] = matrix.enabled(s, a) ? rewards.id(s, a) : kDisabled;
+      const bool enabled = matrix.enabled(s, a);
+      any_enabled |= enabled;
+      signature[a] = enabled ? rewards.id(s, a) : kDisabled;
       hash = mix(hash ^ signature[a]);
     }
+    signature[num_actions] = any_enabled ? kDisabled : rewards.state_only(s);
+    hash = mix(hash ^ signature[num_actions]);
     auto& candidates = seen[hash];
     std::uint32_t block = kDisabled;
     for (const auto& [other, index] : candidates) {

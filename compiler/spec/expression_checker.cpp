@@ -45,6 +45,11 @@ constexpr std::array kBuiltins = {
 
 std::string quoted(std::string_view text) { return "'" + std::string(text) + "'"; }
 
+// "a bool", "an int", "a number".
+std::string with_article(Type type) {
+  return std::string(type == Type::Int ? "an " : "a ") + std::string(model::describe(type));
+}
+
 }  // namespace
 
 std::string_view describe(SymbolKind kind) {
@@ -125,9 +130,8 @@ std::optional<Expression> ExpressionChecker::name(const ast::Expr& expr,
 bool ExpressionChecker::expect_type(const Expression& expr, Type type, std::string_view context) {
   const bool ok = type == Type::Real ? is_numeric(expr.type) : expr.type == type;
   if (!ok) {
-    diagnostics_.error(expr.range, std::string(context) + " needs a " +
-                                       std::string(model::describe(type)) + ", not a " +
-                                       std::string(model::describe(expr.type)));
+    diagnostics_.error(expr.range, std::string(context) + " needs " + with_article(type) +
+                                       ", not " + with_article(expr.type));
   }
   return ok;
 }

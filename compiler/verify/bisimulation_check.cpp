@@ -1,3 +1,5 @@
+#include <optional>
+
 #include "verify/bisimulation_check.hpp"
 
 #include <algorithm>
@@ -18,7 +20,7 @@ struct Pair {
 };
 
 Violation pair_violation(const model::ExplicitModel& model, const bisim::Partition& partition,
-                         ViolationKind kind, const Pair& pair, ActionIndex action) {
+                         ViolationKind kind, const Pair& pair, std::optional<ActionIndex> action) {
   Violation violation;
   violation.kind = kind;
   violation.state = pair.first;
@@ -37,6 +39,24 @@ Rational probability_of(const std::vector<std::pair<bisim::BlockIndex, Rational>
     if (b == block) return p;
   }
   return 0;
+}
+
+// States with no enabled action have no R(s, a); their state reward R(s), the reward for
+// being in s, must agree instead.
+std::optional<Violation> deadlock_reward_violation(const model::ExplicitModel& model, std::size_t context,
+                                                   const bisim::Partition& partition, const Pair& pair) {
+  const model::TransitionMatrix& matrix = *model.contexts[context].transitions;
+  for (ActionIndex a = 0; a < model.num_actions(); ++a) {
+    if (matrix.enabled(pair.first, a)) return std::nullopt;
+  }
+  const auto& rewards = model.contexts[context].rewards.state;
+  const Rational& first = model.values[rewards[pair.first]];
+  const Rational& other = model.values[rewards[pair.other]];
+  if (first == other) return std::nullopt;
+  Violation v = pair_violation(model, partition, ViolationKind::RewardDiffers, pair, std::nullopt);
+  v.message += "neither has an enabled action, and R(" + model.states.name(pair.first) + ") = " +
+               describe(first) + " while R(" + model.states.name(pair.other) + ") = " + describe(other);
+  return v;
 }
 
 }  // namespace
@@ -73,6 +93,7 @@ VerificationResult check_bisimulation(const model::ExplicitModel& model, std::si
           return {std::move(v)};
         }
       }
+      if (auto v = deadlock_reward_violation(model, context, partition, pair)) return {std::move(*v)};
     }
   }
 

@@ -43,6 +43,12 @@ std::vector<std::vector<QuotientChoice>> build_quotient(const model::ExplicitMod
       }
       quotient[b].push_back(std::move(choice));
     }
+    // A block with no enabled action is told apart by its state reward R(s); it gets one
+    // pseudo-choice, with the action number one past the last and no successors.
+    if (quotient[b].empty()) {
+      const ValueId state_reward = model.contexts[context].rewards.state[r];
+      quotient[b].push_back({model.num_actions(), pool.intern(model.values[state_reward]), {}});
+    }
   }
   return quotient;
 }

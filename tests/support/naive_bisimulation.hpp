@@ -18,7 +18,8 @@ namespace oasis::test {
 // state; empty: no constraint). Rounds:
 //   0. block of s = (start label, [(a, R(s, a)) for each enabled a]);
 //   n. block of s = (its block, [(a, {block B -> P(B | s, a)}) for each enabled a]);
-// until the number of blocks stops changing. Rewards of disabled actions are ignored.
+// until the number of blocks stops changing. Rewards of disabled actions are ignored; a state
+// with no enabled action is compared by its state reward.
 inline bisim::Partition naive_bisimulation(const model::ExplicitModel& model, std::size_t context,
                                            const std::vector<std::uint32_t>& start = {}) {
   const model::TransitionMatrix& matrix = *model.contexts[context].transitions;
@@ -33,6 +34,9 @@ inline bisim::Partition naive_bisimulation(const model::ExplicitModel& model, st
     for (model::ActionIndex a = 0; a < k; ++a) {
       if (matrix.enabled(s, a)) key.second.emplace_back(a, model.reward(context, s, a));
     }
+    // No enabled action: the state reward R(s) still tells the state apart (action k
+    // stands for "no action").
+    if (key.second.empty()) key.second.emplace_back(k, model.values[model.contexts[context].rewards.state[s]]);
     labels[s] = initial.try_emplace(key, static_cast<std::uint32_t>(initial.size())).first->second;
   }
   bisim::Partition partition = bisim::canonical_partition(labels);

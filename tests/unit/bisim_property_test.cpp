@@ -69,11 +69,20 @@ void expect_genuine(const ExplicitModel& model, std::size_t context, const Parti
     EXPECT_EQ(coarsest.block_of[s], coarsest.block_of[t]) << "the merged blocks are not bisimilar";
     return;
   }
-  ASSERT_TRUE(v.action);
-  const model::ActionIndex a = *v.action;
   const model::TransitionMatrix& matrix = *model.contexts[context].transitions;
   EXPECT_EQ(partition.block_of[s], *v.block);
   EXPECT_EQ(partition.block_of[t], *v.block);
+  if (v.kind == ViolationKind::RewardDiffers && !v.action) {
+    // States with no enabled action differ in their state reward R(s).
+    for (model::ActionIndex a = 0; a < model.num_actions(); ++a) {
+      EXPECT_FALSE(matrix.enabled(s, a) || matrix.enabled(t, a));
+    }
+    const auto& rewards = model.contexts[context].rewards.state;
+    EXPECT_NE(model.values[rewards[s]], model.values[rewards[t]]);
+    return;
+  }
+  ASSERT_TRUE(v.action);
+  const model::ActionIndex a = *v.action;
   switch (v.kind) {
     case ViolationKind::EnabledActionsDiffer:
       EXPECT_NE(matrix.enabled(s, a), matrix.enabled(t, a));

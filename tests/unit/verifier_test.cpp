@@ -347,18 +347,25 @@ TEST(Verifier, RewardsOfDisabledActionsAreIgnored) {
   expect_accepted(model, 0, partition_of(model, {{"u", "w", "sink"}, {"v"}}));
 }
 
-TEST(Verifier, StatesWithoutActionsAreEquivalentWhateverTheirReward) {
-  // No enabled action, no choice and so no reward to compare (as in .aut, docs/formats.md).
+TEST(Verifier, StatesWithoutActionsAreToldApartByTheirStateReward) {
+  // No enabled action, so no R(s, a): the state reward R(s), the reward for being in s,
+  // separates such states instead (d1 earns 1, d2 and d3 earn 0).
   const ExplicitModel model = explore_text(R"(
 mdp stuck {
-  states start, d1, d2;
+  states start, d1, d2, d3;
   actions go;
   default disabled;
-  start, go -> 1/2: d1 + 1/2: d2;
+  start, go -> 1/2: d1 + 1/4: d2 + 1/4: d3;
   reward d1 : 1;
 }
 )");
-  expect_accepted(model, 0, partition_of(model, {{"start"}, {"d1", "d2"}}));
+  expect_accepted(model, 0, partition_of(model, {{"start"}, {"d1"}, {"d2", "d3"}}));
+  const verify::VerificationResult merged = verify::verify_partition(model, 0, partition_of(model, {{"start"}, {"d1", "d2", "d3"}}));
+  ASSERT_FALSE(merged.ok());
+  EXPECT_EQ(merged.violation->kind, ViolationKind::RewardDiffers);
+  EXPECT_FALSE(merged.violation->action.has_value());
+  EXPECT_NE(merged.violation->message.find("neither has an enabled action"), std::string::npos)
+      << merged.violation->message;
 }
 
 // --- oasisc verify ----------------------------------------------------------------------------
