@@ -87,7 +87,7 @@ class Refiner {
         options_(options),
         num_states_(model.num_states()),
         num_actions_(model.num_actions()),
-        weights_(WeightTable::choose(model, matrix_, options.epsilon)) {}
+        weights_(WeightTable::choose(model, matrix_, options.epsilon, options.rational_sums)) {}
 
   Partition run(RefinementStatistics* statistics) {
     statistics_.exact_integer_sums = weights_.mode == WeightMode::Integer;

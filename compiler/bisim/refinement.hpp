@@ -25,6 +25,9 @@ struct RefinementOptions {
   // Approximate mode for models whose probabilities were floating point; see
   // docs/bisimulation.md for exactly what it guarantees. Unset: exact.
   std::optional<double> epsilon;
+  // Add probabilities with GMP even when integers over a common denominator would be exact.
+  // Slower; it exists so that tests can check both exact paths against each other.
+  bool rational_sums = false;
   // Called now and then during refinement.
   std::function<void(const RefinementProgress&)> progress;
 };

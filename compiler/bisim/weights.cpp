@@ -4,7 +4,7 @@ namespace oasis::bisim {
 
 WeightTable WeightTable::choose(const model::ExplicitModel& model,
                                 const model::TransitionMatrix& matrix,
-                                std::optional<double> epsilon) {
+                                std::optional<double> epsilon, bool rational) {
   WeightTable table;
   const std::size_t num_values = model.values.size();
   if (epsilon) {
@@ -12,6 +12,10 @@ WeightTable WeightTable::choose(const model::ExplicitModel& model,
     table.epsilon = *epsilon;
     table.real.resize(num_values);
     for (std::size_t id = 0; id < num_values; ++id) table.real[id] = to_double(model.values[id]);
+    return table;
+  }
+  if (rational) {
+    table.mode = WeightMode::Rational;
     return table;
   }
   // The common denominator of the probabilities this context uses (few distinct values).
