@@ -342,6 +342,7 @@ class Checker {
         if (auto checked = lower_disturbance(disturbance)) shared.push_back(*checked);
       }
     }
+    if (!is_context) model_disturbances_ = shared;
     for (const auto& dynamics : body.dynamics) lower_dynamics(dynamics, shared, lowered);
     lowered.empty = body.transitions.empty() && body.commands.empty() && body.rewards.empty() &&
                     body.dynamics.empty() && body.disturbances.empty();
@@ -539,17 +540,13 @@ class Checker {
       diagnostics_.note(lowered.dynamics[*action]->range, "first dynamics here");
       return;
     }
-    const std::size_t n = ir_.continuous.size();
-    model::AffineDynamics affine;
-    affine.range = dynamics.range;
-    affine.matrix.assign(n, std::vector<Rational>(n));
-    affine.offset.assign(n, 0);
-    affine.disturbance.assign(n, {});
-    for (std::size_t i = 0; i < n; ++i) affine.matrix[i][i] = 1;  // unmentioned: x' = x
-    std::vector<bool> assigned(n, false);
+    model::AffineDynamics affine = identity_dynamics(dynamics.range);
+    std::vector<bool> assigned(ir_.continuous.size(), false);
     for (const ast::Assignment& equation : dynamics.equations) {
       if (!lower_equation(equation, affine, assigned)) return;
     }
+    // The most specific disturbance wins: the block's own, then its body's (model or
+    // context), then the model's, which holds for every action.
     for (const LoweredDisturbance& disturbance : shared) {
       affine.disturbance[disturbance.variable] = disturbance.model;
     }
@@ -634,7 +631,29 @@ class Checker {
     (void)mdp;
   }
 
+  // x' = x (+ the model-level disturbances): the dynamics of an action that has no block.
+  model::AffineDynamics identity_dynamics(SourceRange range) const {
+    const std::size_t n = ir_.continuous.size();
+    model::AffineDynamics affine;
+    affine.range = range;
+    affine.matrix.assign(n, std::vector<Rational>(n));
+    affine.offset.assign(n, 0);
+    affine.disturbance.assign(n, {});
+    for (std::size_t i = 0; i < n; ++i) affine.matrix[i][i] = 1;
+    for (const LoweredDisturbance& disturbance : model_disturbances_) {
+      affine.disturbance[disturbance.variable] = disturbance.model;
+    }
+    return affine;
+  }
+
   void check_dynamics_complete(const ast::MdpDecl& mdp) {
+    if (ir_.missing == model::MissingPolicy::SelfLoop) {
+      // `default self;`: an action without a block keeps the state, disturbed as every action.
+      for (std::uint32_t a = 0; a < ir_.actions.size(); ++a) {
+        if (!base_.dynamics[a]) base_.dynamics[a] = identity_dynamics(mdp.actions[a].range);
+      }
+      return;
+    }
     if (ir_.missing != model::MissingPolicy::Error) return;
     for (std::uint32_t a = 0; a < ir_.actions.size(); ++a) {
       if (base_.dynamics[a]) continue;
@@ -733,6 +752,7 @@ class Checker {
   LoweredBehaviour base_;
   std::vector<SourceRange> state_ranges_;
   std::set<std::pair<std::uint32_t, std::uint32_t>> given_pairs_;  // base (state, action) pairs
+  std::vector<LoweredDisturbance> model_disturbances_;  // model-level: hold for every action
 };
 
 }  // namespace
