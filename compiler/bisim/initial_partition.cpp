@@ -22,17 +22,21 @@ std::uint64_t mix(std::uint64_t x) {
 // sum is computed once per pair of value ids rather than once per (state, action).
 class RewardNumbering {
  public:
-  RewardNumbering(const model::ExplicitModel& model, std::size_t context, std::optional<double> rounding)
+  RewardNumbering(const model::ExplicitModel& model, std::size_t context,
+                  std::optional<double> rounding)
       : model_(model), rewards_(model.contexts[context].rewards), rounding_(rounding) {}
 
   std::uint32_t id(model::StateIndex s, model::ActionIndex a) {
-    const ValueId choice_part =
-        rewards_.choice.empty() ? RationalPool::kZero : rewards_.choice[std::size_t{s} * model_.num_actions() + a];
+    const ValueId choice_part = rewards_.choice.empty()
+                                    ? RationalPool::kZero
+                                    : rewards_.choice[std::size_t{s} * model_.num_actions() + a];
     return number(rewards_.state[s], choice_part);
   }
 
   // The state reward alone: what separates states that have no enabled action.
-  std::uint32_t state_only(model::StateIndex s) { return number(rewards_.state[s], RationalPool::kZero); }
+  std::uint32_t state_only(model::StateIndex s) {
+    return number(rewards_.state[s], RationalPool::kZero);
+  }
 
  private:
   std::uint32_t number(ValueId state_part, ValueId choice_part) {
@@ -40,7 +44,8 @@ class RewardNumbering {
     auto [it, inserted] = cache_.try_emplace(key, 0);
     if (inserted) {
       Rational value = model_.values[state_part] + model_.values[choice_part];
-      if (rounding_) value = Rational(static_cast<long>(std::llround(to_double(value) / *rounding_)));
+      if (rounding_)
+        value = Rational(static_cast<long>(std::llround(to_double(value) / *rounding_)));
       it->second = numbers_.intern(value);
     }
     return it->second;
@@ -67,7 +72,9 @@ InitialBlocks blocks_by_rewards(const model::ExplicitModel& model, std::size_t c
   // no action there is no R(s, a) to carry it.
   std::vector<std::uint32_t> signature(num_actions + 1);
   // Signature hash -> the blocks whose signature has that hash, with the signature.
-  std::unordered_map<std::uint64_t, std::vector<std::pair<std::vector<std::uint32_t>, std::uint32_t>>> seen;
+  std::unordered_map<std::uint64_t,
+                     std::vector<std::pair<std::vector<std::uint32_t>, std::uint32_t>>>
+      seen;
   for (model::StateIndex s = 0; s < model.num_states(); ++s) {
     std::uint64_t hash = 0x9e3779b97f4a7c15ULL;
     bool any_enabled = false;

@@ -6,7 +6,8 @@ namespace oasis::bisim {
 
 std::vector<std::vector<model::StateIndex>> Partition::blocks() const {
   std::vector<std::vector<model::StateIndex>> result(num_blocks);
-  for (model::StateIndex s = 0; s < block_of.size(); ++s) result[block_of[s]].push_back(s);
+  for (model::StateIndex s = 0; s < block_of.size(); ++s)
+    result[block_of[s]].push_back(s);
   return result;
 }
 

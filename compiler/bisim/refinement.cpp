@@ -109,13 +109,15 @@ class Refiner {
         ++statistics_.splitters;
       }
       if (options_.progress && (++steps_ & 0x3FFFU) == 0) {
-        options_.progress({statistics_.splitters, queue_.size(), static_cast<std::uint32_t>(blocks_.size())});
+        options_.progress(
+            {statistics_.splitters, queue_.size(), static_cast<std::uint32_t>(blocks_.size())});
       }
     }
     statistics_.splitting_seconds = clock.lap();
     if (statistics != nullptr) *statistics = statistics_;
     std::vector<BlockIndex> block_of(num_states_);
-    for (StateIndex s = 0; s < num_states_; ++s) block_of[s] = state_scratch_[s].block;
+    for (StateIndex s = 0; s < num_states_; ++s)
+      block_of[s] = state_scratch_[s].block;
     return canonical_partition(block_of);
   }
 
@@ -132,7 +134,7 @@ class Refiner {
     StateIndex representative;
     BlockIndex block;
     std::uint32_t size;
-    StateIndex first_state;  // list through StateScratch::next_in_group
+    StateIndex first_state;       // list through StateScratch::next_in_group
     std::uint32_t next_in_block;  // list of the block's groups
     std::uint32_t next_same_hash;
     std::uint32_t signature_begin;  // the representative's signature in group_signatures_
@@ -175,8 +177,10 @@ class Refiner {
   // For every state t, the (choice, probability) of each edge into t.
   void build_reverse_edges() {
     in_begin_.assign(std::size_t{num_states_} + 1, 0);
-    for (StateIndex t : matrix_.edge_target) ++in_begin_[t + 1];
-    for (std::size_t t = 0; t < num_states_; ++t) in_begin_[t + 1] += in_begin_[t];
+    for (StateIndex t : matrix_.edge_target)
+      ++in_begin_[t + 1];
+    for (std::size_t t = 0; t < num_states_; ++t)
+      in_begin_[t + 1] += in_begin_[t];
     incoming_.resize(matrix_.num_edges());
     std::vector<EdgeIndex> cursor(in_begin_.begin(), in_begin_.end() - 1);
     const std::size_t num_choices = std::size_t{num_states_} * num_actions_;
@@ -282,13 +286,15 @@ class Refiner {
     groups_.clear();
     group_signatures_.clear();
     std::size_t table_size = 16;
-    while (table_size < 2 * std::size_t{num_states_}) table_size *= 2;
+    while (table_size < 2 * std::size_t{num_states_})
+      table_size *= 2;
     group_table_.assign(table_size, kNone);
     for (StateIndex s = 0; s < num_states_; ++s) {
       batch_signature(s, signature_);
       if (!signature_.empty()) add_to_group(s, signature_);
     }
-    for (BlockIndex b : batch) batch_slot_[b] = kNone;
+    for (BlockIndex b : batch)
+      batch_slot_[b] = kNone;
     split_touched_blocks();
     reset_scratch();
   }
@@ -309,8 +315,9 @@ class Refiner {
         if (slot == kNone) continue;
         add_batch_weight(out, first, a, slot, matrix_.edge_probability[e]);
       }
-      std::sort(out.begin() + static_cast<std::ptrdiff_t>(first), out.end(),
-                [](const SignatureEntry& x, const SignatureEntry& y) { return x.splitter < y.splitter; });
+      std::sort(
+          out.begin() + static_cast<std::ptrdiff_t>(first), out.end(),
+          [](const SignatureEntry& x, const SignatureEntry& y) { return x.splitter < y.splitter; });
     }
   }
 
@@ -382,9 +389,15 @@ class Refiner {
       }
     }
     switch (weights_.mode) {
-      case WeightMode::Integer: choice.sum += weights_.integer[probability]; break;
-      case WeightMode::Rounded: real_sum_[c] += weights_.real[probability]; break;
-      case WeightMode::Rational: rational_sum_[rational_slot_[c]] += model_.values[probability]; break;
+      case WeightMode::Integer:
+        choice.sum += weights_.integer[probability];
+        break;
+      case WeightMode::Rounded:
+        real_sum_[c] += weights_.real[probability];
+        break;
+      case WeightMode::Rational:
+        rational_sum_[rational_slot_[c]] += model_.values[probability];
+        break;
     }
   }
 
@@ -398,12 +411,17 @@ class Refiner {
       ChoiceScratch& choice = choice_scratch_[first + a];
       if (choice.touched == 0) continue;
       switch (weights_.mode) {
-        case WeightMode::Integer: out.push_back({a, 0, choice.sum}); break;
+        case WeightMode::Integer:
+          out.push_back({a, 0, choice.sum});
+          break;
         case WeightMode::Rounded:
-          out.push_back({a, 0, static_cast<std::uint64_t>(weights_.rounded_key(real_sum_[first + a]))});
+          out.push_back(
+              {a, 0, static_cast<std::uint64_t>(weights_.rounded_key(real_sum_[first + a]))});
           real_sum_[first + a] = 0;
           break;
-        case WeightMode::Rational: out.push_back({a, 0, rational_slot_[first + a]}); break;
+        case WeightMode::Rational:
+          out.push_back({a, 0, rational_slot_[first + a]});
+          break;
       }
       choice = ChoiceScratch{};
     }
@@ -420,15 +438,18 @@ class Refiner {
     return a.key == b.key;
   }
 
-  [[nodiscard]] std::uint64_t signature_hash(BlockIndex block, const std::vector<SignatureEntry>& signature) const {
+  [[nodiscard]] std::uint64_t signature_hash(BlockIndex block,
+                                             const std::vector<SignatureEntry>& signature) const {
     std::uint64_t hash = mix(block + 0x9e3779b97f4a7c15ULL);
     for (const SignatureEntry& entry : signature) {
-      hash = mix(hash ^ entry.action ^ (std::uint64_t{entry.splitter} << 32U)) ^ mix(entry_hash(entry));
+      hash = mix(hash ^ entry.action ^ (std::uint64_t{entry.splitter} << 32U)) ^
+             mix(entry_hash(entry));
     }
     return hash;
   }
 
-  [[nodiscard]] bool same_signature(const std::vector<SignatureEntry>& a, const Group& group) const {
+  [[nodiscard]] bool same_signature(const std::vector<SignatureEntry>& a,
+                                    const Group& group) const {
     if (a.size() != group.signature_end - group.signature_begin) return false;
     for (std::size_t i = 0; i < a.size(); ++i) {
       if (!same_entry(a[i], group_signatures_[group.signature_begin + i])) return false;
@@ -443,7 +464,8 @@ class Refiner {
     groups_.clear();
     group_signatures_.clear();
     std::size_t table_size = 16;
-    while (table_size < 2 * touched_states_.size()) table_size *= 2;
+    while (table_size < 2 * touched_states_.size())
+      table_size *= 2;
     group_table_.assign(table_size, kNone);
     constexpr std::size_t kAhead = 8;
     for (std::size_t i = 0; i < touched_states_.size(); ++i) {
@@ -484,7 +506,8 @@ class Refiner {
   }
 
   void split_touched_blocks() {
-    for (BlockIndex block : touched_blocks_) split_block(block);
+    for (BlockIndex block : touched_blocks_)
+      split_block(block);
   }
 
   // Rearranges the block's range as [untouched | group 1 | group 2 | ...] and makes every
@@ -494,17 +517,20 @@ class Refiner {
     const std::uint32_t first_group = block_first_group_[block];
     Block& range = blocks_[block];
     std::uint32_t touched = 0;
-    for (std::uint32_t g = first_group; g != kNone; g = groups_[g].next_in_block) touched += groups_[g].size;
+    for (std::uint32_t g = first_group; g != kNone; g = groups_[g].next_in_block)
+      touched += groups_[g].size;
     const std::uint32_t untouched = range.size() - touched;
     if (untouched == 0 && groups_[first_group].next_in_block == kNone) {  // one group: no split
-      for (StateIndex s = groups_[first_group].first_state; s != kNone;) s = clear_state(s);
+      for (StateIndex s = groups_[first_group].first_state; s != kNone;)
+        s = clear_state(s);
       return;
     }
 
     // Move the touched states to the tail of the range, then lay them out group by group.
     std::uint32_t tail = range.end;
     for (std::uint32_t g = first_group; g != kNone; g = groups_[g].next_in_block) {
-      for (StateIndex s = groups_[g].first_state; s != kNone; s = state_scratch_[s].next_in_group) swap_to(s, --tail);
+      for (StateIndex s = groups_[g].first_state; s != kNone; s = state_scratch_[s].next_in_group)
+        swap_to(s, --tail);
     }
     std::uint32_t cursor = range.begin + untouched;
     const bool was_queued = range.queued;
@@ -527,7 +553,8 @@ class Refiner {
       } else {
         part = static_cast<BlockIndex>(blocks_.size());
         blocks_.push_back({begin, cursor, false});
-        for (std::uint32_t i = begin; i < cursor; ++i) state_scratch_[elements_[i]].block = part;
+        for (std::uint32_t i = begin; i < cursor; ++i)
+          state_scratch_[elements_[i]].block = part;
       }
       parts.push_back(part);
     }
@@ -573,8 +600,10 @@ class Refiner {
   // Choice and state records were cleared while grouping and splitting; what is left is
   // the bookkeeping of this splitter.
   void reset_scratch() {
-    for (ChoiceIndex c : touched_choices_) rational_slot_[c] = kNone;  // Rational mode only
-    for (BlockIndex b : touched_blocks_) block_first_group_[b] = kNone;
+    for (ChoiceIndex c : touched_choices_)
+      rational_slot_[c] = kNone;  // Rational mode only
+    for (BlockIndex b : touched_blocks_)
+      block_first_group_[b] = kNone;
     touched_choices_.clear();
     touched_states_.clear();
     touched_blocks_.clear();
@@ -619,7 +648,8 @@ class Refiner {
 }  // namespace
 
 Partition coarsest_bisimulation(const model::ExplicitModel& model, std::size_t context,
-                                const RefinementOptions& options, RefinementStatistics* statistics) {
+                                const RefinementOptions& options,
+                                RefinementStatistics* statistics) {
   return Refiner(model, context, options).run(statistics);
 }
 

@@ -33,11 +33,11 @@ struct RefinementOptions {
 };
 
 struct RefinementStatistics {
-  std::uint64_t splitters = 0;      // blocks used as splitters
-  std::uint64_t edge_visits = 0;    // incoming edges scanned over all splitters
-  std::uint64_t batch_passes = 0;   // forward passes that took the whole queue at once
+  std::uint64_t splitters = 0;       // blocks used as splitters
+  std::uint64_t edge_visits = 0;     // incoming edges scanned over all splitters
+  std::uint64_t batch_passes = 0;    // forward passes that took the whole queue at once
   std::uint32_t initial_blocks = 0;  // blocks of the reward/enabled-action signature
-  bool exact_integer_sums = false;  // sums were exact integers over a common denominator
+  bool exact_integer_sums = false;   // sums were exact integers over a common denominator
   // Wall-clock seconds of the phases: reverse edges, initial partition, splitting.
   double setup_seconds = 0;
   double initial_seconds = 0;

@@ -28,8 +28,9 @@ struct WeightTable {
   // Picks Integer when the common denominator of the probabilities used by `matrix` fits,
   // Rational otherwise; Rounded when `epsilon` is given.
   // `rational` forces the Rational representation.
-  static WeightTable choose(const model::ExplicitModel& model, const model::TransitionMatrix& matrix,
-                            std::optional<double> epsilon, bool rational = false);
+  static WeightTable choose(const model::ExplicitModel& model,
+                            const model::TransitionMatrix& matrix, std::optional<double> epsilon,
+                            bool rational = false);
 
   // The key a summed weight is compared by in Rounded mode.
   [[nodiscard]] std::int64_t rounded_key(double weight) const {

@@ -27,7 +27,8 @@ std::string describe_loaded(const LoadedModel& loaded) {
     }
   }
   if (loaded.model) text += std::to_string(loaded.model->num_states()) + " states, ";
-  const std::size_t contexts = loaded.ir ? loaded.ir->contexts.size() : loaded.model->contexts.size();
+  const std::size_t contexts =
+      loaded.ir ? loaded.ir->contexts.size() : loaded.model->contexts.size();
   return text + std::to_string(contexts) + (contexts == 1 ? " context" : " contexts");
 }
 

@@ -2,9 +2,9 @@
 // The subcommands of oasisc. Each registers its options on the CLI11 app and returns the
 // exit status when run: 0 success, 1 the input has errors, 2 bad usage.
 
-#include <CLI/CLI.hpp>
-
 #include <functional>
+
+#include <CLI/CLI.hpp>
 
 #include "cli/model_loader.hpp"
 

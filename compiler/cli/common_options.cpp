@@ -5,27 +5,30 @@
 namespace oasis::cli {
 
 void add_common_options(CLI::App& command, CommonOptions& options) {
-  command.add_option("--max-states", options.load.max_states,
-                     "Stop exploring a factored model past this many states")
+  command
+      .add_option("--max-states", options.load.max_states,
+                  "Stop exploring a factored model past this many states")
       ->capture_default_str()
       ->check(CLI::Range(1U, 4'000'000'000U));
   command.add_option("--max-errors", options.max_errors, "Stop after this many errors")
       ->capture_default_str()
       ->check(CLI::Range(std::size_t{1}, std::size_t{100000}));
-  command.add_option("--max-spec-size", options.load.max_spec_bytes,
-                     "Refuse .oasis files larger than this many bytes")
+  command
+      .add_option("--max-spec-size", options.load.max_spec_bytes,
+                  "Refuse .oasis files larger than this many bytes")
       ->capture_default_str();
-  command.add_option("--progress", options.progress,
-                     "Show exploration progress on stderr: auto (when it is a terminal), "
-                     "always or never")
+  command
+      .add_option("--progress", options.progress,
+                  "Show exploration progress on stderr: auto (when it is a terminal), "
+                  "always or never")
       ->capture_default_str()
       ->check(CLI::IsMember({"auto", "always", "never"}));
 }
 
 LoadOptions effective_load_options(const CommonOptions& options) {
   LoadOptions load = options.load;
-  load.progress = options.progress == "always" ||
-                  (options.progress == "auto" && ::isatty(STDERR_FILENO) == 1);
+  load.progress =
+      options.progress == "always" || (options.progress == "auto" && ::isatty(STDERR_FILENO) == 1);
   return load;
 }
 

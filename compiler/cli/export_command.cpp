@@ -20,8 +20,8 @@ struct ExportOptions {
 };
 
 // The index of the context to export: the named one, or the only one.
-std::optional<std::size_t> choose_context(const model::ExplicitModel& model, const std::string& name,
-                                          const std::string& path) {
+std::optional<std::size_t> choose_context(const model::ExplicitModel& model,
+                                          const std::string& name, const std::string& path) {
   std::string names;
   for (std::size_t c = 0; c < model.contexts.size(); ++c) {
     if (model.contexts[c].name == name) return c;
@@ -38,19 +38,22 @@ std::optional<std::size_t> choose_context(const model::ExplicitModel& model, con
 int run_export(const ExportOptions& options) {
   SourceManager sources;
   DiagnosticEngine diagnostics(sources, std::cerr, options.common.max_errors);
-  auto loaded = load_model(options.file, sources, diagnostics, effective_load_options(options.common));
+  auto loaded =
+      load_model(options.file, sources, diagnostics, effective_load_options(options.common));
   if (!loaded || diagnostics.has_errors()) return 1;
   if (!loaded->model) {
-    std::cerr << options.file << ": error: a continuous model has no explicit states to export "
-                                 "before the geometry layer partitions it\n";
+    std::cerr << options.file
+              << ": error: a continuous model has no explicit states to export "
+                 "before the geometry layer partitions it\n";
     return 1;
   }
   const auto context = choose_context(*loaded->model, options.context, options.file);
   if (!context) return 1;
   std::string error;
-  const bool written = options.format == "aut"
-                           ? formats::write_aut_file(*loaded->model, *context, options.output, error)
-                           : formats::write_prism(*loaded->model, *context, options.output, error);
+  const bool written =
+      options.format == "aut"
+          ? formats::write_aut_file(*loaded->model, *context, options.output, error)
+          : formats::write_prism(*loaded->model, *context, options.output, error);
   if (!written) {
     std::cerr << options.output << ": error: " << error << '\n';
     return 1;
@@ -74,14 +77,16 @@ CommandRunner add_export_command(CLI::App& app) {
       "Examples:\n"
       "  oasisc export specs/discrete_tracking.oasis --context object_at_s1 --format aut -o t.aut\n"
       "  oasisc export model.aut --format prism -o model   # writes model.tra, model.lab, ...");
-  command->add_option("file", options->file, "Spec (.oasis) or model (.aut, .tra) file")->required();
+  command->add_option("file", options->file, "Spec (.oasis) or model (.aut, .tra) file")
+      ->required();
   command->add_option("-c,--context", options->context,
                       "Context to export (needed when the model has several)");
   command->add_option("-f,--format", options->format, "Output format")
       ->required()
       ->check(CLI::IsMember({"aut", "prism"}));
-  command->add_option("-o,--output", options->output,
-                      "Output file (aut) or base name (prism; '.tra' may be given)")
+  command
+      ->add_option("-o,--output", options->output,
+                   "Output file (aut) or base name (prism; '.tra' may be given)")
       ->required();
   add_common_options(*command, options->common);
   return [options] { return run_export(*options); };

@@ -3,8 +3,9 @@
 #include <iomanip>
 #include <iostream>
 #include <memory>
-#include <nlohmann/json.hpp>
 #include <sstream>
+
+#include <nlohmann/json.hpp>
 
 #include "cli/commands.hpp"
 #include "model/statistics.hpp"
@@ -21,9 +22,12 @@ struct InfoOptions {
 const char* kind_name(const LoadedModel& loaded) {
   if (!loaded.ir) return "imported";
   switch (loaded.ir->kind) {
-    case model::ModelKind::Explicit: return "explicit";
-    case model::ModelKind::Factored: return "factored";
-    case model::ModelKind::Continuous: return "continuous";
+    case model::ModelKind::Explicit:
+      return "explicit";
+    case model::ModelKind::Factored:
+      return "factored";
+    case model::ModelKind::Continuous:
+      return "continuous";
   }
   return "?";
 }
@@ -31,9 +35,11 @@ const char* kind_name(const LoadedModel& loaded) {
 std::vector<std::string> context_names(const LoadedModel& loaded) {
   std::vector<std::string> names;
   if (loaded.model) {
-    for (const auto& context : loaded.model->contexts) names.push_back(context.name);
+    for (const auto& context : loaded.model->contexts)
+      names.push_back(context.name);
   } else {
-    for (const auto& context : loaded.ir->contexts) names.push_back(context.name);
+    for (const auto& context : loaded.ir->contexts)
+      names.push_back(context.name);
   }
   return names;
 }
@@ -53,7 +59,8 @@ nlohmann::json to_json(const LoadedModel& loaded) {
   if (loaded.ir && loaded.ir->kind == model::ModelKind::Continuous) {
     nlohmann::json variables = nlohmann::json::array();
     for (const auto& var : loaded.ir->continuous) {
-      variables.push_back({{"name", var.name}, {"low", to_double(var.low)}, {"high", to_double(var.high)}});
+      variables.push_back(
+          {{"name", var.name}, {"low", to_double(var.low)}, {"high", to_double(var.high)}});
     }
     out["continuous_variables"] = variables;
     out["regions"] = loaded.ir->regions.size();
@@ -76,17 +83,20 @@ nlohmann::json to_json(const LoadedModel& loaded) {
     contexts.push_back(context);
   }
   out["contexts"] = contexts;
-  const model::SwitchingModel& switching = loaded.model ? loaded.model->switching : loaded.ir->switching;
+  const model::SwitchingModel& switching =
+      loaded.model ? loaded.model->switching : loaded.ir->switching;
   if (!switching.matrix.empty()) {
     nlohmann::json matrix = nlohmann::json::array();
     for (std::size_t i = 0; i < names.size(); ++i) {
       nlohmann::json row = nlohmann::json::array();
-      for (std::size_t j = 0; j < names.size(); ++j) row.push_back(to_string(switching.matrix[i * names.size() + j]));
+      for (std::size_t j = 0; j < names.size(); ++j)
+        row.push_back(to_string(switching.matrix[i * names.size() + j]));
       matrix.push_back(row);
     }
     out["switching"] = matrix;
     nlohmann::json prior = nlohmann::json::array();
-    for (const Rational& p : switching.prior) prior.push_back(to_string(p));
+    for (const Rational& p : switching.prior)
+      prior.push_back(to_string(p));
     out["prior"] = prior;
   }
   return out;
@@ -103,7 +113,8 @@ void print_text(const LoadedModel& loaded) {
             << kind_name(loaded) << ")\n";
   std::cout << "  actions: " << summary["actions"] << " (";
   const auto& actions = summary["action_names"];
-  for (std::size_t a = 0; a < actions.size(); ++a) std::cout << (a ? ", " : "") << actions[a].get<std::string>();
+  for (std::size_t a = 0; a < actions.size(); ++a)
+    std::cout << (a ? ", " : "") << actions[a].get<std::string>();
   std::cout << ")\n";
   if (summary.contains("continuous_variables")) {
     std::cout << "  continuous variables: " << summary["continuous_variables"].size()
@@ -113,7 +124,8 @@ void print_text(const LoadedModel& loaded) {
   std::vector<model::ContextStatistics> stats;
   if (loaded.model) stats = model::context_statistics(*loaded.model);
   std::cout << "  " << std::left << std::setw(24) << "context" << std::setw(12) << "states"
-            << std::setw(12) << "choices" << std::setw(14) << "transitions" << "rewards\n";
+            << std::setw(12) << "choices" << std::setw(14) << "transitions"
+            << "rewards\n";
   for (std::size_t c = 0; c < names.size(); ++c) {
     std::cout << "  " << std::setw(24) << names[c];
     if (c < stats.size()) {
@@ -128,7 +140,8 @@ void print_text(const LoadedModel& loaded) {
 int run_info(const InfoOptions& options) {
   SourceManager sources;
   DiagnosticEngine diagnostics(sources, std::cerr, options.common.max_errors);
-  auto loaded = load_model(options.file, sources, diagnostics, effective_load_options(options.common));
+  auto loaded =
+      load_model(options.file, sources, diagnostics, effective_load_options(options.common));
   if (!loaded || diagnostics.has_errors()) return 1;
   if (options.json) {
     std::cout << std::setw(2) << to_json(*loaded) << '\n';
@@ -142,8 +155,9 @@ int run_info(const InfoOptions& options) {
 
 CommandRunner add_info_command(CLI::App& app) {
   auto options = std::make_shared<InfoOptions>();
-  CLI::App* command = app.add_subcommand("info", "Summarise a model: states, actions, "
-                                                 "transitions and rewards of each context");
+  CLI::App* command = app.add_subcommand("info",
+                                         "Summarise a model: states, actions, "
+                                         "transitions and rewards of each context");
   command->footer(
       "Counts are those of the explicit model: every declared state of an explicit spec,\n"
       "the reachable states of a factored one. 'transitions' counts (state, action,\n"
@@ -152,8 +166,10 @@ CommandRunner add_info_command(CLI::App& app) {
       "geometry layer.\n\n"
       "Examples:\n  oasisc info specs/discrete_tracking.oasis\n"
       "  oasisc info specs/discrete_tracking.oasis --json | jq '.contexts[].name'");
-  command->add_option("file", options->file, "Spec (.oasis) or model (.aut, .tra) file")->required();
-  command->add_flag("--json", options->json, "Print JSON (keys: model, states, actions, contexts[])");
+  command->add_option("file", options->file, "Spec (.oasis) or model (.aut, .tra) file")
+      ->required();
+  command->add_flag("--json", options->json,
+                    "Print JSON (keys: model, states, actions, contexts[])");
   add_common_options(*command, options->common);
   return [options] { return run_info(*options); };
 }

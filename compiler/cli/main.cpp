@@ -1,9 +1,9 @@
 // oasisc: the oasis abstraction compiler.
 
-#include <CLI/CLI.hpp>
-
 #include <iostream>
 #include <map>
+
+#include <CLI/CLI.hpp>
 
 #include "cli/commands.hpp"
 
@@ -14,8 +14,9 @@ int main(int argc, char** argv) {
                "oasisc"};
   app.require_subcommand(1);
   app.set_version_flag("--version", std::string("oasisc ") + OASIS_VERSION);
-  app.footer("Run 'oasisc COMMAND --help' for a command's options. The spec language is\n"
-             "described in docs/spec-language.md.");
+  app.footer(
+      "Run 'oasisc COMMAND --help' for a command's options. The spec language is\n"
+      "described in docs/spec-language.md.");
 
   std::map<const CLI::App*, oasis::cli::CommandRunner> runners;
   auto add = [&](oasis::cli::CommandRunner runner) {
@@ -38,7 +39,8 @@ int main(int argc, char** argv) {
     return 2;  // bad usage, distinct from 1 (the input has errors)
   }
   try {
-    for (const CLI::App* command : app.get_subcommands()) return runners.at(command)();
+    for (const CLI::App* command : app.get_subcommands())
+      return runners.at(command)();
   } catch (const std::bad_alloc&) {
     std::cerr << "oasisc: error: out of memory\n";
     return 1;

@@ -11,11 +11,13 @@ namespace oasis::cli {
 namespace {
 
 bool has_suffix(const std::string& text, std::string_view suffix) {
-  return text.size() >= suffix.size() && text.compare(text.size() - suffix.size(), suffix.size(), suffix) == 0;
+  return text.size() >= suffix.size() &&
+         text.compare(text.size() - suffix.size(), suffix.size(), suffix) == 0;
 }
 
 void print_progress(std::uint64_t found, std::uint64_t explored) {
-  std::cerr << "\rexploring: " << explored << " of " << found << " states found so far" << std::flush;
+  std::cerr << "\rexploring: " << explored << " of " << found << " states found so far"
+            << std::flush;
 }
 
 }  // namespace

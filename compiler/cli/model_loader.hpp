@@ -16,7 +16,7 @@ struct LoadOptions {
   std::uint32_t max_states = 20'000'000;
   std::size_t max_spec_bytes = std::size_t{16} << 20;
   std::size_t max_model_bytes = std::size_t{8} << 30;
-  bool explore = true;   // false: stop after the front end
+  bool explore = true;    // false: stop after the front end
   bool progress = false;  // report exploration progress on stderr
 };
 

@@ -1,16 +1,16 @@
 // `oasisc quotient FILE`: the coarsest bisimulation quotient of every context.
 
-#include <sys/resource.h>
-#include <unistd.h>
-
 #include <atomic>
 #include <chrono>
 #include <iomanip>
 #include <iostream>
 #include <memory>
 #include <mutex>
-#include <nlohmann/json.hpp>
 #include <thread>
+
+#include <nlohmann/json.hpp>
+#include <sys/resource.h>
+#include <unistd.h>
 
 #include "bisim/quotient.hpp"
 #include "bisim/refinement.hpp"
@@ -44,15 +44,18 @@ std::optional<std::vector<std::size_t>> select_contexts(const model::ExplicitMod
                                                         const QuotientOptions& options) {
   std::vector<std::size_t> selected;
   if (options.contexts.empty()) {
-    for (std::size_t c = 0; c < model.contexts.size(); ++c) selected.push_back(c);
+    for (std::size_t c = 0; c < model.contexts.size(); ++c)
+      selected.push_back(c);
     return selected;
   }
   for (const std::string& name : options.contexts) {
     std::size_t c = 0;
-    while (c < model.contexts.size() && model.contexts[c].name != name) ++c;
+    while (c < model.contexts.size() && model.contexts[c].name != name)
+      ++c;
     if (c == model.contexts.size()) {
       std::cerr << options.file << ": error: the model has no context '" << name << "' (it has:";
-      for (const auto& context : model.contexts) std::cerr << ' ' << context.name;
+      for (const auto& context : model.contexts)
+        std::cerr << ' ' << context.name;
       std::cerr << ")\n";
       return std::nullopt;
     }
@@ -86,15 +89,19 @@ std::vector<ContextResult> run_contexts(const model::ExplicitModel& model,
       ContextResult& result = results[i];
       result.context = c;
       result.partition = bisim::coarsest_bisimulation(model, c, refinement, &result.statistics);
-      result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      result.seconds =
+          std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     }
   };
   const unsigned hardware = std::max(1U, std::thread::hardware_concurrency());
-  const unsigned jobs = std::min<std::size_t>(options.jobs == 0 ? hardware : options.jobs, selected.size());
+  const unsigned jobs =
+      std::min<std::size_t>(options.jobs == 0 ? hardware : options.jobs, selected.size());
   std::vector<std::thread> threads;
-  for (unsigned j = 1; j < jobs; ++j) threads.emplace_back(worker);
+  for (unsigned j = 1; j < jobs; ++j)
+    threads.emplace_back(worker);
   worker();
-  for (std::thread& thread : threads) thread.join();
+  for (std::thread& thread : threads)
+    thread.join();
   if (progress) std::cerr << "\r\033[K" << std::flush;
   return results;
 }
@@ -114,12 +121,14 @@ int write_output(const LoadedModel& loaded, const std::vector<ContextResult>& re
     if (options.format == "json") {
       text = quotient_json(loaded, results, load_seconds, peak_memory_mib(), options.partition,
                            options.epsilon)
-                 .dump(2) + "\n";
+                 .dump(2) +
+             "\n";
     } else {
-      const model::ExplicitModel quotient = bisim::build_quotient(model, results[i].context, results[i].partition);
+      const model::ExplicitModel quotient =
+          bisim::build_quotient(model, results[i].context, results[i].partition);
       if (options.format == "aut") {
-        const std::string path = output_path(options.output, "aut", model.contexts[results[i].context].name,
-                                             results.size() > 1);
+        const std::string path = output_path(
+            options.output, "aut", model.contexts[results[i].context].name, results.size() > 1);
         if (!formats::write_aut_file(quotient, 0, path, error)) {
           std::cerr << path << ": error: " << error << '\n';
           return 1;
@@ -132,8 +141,9 @@ int write_output(const LoadedModel& loaded, const std::vector<ContextResult>& re
       std::cout << text;
       continue;
     }
-    const std::string path = output_path(options.output, options.format, model.contexts[results[i].context].name,
-                                         options.format != "json" && results.size() > 1);
+    const std::string path =
+        output_path(options.output, options.format, model.contexts[results[i].context].name,
+                    options.format != "json" && results.size() > 1);
     AtomicFile file;
     if (!file.open(path, error) || (file.append(text), !file.commit(error))) {
       std::cerr << path << ": error: " << error << '\n';
@@ -155,11 +165,13 @@ int run_quotient(const QuotientOptions& options) {
   auto loaded = load_model(options.file, sources, diagnostics, load_options);
   if (!loaded || diagnostics.has_errors()) return 1;
   if (!loaded->model) {
-    std::cerr << options.file << ": error: continuous models are partitioned by the geometry "
-                                 "layer, which this build does not have yet\n";
+    std::cerr << options.file
+              << ": error: continuous models are partitioned by the geometry "
+                 "layer, which this build does not have yet\n";
     return 1;
   }
-  const double load_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const double load_seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   const auto selected = select_contexts(*loaded->model, options);
   if (!selected) return 1;
   const auto results = run_contexts(*loaded->model, *selected, options, load_options.progress);
@@ -170,8 +182,8 @@ int run_quotient(const QuotientOptions& options) {
 
 CommandRunner add_quotient_command(CLI::App& app) {
   auto options = std::make_shared<QuotientOptions>();
-  CLI::App* command = app.add_subcommand(
-      "quotient", "Compute the coarsest bisimulation quotient of every context");
+  CLI::App* command =
+      app.add_subcommand("quotient", "Compute the coarsest bisimulation quotient of every context");
   command->footer(
       "Two states are bisimilar when, for every action, both have it enabled or neither,\n"
       "their rewards R(s,a) are equal, and their probabilities of reaching every block are\n"
@@ -187,17 +199,20 @@ CommandRunner add_quotient_command(CLI::App& app) {
       "  oasisc quotient specs/discrete_tracking.oasis --format json --partition -o result.json\n"
       "  oasisc verify specs/discrete_tracking.oasis result.json\n"
       "  oasisc quotient model.aut --format aut -o model.min.aut");
-  command->add_option("file", options->file, "Spec (.oasis) or model (.aut, .tra) file")->required();
+  command->add_option("file", options->file, "Spec (.oasis) or model (.aut, .tra) file")
+      ->required();
   command->add_option("-c,--context", options->contexts, "Quotient only this context (repeatable)");
   command->add_option("-f,--format", options->format, "Output: text, json, aut or dot")
       ->capture_default_str()
       ->check(CLI::IsMember({"text", "json", "aut", "dot"}));
   command->add_option("-o,--output", options->output, "Output file (default: standard output)");
   command->add_flag("--partition", options->partition, "Include the blocks in the JSON output");
-  command->add_option("--epsilon", options->epsilon,
-                      "Compare probabilities rounded to multiples of E (approximate mode)")
+  command
+      ->add_option("--epsilon", options->epsilon,
+                   "Compare probabilities rounded to multiples of E (approximate mode)")
       ->check(CLI::Range(1e-15, 0.5));
-  command->add_option("-j,--jobs", options->jobs, "Contexts quotiented in parallel (default: cores)");
+  command->add_option("-j,--jobs", options->jobs,
+                      "Contexts quotiented in parallel (default: cores)");
   add_common_options(*command, options->common);
   return [options] { return run_quotient(*options); };
 }

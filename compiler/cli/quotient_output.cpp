@@ -31,15 +31,19 @@ void print_summary(std::ostream& out, const model::ExplicitModel& model,
   out << model.name << ": " << model.num_states() << " states, " << model.num_actions()
       << " actions; read in " << std::fixed << std::setprecision(3) << load_seconds << " s\n";
   out << "  " << std::left << std::setw(24) << "context" << std::right << std::setw(12) << "states"
-      << std::setw(14) << "transitions" << std::setw(10) << "blocks" << std::setw(10) << "seconds" << '\n';
+      << std::setw(14) << "transitions" << std::setw(10) << "blocks" << std::setw(10) << "seconds"
+      << '\n';
   for (const ContextResult& result : results) {
     const model::Context& context = model.contexts[result.context];
     out << "  " << std::left << std::setw(24) << context.name << std::right << std::setw(12)
         << model.num_states() << std::setw(14) << context.transitions->num_edges() << std::setw(10)
-        << result.partition.num_blocks << std::setw(10) << std::setprecision(3) << result.seconds << '\n';
+        << result.partition.num_blocks << std::setw(10) << std::setprecision(3) << result.seconds
+        << '\n';
   }
   out << "  peak memory " << std::setprecision(1) << peak_mib << " MiB";
-  if (epsilon) out << "; APPROXIMATE: probabilities and rewards compared after rounding to multiples of " << *epsilon;
+  if (epsilon)
+    out << "; APPROXIMATE: probabilities and rewards compared after rounding to multiples of "
+        << *epsilon;
   out << '\n' << std::defaultfloat;
 }
 
@@ -73,7 +77,8 @@ nlohmann::json quotient_json(const LoadedModel& loaded, const std::vector<Contex
       nlohmann::json blocks = nlohmann::json::array();
       for (const auto& members : result.partition.blocks()) {
         nlohmann::json block = nlohmann::json::array();
-        for (model::StateIndex s : members) block.push_back(state_label(model.states, s));
+        for (model::StateIndex s : members)
+          block.push_back(state_label(model.states, s));
         blocks.push_back(std::move(block));
       }
       entry["partition"] = std::move(blocks);
@@ -98,7 +103,8 @@ std::string quotient_dot(const model::ExplicitModel& model, const ContextResult&
     for (std::size_t i = 0; i < blocks[z].size() && i < kShownMembers; ++i) {
       members += (i ? ", " : "") + model.states.name(blocks[z][i]);
     }
-    if (blocks[z].size() > kShownMembers) members += ", ... (" + std::to_string(blocks[z].size()) + ")";
+    if (blocks[z].size() > kShownMembers)
+      members += ", ... (" + std::to_string(blocks[z].size()) + ")";
     out << "  z" << z << " [label=\"z" << z << "\\n{" << dot_escape(members) << "}\"];\n";
   }
   for (model::StateIndex z = 0; z < quotient.num_states(); ++z) {

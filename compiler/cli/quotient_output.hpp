@@ -2,10 +2,11 @@
 // What `oasisc quotient` prints and writes: the summary table, the JSON document, DOT.
 
 #include <iosfwd>
-#include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
 #include <vector>
+
+#include <nlohmann/json.hpp>
 
 #include "bisim/partition.hpp"
 #include "bisim/refinement.hpp"
@@ -21,8 +22,8 @@ struct ContextResult {
 };
 
 void print_summary(std::ostream& out, const model::ExplicitModel& model,
-                   const std::vector<ContextResult>& results, double load_seconds,
-                   double peak_mib, std::optional<double> epsilon);
+                   const std::vector<ContextResult>& results, double load_seconds, double peak_mib,
+                   std::optional<double> epsilon);
 
 // Keys: file, model, exact, epsilon, load_seconds, peak_memory_mib, contexts[] with name,
 // states, transitions, blocks, seconds, splitters, edge_visits (and partition when asked:

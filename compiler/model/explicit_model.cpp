@@ -66,7 +66,8 @@ TransitionMatrix TransitionBuilder::finish(RationalPool& values) {
 
   // Counting sort by choice: O(m + choices), stable, no comparison sort over all edges.
   matrix.choice_begin.assign(num_choices + 1, 0);
-  for (ChoiceIndex c : choices_) ++matrix.choice_begin[c + 1];
+  for (ChoiceIndex c : choices_)
+    ++matrix.choice_begin[c + 1];
   std::partial_sum(matrix.choice_begin.begin(), matrix.choice_begin.end(),
                    matrix.choice_begin.begin());
   std::vector<EdgeIndex> cursor(matrix.choice_begin.begin(), matrix.choice_begin.end() - 1);
@@ -91,7 +92,8 @@ TransitionMatrix TransitionBuilder::finish(RationalPool& values) {
     const EdgeIndex end = matrix.choice_begin[c + 1];
     matrix.choice_begin[c] = row_begin;
     row.clear();
-    for (EdgeIndex e = begin; e < end; ++e) row.emplace_back(sorted_target[e], sorted_probability[e]);
+    for (EdgeIndex e = begin; e < end; ++e)
+      row.emplace_back(sorted_target[e], sorted_probability[e]);
     append_distribution(row, values, matrix);
     row_begin = static_cast<EdgeIndex>(matrix.edge_target.size());
   }
@@ -110,7 +112,8 @@ void append_distribution(std::vector<std::pair<StateIndex, ValueId>>& row, Ratio
     ValueId probability = row[i].second;
     if (j < row.size() && row[j].first == row[i].first) {
       Rational sum = values[probability];
-      for (; j < row.size() && row[j].first == row[i].first; ++j) sum += values[row[j].second];
+      for (; j < row.size() && row[j].first == row[i].first; ++j)
+        sum += values[row[j].second];
       probability = values.intern(sum);
     }
     matrix.edge_target.push_back(row[i].first);

@@ -64,8 +64,8 @@ struct Context {
 // The states, named either explicitly or by the valuation of a factored model's variables.
 struct StateSpace {
   std::uint32_t size = 0;
-  std::vector<std::string> names;       // explicit models: one name per state
-  std::vector<std::string> variables;   // factored models: variable names
+  std::vector<std::string> names;        // explicit models: one name per state
+  std::vector<std::string> variables;    // factored models: variable names
   std::vector<std::int64_t> valuations;  // factored models: size * variables.size()
   std::vector<StateIndex> initial;
 

@@ -10,7 +10,9 @@
 namespace oasis::model {
 namespace {
 
-std::string quoted(std::string_view text) { return "'" + std::string(text) + "'"; }
+std::string quoted(std::string_view text) {
+  return "'" + std::string(text) + "'";
+}
 
 // Raised after a diagnostic has been reported; ends exploration.
 struct ExplorationFailed {};
@@ -28,8 +30,9 @@ class Explorer {
 
   std::optional<ExplicitModel> run() {
     if (ir_.kind == ModelKind::Continuous) {
-      diagnostics_.error(ir_.range, "model " + quoted(ir_.name) + " has continuous state; it "
-                                    "needs the geometry layer, not exploration");
+      diagnostics_.error(ir_.range, "model " + quoted(ir_.name) +
+                                        " has continuous state; it "
+                                        "needs the geometry layer, not exploration");
       return std::nullopt;
     }
     try {
@@ -48,8 +51,8 @@ class Explorer {
   struct Table {
     const CommandTable* commands = nullptr;
     std::vector<std::vector<const Command*>> by_state;  // [action][state]; explicit only
-    std::unique_ptr<TransitionBuilder> builder;  // the state count is set at the end
-    bool used = false;                           // by some context: only these are explored
+    std::unique_ptr<TransitionBuilder> builder;         // the state count is set at the end
+    bool used = false;                                  // by some context: only these are explored
   };
 
   void prepare_tables() {
@@ -62,7 +65,8 @@ class Explorer {
         check_explicit_size(n, num_actions);
         table.by_state.assign(num_actions, std::vector<const Command*>(n, nullptr));
         for (std::uint32_t a = 0; a < num_actions; ++a) {
-          for (const Command& command : commands.by_action[a]) table.by_state[a][command.guard.slot] = &command;
+          for (const Command& command : commands.by_action[a])
+            table.by_state[a][command.guard.slot] = &command;
         }
       }
       table.builder = std::make_unique<TransitionBuilder>(0, num_actions);
@@ -70,15 +74,15 @@ class Explorer {
     }
     // When every context replaces the model's commands of some action, the model's own table
     // (0) is no context's: the states only it reaches must not join the state space.
-    for (const ContextIR& context : ir_.contexts) tables_.at(context.command_table).used = true;
+    for (const ContextIR& context : ir_.contexts)
+      tables_.at(context.command_table).used = true;
   }
 
   void check_explicit_size(std::size_t states, std::size_t actions) {
     if (states > options_.max_states) {
-      diagnostics_.error(ir_.range, "model lists " + std::to_string(states) +
-                                        " states, more than the limit of " +
-                                        std::to_string(options_.max_states) +
-                                        " (raise it with --max-states)");
+      diagnostics_.error(
+          ir_.range, "model lists " + std::to_string(states) + " states, more than the limit of " +
+                         std::to_string(options_.max_states) + " (raise it with --max-states)");
       throw ExplorationFailed{};
     }
     if (std::uint64_t{states} * actions >= UINT32_MAX) {
@@ -95,7 +99,8 @@ class Explorer {
         intern(state, ir_.range);
       }
     }
-    for (const auto& valuation : ir_.initial) initial_.push_back(intern(valuation, ir_.range));
+    for (const auto& valuation : ir_.initial)
+      initial_.push_back(intern(valuation, ir_.range));
   }
 
   std::uint32_t intern(Valuation valuation, SourceRange cause) {
@@ -123,7 +128,8 @@ class Explorer {
       store_.unpack(s, valuation_);
       for (std::size_t t = 0; t < tables_.size(); ++t) {
         if (!tables_[t].used) continue;
-        for (std::uint32_t a = 0; a < num_actions; ++a) step(t, s, a);
+        for (std::uint32_t a = 0; a < num_actions; ++a)
+          step(t, s, a);
       }
       if (options_.progress && (s & 0xFFFFU) == 0xFFFFU) options_.progress(store_.size(), s + 1);
     }
@@ -163,7 +169,8 @@ class Explorer {
       }
       if (p == RationalPool::kZero) continue;
       successor_ = valuation_;
-      for (const Update& update : outcome.updates) apply(update);
+      for (const Update& update : outcome.updates)
+        apply(update);
       const std::uint32_t target = intern(successor_, outcome.range);
       tables_[t].builder->add(s, a, target, p);
     }
@@ -216,10 +223,10 @@ class Explorer {
     const std::int64_t value = evaluate([&] { return evaluate_int(update.value, valuation_); });
     const DiscreteVariable& var = ir_.variables[update.variable];
     if (value < var.low || value > var.high) {
-      diagnostics_.error(update.range, "update sets " + quoted(var.name) + " to " +
-                                           std::to_string(value) + ", outside its range [" +
-                                           std::to_string(var.low) + " .. " +
-                                           std::to_string(var.high) + "], in state " + state_text());
+      diagnostics_.error(update.range,
+                         "update sets " + quoted(var.name) + " to " + std::to_string(value) +
+                             ", outside its range [" + std::to_string(var.low) + " .. " +
+                             std::to_string(var.high) + "], in state " + state_text());
       throw ExplorationFailed{};
     }
     successor_[update.variable] = value;
@@ -277,11 +284,12 @@ class Explorer {
       space.names = ir_.state_names;
       return;
     }
-    for (const DiscreteVariable& var : ir_.variables) space.variables.push_back(var.name);
+    for (const DiscreteVariable& var : ir_.variables)
+      space.variables.push_back(var.name);
     space.valuations.resize(std::size_t{store_.size()} * ir_.variables.size());
     for (std::uint32_t s = 0; s < store_.size(); ++s) {
-      store_.unpack(s, std::span(space.valuations).subspan(std::size_t{s} * ir_.variables.size(),
-                                                           ir_.variables.size()));
+      store_.unpack(s, std::span(space.valuations)
+                           .subspan(std::size_t{s} * ir_.variables.size(), ir_.variables.size()));
     }
   }
 
@@ -291,15 +299,18 @@ class Explorer {
     RewardTable table;
     table.state.assign(n, RationalPool::kZero);
     bool has_action_rewards = false;
-    for (const Reward& reward : context.rewards) has_action_rewards |= reward.action.has_value();
+    for (const Reward& reward : context.rewards)
+      has_action_rewards |= reward.action.has_value();
     if (has_action_rewards) table.choice.assign(std::size_t{n} * num_actions, RationalPool::kZero);
     for (std::uint32_t s = 0; s < n; ++s) {
       store_.unpack(s, valuation_);
       for (const Reward& reward : context.rewards) {
         if (!evaluate([&] { return evaluate_bool(reward.guard, valuation_); })) continue;
-        ValueId& slot = reward.action ? table.choice[s * num_actions + *reward.action] : table.state[s];
+        ValueId& slot =
+            reward.action ? table.choice[s * num_actions + *reward.action] : table.state[s];
         const Rational value = evaluate([&] { return evaluate_number(reward.value, valuation_); });
-        slot = slot == RationalPool::kZero ? values_.intern(value) : values_.intern(values_[slot] + value);
+        slot = slot == RationalPool::kZero ? values_.intern(value)
+                                           : values_.intern(values_[slot] + value);
       }
     }
     return table;

@@ -19,21 +19,34 @@ std::int64_t checked(const Expression& expr, Operation operation, std::int64_t a
   return result;
 }
 
-bool add(std::int64_t a, std::int64_t b, std::int64_t* r) { return __builtin_add_overflow(a, b, r); }
-bool subtract(std::int64_t a, std::int64_t b, std::int64_t* r) { return __builtin_sub_overflow(a, b, r); }
-bool multiply(std::int64_t a, std::int64_t b, std::int64_t* r) { return __builtin_mul_overflow(a, b, r); }
+bool add(std::int64_t a, std::int64_t b, std::int64_t* r) {
+  return __builtin_add_overflow(a, b, r);
+}
+bool subtract(std::int64_t a, std::int64_t b, std::int64_t* r) {
+  return __builtin_sub_overflow(a, b, r);
+}
+bool multiply(std::int64_t a, std::int64_t b, std::int64_t* r) {
+  return __builtin_mul_overflow(a, b, r);
+}
 
 // Comparison for int64 and exact rationals alike.
 template <typename Number>
 bool compare(Op op, const Number& a, const Number& b) {
   switch (op) {
-    case Op::Equal: return a == b;
-    case Op::NotEqual: return a != b;
-    case Op::Less: return a < b;
-    case Op::LessEqual: return a <= b;
-    case Op::Greater: return a > b;
-    case Op::GreaterEqual: return a >= b;
-    default: return false;
+    case Op::Equal:
+      return a == b;
+    case Op::NotEqual:
+      return a != b;
+    case Op::Less:
+      return a < b;
+    case Op::LessEqual:
+      return a <= b;
+    case Op::Greater:
+      return a > b;
+    case Op::GreaterEqual:
+      return a >= b;
+    default:
+      return false;
   }
 }
 
@@ -49,9 +62,12 @@ std::int64_t to_int64(const Expression& expr, const Rational& value) {
 
 std::string_view describe(Type type) {
   switch (type) {
-    case Type::Bool: return "bool";
-    case Type::Int: return "int";
-    case Type::Real: return "number";
+    case Type::Bool:
+      return "bool";
+    case Type::Int:
+      return "int";
+    case Type::Real:
+      return "number";
   }
   return "?";
 }
@@ -74,11 +90,16 @@ Expression Expression::make_constant(Rational value, Type type, SourceRange rang
 bool evaluate_bool(const Expression& expr, Valuation state) {
   const auto& args = expr.operands;
   switch (expr.op) {
-    case Op::Constant: return expr.constant != 0;
-    case Op::StateIs: return state[0] == static_cast<std::int64_t>(expr.slot);
-    case Op::Not: return !evaluate_bool(args[0], state);
-    case Op::And: return evaluate_bool(args[0], state) && evaluate_bool(args[1], state);
-    case Op::Or: return evaluate_bool(args[0], state) || evaluate_bool(args[1], state);
+    case Op::Constant:
+      return expr.constant != 0;
+    case Op::StateIs:
+      return state[0] == static_cast<std::int64_t>(expr.slot);
+    case Op::Not:
+      return !evaluate_bool(args[0], state);
+    case Op::And:
+      return evaluate_bool(args[0], state) && evaluate_bool(args[1], state);
+    case Op::Or:
+      return evaluate_bool(args[0], state) || evaluate_bool(args[1], state);
     case Op::Equal:
     case Op::NotEqual:
       if (args[0].type == Type::Bool) {
@@ -102,9 +123,12 @@ bool evaluate_bool(const Expression& expr, Valuation state) {
 std::int64_t evaluate_int(const Expression& expr, Valuation state) {
   const auto& args = expr.operands;
   switch (expr.op) {
-    case Op::Constant: return to_int64(expr, expr.constant);
-    case Op::Variable: return state[expr.slot];
-    case Op::Negate: return checked(expr, subtract, 0, evaluate_int(args[0], state));
+    case Op::Constant:
+      return to_int64(expr, expr.constant);
+    case Op::Variable:
+      return state[expr.slot];
+    case Op::Negate:
+      return checked(expr, subtract, 0, evaluate_int(args[0], state));
     case Op::Add:
       return checked(expr, add, evaluate_int(args[0], state), evaluate_int(args[1], state));
     case Op::Subtract:
@@ -157,11 +181,16 @@ Rational evaluate_number(const Expression& expr, Valuation state) {
   const auto& args = expr.operands;
   if (expr.type == Type::Int && expr.op != Op::Constant) return Rational(evaluate_int(expr, state));
   switch (expr.op) {
-    case Op::Constant: return expr.constant;
-    case Op::Negate: return -evaluate_number(args[0], state);
-    case Op::Add: return evaluate_number(args[0], state) + evaluate_number(args[1], state);
-    case Op::Subtract: return evaluate_number(args[0], state) - evaluate_number(args[1], state);
-    case Op::Multiply: return evaluate_number(args[0], state) * evaluate_number(args[1], state);
+    case Op::Constant:
+      return expr.constant;
+    case Op::Negate:
+      return -evaluate_number(args[0], state);
+    case Op::Add:
+      return evaluate_number(args[0], state) + evaluate_number(args[1], state);
+    case Op::Subtract:
+      return evaluate_number(args[0], state) - evaluate_number(args[1], state);
+    case Op::Multiply:
+      return evaluate_number(args[0], state) * evaluate_number(args[1], state);
     case Op::Divide: {
       const Rational divisor = evaluate_number(args[1], state);
       if (divisor == 0) throw EvaluationError(expr.range, "division by zero");
@@ -176,7 +205,8 @@ Rational evaluate_number(const Expression& expr, Valuation state) {
       }
       return best;
     }
-    case Op::Abs: return abs(evaluate_number(args[0], state));
+    case Op::Abs:
+      return abs(evaluate_number(args[0], state));
     default:
       throw EvaluationError(expr.range, "expression cannot be evaluated over a discrete state");
   }

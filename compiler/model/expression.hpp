@@ -25,11 +25,26 @@ enum class Op {
   ContinuousVariable,  // continuous variable `slot` (not evaluable over discrete states)
   StateIs,             // explicit models: "the state is `slot`" (slot 0 holds the state index)
   RegionIs,            // continuous models: "the state lies in region `slot`"
-  Negate, Not,
-  Add, Subtract, Multiply, Divide,
-  Equal, NotEqual, Less, LessEqual, Greater, GreaterEqual,
-  And, Or,
-  Min, Max, Floor, Ceil, Abs, Mod,
+  Negate,
+  Not,
+  Add,
+  Subtract,
+  Multiply,
+  Divide,
+  Equal,
+  NotEqual,
+  Less,
+  LessEqual,
+  Greater,
+  GreaterEqual,
+  And,
+  Or,
+  Min,
+  Max,
+  Floor,
+  Ceil,
+  Abs,
+  Mod,
 };
 
 struct Expression {

@@ -103,9 +103,9 @@ struct ModelIR {
   std::string name;
   SourceRange range;
   ModelKind kind = ModelKind::Explicit;
-  std::vector<std::string> state_names;          // explicit models
-  std::vector<DiscreteVariable> variables;       // explicit models: the hidden state variable
-  std::vector<ContinuousVariable> continuous;    // continuous models
+  std::vector<std::string> state_names;        // explicit models
+  std::vector<DiscreteVariable> variables;     // explicit models: the hidden state variable
+  std::vector<ContinuousVariable> continuous;  // continuous models
   std::vector<std::string> actions;
   std::vector<std::vector<std::int64_t>> initial;  // valuations of the initial states
   MissingPolicy missing = MissingPolicy::Error;

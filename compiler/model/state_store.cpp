@@ -36,7 +36,8 @@ StateStore::StateStore(const std::vector<DiscreteVariable>& variables) {
 }
 
 void StateStore::pack(Valuation valuation, std::span<std::uint64_t> key) const {
-  for (std::uint64_t& w : key) w = 0;
+  for (std::uint64_t& w : key)
+    w = 0;
   for (std::size_t v = 0; v < fields_.size(); ++v) {
     const Field& f = fields_[v];
     key[f.word] |= (static_cast<std::uint64_t>(valuation[v] - f.low) & f.mask) << f.shift;
@@ -53,7 +54,8 @@ void StateStore::unpack(std::uint32_t state, std::span<std::int64_t> valuation) 
 
 std::uint64_t StateStore::hash(std::span<const std::uint64_t> key) const {
   std::uint64_t h = 0x9e3779b97f4a7c15ULL;
-  for (std::uint64_t w : key) h = mix(h ^ w);
+  for (std::uint64_t w : key)
+    h = mix(h ^ w);
   return h;
 }
 
@@ -86,7 +88,8 @@ void StateStore::grow() {
   for (std::uint32_t state = 0; state < count_; ++state) {
     std::span<const std::uint64_t> key(keys_.data() + std::size_t{state} * words_, words_);
     std::size_t i = hash(key) & mask;
-    while (bigger[i] != 0) i = (i + 1) & mask;
+    while (bigger[i] != 0)
+      i = (i + 1) & mask;
     bigger[i] = state + 1;
   }
   slots_ = std::move(bigger);

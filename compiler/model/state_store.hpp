@@ -42,7 +42,7 @@ class StateStore {
   std::vector<Field> fields_;
   std::size_t words_ = 1;
   std::uint32_t count_ = 0;
-  std::vector<std::uint64_t> keys_;  // count_ * words_
+  std::vector<std::uint64_t> keys_;   // count_ * words_
   std::vector<std::uint32_t> slots_;  // state index + 1; 0 marks an empty slot
 };
 

@@ -12,8 +12,8 @@ namespace oasis::model {
 struct ContextStatistics {
   std::uint64_t states = 0;
   std::uint64_t actions = 0;
-  std::uint64_t choices = 0;      // enabled (state, action) pairs
-  std::uint64_t transitions = 0;  // (state, action, successor) with positive probability
+  std::uint64_t choices = 0;           // enabled (state, action) pairs
+  std::uint64_t transitions = 0;       // (state, action, successor) with positive probability
   std::optional<Rational> reward_min;  // over R(s, a) of enabled pairs
   std::optional<Rational> reward_max;
 };

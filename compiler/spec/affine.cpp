@@ -10,7 +10,8 @@ using model::LinearConstraint;
 using model::Op;
 
 AffineForm scaled(AffineForm form, const Rational& factor) {
-  for (Rational& c : form.coefficients) c *= factor;
+  for (Rational& c : form.coefficients)
+    c *= factor;
   form.constant *= factor;
   return form;
 }

@@ -22,10 +22,10 @@ enum class ExprKind { Number, Boolean, Name, Unary, Binary, Call };
 
 struct Expr {
   ExprKind kind = ExprKind::Number;
-  SourceRange range;        // the whole expression
-  std::string_view text;    // Number: its spelling; Name and Call: the name; Boolean: true/false
+  SourceRange range;      // the whole expression
+  std::string_view text;  // Number: its spelling; Name and Call: the name; Boolean: true/false
   TokenKind op = TokenKind::Invalid;  // Unary and Binary
-  SourceRange op_range;     // where the operator is
+  SourceRange op_range;               // where the operator is
   std::vector<std::unique_ptr<Expr>> operands;
   int depth = 1;  // height of the tree; the parser bounds it (kMaxNesting)
 };

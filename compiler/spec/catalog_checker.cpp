@@ -6,7 +6,9 @@
 namespace oasis::spec {
 namespace {
 
-std::string quoted(std::string_view text) { return "'" + std::string(text) + "'"; }
+std::string quoted(std::string_view text) {
+  return "'" + std::string(text) + "'";
+}
 
 // A distribution over contexts, e.g. `0.8: a + 0.2: b`, as one row of N probabilities.
 // Returns false after reporting a problem.
@@ -31,8 +33,9 @@ bool context_distribution(const ast::Distribution& distribution,
       }
       p = *value;
       if (p < 0 || p > 1) {
-        diagnostics.error(branch.probability->range,
-                          "probability " + describe(p) + (p < 0 ? " is negative" : " is greater than 1"));
+        diagnostics.error(
+            branch.probability->range,
+            "probability " + describe(p) + (p < 0 ? " is negative" : " is greater than 1"));
         ok = false;
         continue;
       }
@@ -53,7 +56,8 @@ void stay_matrix(const ast::SwitchingDecl& decl, model::ModelIR& ir, DiagnosticE
   auto stay = expressions.constant_number(*decl.stay, "the probability of staying");
   if (!stay) return;
   if (*stay < 0 || *stay > 1) {
-    diagnostics.error(decl.stay->range, "probability of staying must be in [0, 1], not " + describe(*stay));
+    diagnostics.error(decl.stay->range,
+                      "probability of staying must be in [0, 1], not " + describe(*stay));
     return;
   }
   if (n == 1 && *stay != 1) {
@@ -63,11 +67,13 @@ void stay_matrix(const ast::SwitchingDecl& decl, model::ModelIR& ir, DiagnosticE
   // Stay with probability p, otherwise move to one of the other N-1 contexts uniformly.
   const Rational move = n > 1 ? (1 - *stay) / Rational(static_cast<long>(n - 1)) : Rational(0);
   ir.switching.matrix.assign(n * n, move);
-  for (std::size_t i = 0; i < n; ++i) ir.switching.matrix[i * n + i] = *stay;
+  for (std::size_t i = 0; i < n; ++i)
+    ir.switching.matrix[i * n + i] = *stay;
 }
 
 void matrix_rows(const ast::SwitchingDecl& decl, const NameTable<std::uint32_t>& contexts,
-                 model::ModelIR& ir, DiagnosticEngine& diagnostics, ExpressionChecker& expressions) {
+                 model::ModelIR& ir, DiagnosticEngine& diagnostics,
+                 ExpressionChecker& expressions) {
   const std::size_t n = ir.contexts.size();
   ir.switching.matrix.assign(n * n, 0);
   std::vector<const ast::Name*> given(n, nullptr);
@@ -85,13 +91,14 @@ void matrix_rows(const ast::SwitchingDecl& decl, const NameTable<std::uint32_t>&
     given[entry->value] = &from;
     std::vector<Rational> row(n);
     if (context_distribution(distribution, contexts, row, diagnostics, expressions)) {
-      for (std::size_t j = 0; j < n; ++j) ir.switching.matrix[entry->value * n + j] = row[j];
+      for (std::size_t j = 0; j < n; ++j)
+        ir.switching.matrix[entry->value * n + j] = row[j];
     }
   }
   for (std::size_t i = 0; i < n; ++i) {
     if (given[i] == nullptr) {
-      diagnostics.error(decl.range, "switching model has no row for context " +
-                                        quoted(ir.contexts[i].name));
+      diagnostics.error(decl.range,
+                        "switching model has no row for context " + quoted(ir.contexts[i].name));
     }
   }
 }
@@ -118,11 +125,13 @@ void check_switching_and_prior(const ast::CatalogDecl& catalog,
 
   if (!catalog.prior || catalog.prior->uniform) {
     ir.switching.prior.assign(n, Rational(1, static_cast<long>(n)));
-    for (Rational& p : ir.switching.prior) p.canonicalize();
+    for (Rational& p : ir.switching.prior)
+      p.canonicalize();
     return;
   }
   std::vector<Rational> prior(n);
-  if (context_distribution(catalog.prior->distribution, contexts, prior, diagnostics, expressions)) {
+  if (context_distribution(catalog.prior->distribution, contexts, prior, diagnostics,
+                           expressions)) {
     ir.switching.prior = std::move(prior);
   }
 }

@@ -20,7 +20,9 @@ using model::ModelKind;
 using model::Op;
 using model::Type;
 
-std::string quoted(std::string_view text) { return "'" + std::string(text) + "'"; }
+std::string quoted(std::string_view text) {
+  return "'" + std::string(text) + "'";
+}
 
 // A catalog holds at most this many contexts: the filter's cost grows with N^2.
 constexpr std::size_t kMaxContexts = 4096;
@@ -83,8 +85,9 @@ class Checker {
       return nullptr;
     }
     for (std::size_t i = 1; i < spec_.mdps.size(); ++i) {
-      diagnostics_.error(spec_.mdps[i].name.range, "a spec holds one 'mdp'; contexts of the same "
-                                                   "model go in its 'catalog'");
+      diagnostics_.error(spec_.mdps[i].name.range,
+                         "a spec holds one 'mdp'; contexts of the same "
+                         "model go in its 'catalog'");
     }
     for (std::size_t i = 1; i < spec_.catalogs.size(); ++i) {
       diagnostics_.error(spec_.catalogs[i].range, "a spec holds at most one 'catalog'");
@@ -96,7 +99,8 @@ class Checker {
     const bool has_states = !mdp.states.empty();
     const ast::VarDecl* discrete = nullptr;
     const ast::VarDecl* continuous = nullptr;
-    for (const auto& var : mdp.variables) (var.continuous ? continuous : discrete) = &var;
+    for (const auto& var : mdp.variables)
+      (var.continuous ? continuous : discrete) = &var;
     if (has_states && (discrete || continuous)) {
       const auto& var = discrete ? *discrete : *continuous;
       diagnostics_.error(var.range, "a model lists its states or declares variables, not both");
@@ -113,8 +117,8 @@ class Checker {
                                              "declare variables with 'var' or 'continuous'");
       return false;
     }
-    ir_.kind = has_states ? ModelKind::Explicit
-                          : (discrete ? ModelKind::Factored : ModelKind::Continuous);
+    ir_.kind =
+        has_states ? ModelKind::Explicit : (discrete ? ModelKind::Factored : ModelKind::Continuous);
     return true;
   }
 
@@ -148,9 +152,15 @@ class Checker {
 
   void declare_states_or_variables(const ast::MdpDecl& mdp) {
     switch (ir_.kind) {
-      case ModelKind::Explicit: declare_states(mdp); break;
-      case ModelKind::Factored: declare_discrete_variables(mdp); break;
-      case ModelKind::Continuous: declare_continuous_variables(mdp); break;
+      case ModelKind::Explicit:
+        declare_states(mdp);
+        break;
+      case ModelKind::Factored:
+        declare_discrete_variables(mdp);
+        break;
+      case ModelKind::Continuous:
+        declare_continuous_variables(mdp);
+        break;
     }
     if (ir_.kind != ModelKind::Explicit && !mdp.initial.empty()) {
       diagnostics_.error(mdp.initial.front().range,
@@ -208,8 +218,8 @@ class Checker {
         continue;
       }
       if (static_cast<__int128>(*high) - *low >= kMaxVariableRange) {
-        diagnostics_.error(var.range, "range of " + quoted(var.name.text) +
-                                          " is too large (at most 2^40 values)");
+        diagnostics_.error(
+            var.range, "range of " + quoted(var.name.text) + " is too large (at most 2^40 values)");
         continue;
       }
       std::int64_t init = *low;
@@ -218,9 +228,8 @@ class Checker {
         if (!value) continue;
         if (*value < *low || *value > *high) {
           diagnostics_.error(var.init->range, "initial value " + std::to_string(*value) +
-                                                  " is outside the range [" +
-                                                  std::to_string(*low) + " .. " +
-                                                  std::to_string(*high) + "]");
+                                                  " is outside the range [" + std::to_string(*low) +
+                                                  " .. " + std::to_string(*high) + "]");
           continue;
         }
         init = *value;
@@ -256,8 +265,9 @@ class Checker {
   void declare_regions(const ast::MdpDecl& mdp) {
     for (const ast::RegionDecl& region : mdp.regions) {
       if (ir_.kind != ModelKind::Continuous) {
-        diagnostics_.error(region.name.range, "regions describe continuous state; this model has "
-                                              "no continuous variables");
+        diagnostics_.error(region.name.range,
+                           "regions describe continuous state; this model has "
+                           "no continuous variables");
         continue;
       }
       const ExpressionRules rules{.continuous = true, .regions = true, .place = "in a region"};
@@ -274,22 +284,25 @@ class Checker {
       Symbol symbol{SymbolKind::Region, index, Type::Bool, 0, region.name.range};
       if (scope_.declare(region.name.text, region.name.range, std::move(symbol), "name",
                          diagnostics_)) {
-        ir_.regions.push_back({std::string(region.name.text), std::move(*constraints), region.range});
+        ir_.regions.push_back(
+            {std::string(region.name.text), std::move(*constraints), region.range});
       }
     }
   }
 
   void check_settings(const ast::MdpDecl& mdp) {
-    if (mdp.missing == ast::MissingTransitions::SelfLoop) ir_.missing = model::MissingPolicy::SelfLoop;
-    if (mdp.missing == ast::MissingTransitions::Disabled) ir_.missing = model::MissingPolicy::Disabled;
+    if (mdp.missing == ast::MissingTransitions::SelfLoop)
+      ir_.missing = model::MissingPolicy::SelfLoop;
+    if (mdp.missing == ast::MissingTransitions::Disabled)
+      ir_.missing = model::MissingPolicy::Disabled;
     if (mdp.discount && mdp.horizon) {
       diagnostics_.error(mdp.horizon->range, "give a 'discount' or a 'horizon', not both");
     }
     if (mdp.discount) {
       auto value = expressions_.constant_number(*mdp.discount->value, "the discount");
       if (value && (*value <= 0 || *value > 1)) {
-        diagnostics_.error(mdp.discount->value->range, "discount must be in (0, 1], not " +
-                                                           describe(*value));
+        diagnostics_.error(mdp.discount->value->range,
+                           "discount must be in (0, 1], not " + describe(*value));
       } else if (value) {
         ir_.objective.discount = *value;
       }
@@ -319,11 +332,14 @@ class Checker {
     lowered.commands_by_action.resize(ir_.actions.size());
     lowered.overrides_action.assign(ir_.actions.size(), false);
     lowered.dynamics.resize(ir_.actions.size());
-    for (const auto& transition : body.transitions) lower_explicit_transition(transition, lowered);
-    for (const auto& command : body.commands) lower_command(command, lowered);
+    for (const auto& transition : body.transitions)
+      lower_explicit_transition(transition, lowered);
+    for (const auto& command : body.commands)
+      lower_command(command, lowered);
     for (const auto& reward : body.rewards) {
       lowered.has_rewards = true;
-      if (auto lowered_reward = lower_reward(reward)) lowered.rewards.push_back(std::move(*lowered_reward));
+      if (auto lowered_reward = lower_reward(reward))
+        lowered.rewards.push_back(std::move(*lowered_reward));
     }
     // Disturbances outside a dynamics block hold for every block of this body. They are
     // checked here, once: checked per block, a mistake in one was reported once per block,
@@ -343,7 +359,8 @@ class Checker {
       }
     }
     if (!is_context) model_disturbances_ = shared;
-    for (const auto& dynamics : body.dynamics) lower_dynamics(dynamics, shared, lowered);
+    for (const auto& dynamics : body.dynamics)
+      lower_dynamics(dynamics, shared, lowered);
     lowered.empty = body.transitions.empty() && body.commands.empty() && body.rewards.empty() &&
                     body.dynamics.empty() && body.disturbances.empty();
     return lowered;
@@ -352,8 +369,9 @@ class Checker {
   void lower_explicit_transition(const ast::ExplicitTransition& transition,
                                  LoweredBehaviour& lowered) {
     if (ir_.kind != ModelKind::Explicit) {
-      diagnostics_.error(transition.range, "'state, action -> ...' transitions belong to models "
-                                           "that list their states; use '[action] guard -> ...'");
+      diagnostics_.error(transition.range,
+                         "'state, action -> ...' transitions belong to models "
+                         "that list their states; use '[action] guard -> ...'");
       return;
     }
     auto state = resolve_state(transition.state);
@@ -425,8 +443,9 @@ class Checker {
 
   void lower_command(const ast::Command& command, LoweredBehaviour& lowered) {
     if (ir_.kind != ModelKind::Factored) {
-      diagnostics_.error(command.range, "'[action] guard -> ...' commands belong to models with "
-                                        "'var' variables");
+      diagnostics_.error(command.range,
+                         "'[action] guard -> ...' commands belong to models with "
+                         "'var' variables");
       return;
     }
     auto action = resolve_action(command.action);
@@ -438,14 +457,16 @@ class Checker {
       auto probability = branch_probability(branch);
       auto updates = lower_updates(branch.updates);
       if (!probability || !updates) return;
-      lowered_command.outcomes.push_back({std::move(*probability), std::move(*updates), branch.range});
+      lowered_command.outcomes.push_back(
+          {std::move(*probability), std::move(*updates), branch.range});
     }
     if (!check_distribution(lowered_command.outcomes, command.distribution.range)) return;
     lowered.overrides_action[*action] = true;
     lowered.commands_by_action[*action].push_back(std::move(lowered_command));
   }
 
-  std::optional<std::vector<model::Update>> lower_updates(const std::vector<ast::Assignment>& updates) {
+  std::optional<std::vector<model::Update>> lower_updates(
+      const std::vector<ast::Assignment>& updates) {
     std::vector<model::Update> lowered;
     std::vector<const ast::Assignment*> seen(ir_.variables.size(), nullptr);
     bool ok = true;
@@ -453,8 +474,8 @@ class Checker {
       const auto* entry = scope_.find(update.variable.text);
       if (entry == nullptr || entry->value.kind != SymbolKind::Variable) {
         diagnostics_.error(update.variable.range,
-                           (entry ? std::string(describe(entry->value.kind)) + " " + quoted(update.variable.text) +
-                                        " cannot be updated"
+                           (entry ? std::string(describe(entry->value.kind)) + " " +
+                                        quoted(update.variable.text) + " cannot be updated"
                                   : "unknown variable " + quoted(update.variable.text)));
         ok = false;
         continue;
@@ -475,10 +496,10 @@ class Checker {
         continue;
       }
       if (value->type != Type::Int) {
-        diagnostics_.error(update.value->range,
-                           "integer variable " + quoted(update.variable.text) + " needs an int, not a " +
-                               std::string(model::describe(value->type)) +
-                               " (round with floor() or ceil())");
+        diagnostics_.error(update.value->range, "integer variable " + quoted(update.variable.text) +
+                                                    " needs an int, not a " +
+                                                    std::string(model::describe(value->type)) +
+                                                    " (round with floor() or ceil())");
         ok = false;
         continue;
       }
@@ -494,9 +515,10 @@ class Checker {
     if (!value.is_constant()) return;
     const model::DiscreteVariable& var = ir_.variables[slot];
     if (value.constant < var.low || value.constant > var.high) {
-      diagnostics_.error(value.range, "value " + describe(value.constant) + " is outside the range [" +
-                                          std::to_string(var.low) + " .. " +
-                                          std::to_string(var.high) + "] of " + quoted(var.name));
+      diagnostics_.error(value.range, "value " + describe(value.constant) +
+                                          " is outside the range [" + std::to_string(var.low) +
+                                          " .. " + std::to_string(var.high) + "] of " +
+                                          quoted(var.name));
     }
   }
 
@@ -509,15 +531,19 @@ class Checker {
       reward.action = *action;
     }
     const bool continuous = ir_.kind == ModelKind::Continuous;
-    const ExpressionRules guard_rules{.discrete_state = !continuous, .continuous = continuous,
-                                      .regions = continuous, .place = "in a reward condition"};
-    auto guard = expressions_.check_typed(*item.guard, guard_rules, Type::Bool, "a reward condition");
+    const ExpressionRules guard_rules{.discrete_state = !continuous,
+                                      .continuous = continuous,
+                                      .regions = continuous,
+                                      .place = "in a reward condition"};
+    auto guard =
+        expressions_.check_typed(*item.guard, guard_rules, Type::Bool, "a reward condition");
     const ExpressionRules value_rules{.discrete_state = !continuous, .place = "in a reward value"};
     auto value = expressions_.check_typed(*item.value, value_rules, Type::Real, "a reward value");
     if (!guard || !value) return std::nullopt;
     if (continuous && !polyhedral_constraints(*guard, ir_.continuous.size(), ir_.regions)) {
-      diagnostics_.error(item.guard->range, "a continuous reward condition must be a conjunction "
-                                            "of regions and linear inequalities");
+      diagnostics_.error(item.guard->range,
+                         "a continuous reward condition must be a conjunction "
+                         "of regions and linear inequalities");
       return std::nullopt;
     }
     reward.guard = std::move(*guard);
@@ -528,15 +554,16 @@ class Checker {
   void lower_dynamics(const ast::Dynamics& dynamics, const std::vector<LoweredDisturbance>& shared,
                       LoweredBehaviour& lowered) {
     if (ir_.kind != ModelKind::Continuous) {
-      diagnostics_.error(dynamics.range, "'dynamics' blocks belong to models with continuous "
-                                         "variables");
+      diagnostics_.error(dynamics.range,
+                         "'dynamics' blocks belong to models with continuous "
+                         "variables");
       return;
     }
     auto action = resolve_action(dynamics.action);
     if (!action) return;
     if (lowered.dynamics[*action]) {
-      diagnostics_.error(dynamics.range, "action " + quoted(dynamics.action.text) +
-                                             " already has dynamics here");
+      diagnostics_.error(dynamics.range,
+                         "action " + quoted(dynamics.action.text) + " already has dynamics here");
       diagnostics_.note(lowered.dynamics[*action]->range, "first dynamics here");
       return;
     }
@@ -578,8 +605,9 @@ class Checker {
     if (!value) return false;
     auto form = affine_form(*value, ir_.continuous.size());
     if (!form) {
-      diagnostics_.error(equation.value->range, "dynamics must be affine: a sum of constants "
-                                                "times variables, plus a constant");
+      diagnostics_.error(equation.value->range,
+                         "dynamics must be affine: a sum of constants "
+                         "times variables, plus a constant");
       return false;
     }
     affine.matrix[slot] = std::move(form->coefficients);
@@ -594,9 +622,10 @@ class Checker {
                          "unknown continuous variable " + quoted(disturbance.variable.text));
       return std::nullopt;
     }
-    auto first = expressions_.constant_number(*disturbance.first, disturbance.gaussian ? "a mean" : "a bound");
-    auto second = expressions_.constant_number(*disturbance.second,
-                                               disturbance.gaussian ? "a standard deviation" : "a bound");
+    auto first = expressions_.constant_number(*disturbance.first,
+                                              disturbance.gaussian ? "a mean" : "a bound");
+    auto second = expressions_.constant_number(
+        *disturbance.second, disturbance.gaussian ? "a standard deviation" : "a bound");
     if (!first || !second) return std::nullopt;
     if (disturbance.gaussian && *second <= 0) {
       diagnostics_.error(disturbance.second->range, "standard deviation must be positive");
@@ -639,7 +668,8 @@ class Checker {
     affine.matrix.assign(n, std::vector<Rational>(n));
     affine.offset.assign(n, 0);
     affine.disturbance.assign(n, {});
-    for (std::size_t i = 0; i < n; ++i) affine.matrix[i][i] = 1;
+    for (std::size_t i = 0; i < n; ++i)
+      affine.matrix[i][i] = 1;
     for (const LoweredDisturbance& disturbance : model_disturbances_) {
       affine.disturbance[disturbance.variable] = disturbance.model;
     }

@@ -11,22 +11,36 @@ using model::Expression;
 using model::Op;
 using model::Type;
 
-bool is_numeric(Type type) { return type == Type::Int || type == Type::Real; }
+bool is_numeric(Type type) {
+  return type == Type::Int || type == Type::Real;
+}
 
 Op binary_op(TokenKind kind) {
   switch (kind) {
-    case TokenKind::Plus: return Op::Add;
-    case TokenKind::Minus: return Op::Subtract;
-    case TokenKind::Star: return Op::Multiply;
-    case TokenKind::Slash: return Op::Divide;
-    case TokenKind::Equal: return Op::Equal;
-    case TokenKind::NotEqual: return Op::NotEqual;
-    case TokenKind::Less: return Op::Less;
-    case TokenKind::LessEqual: return Op::LessEqual;
-    case TokenKind::Greater: return Op::Greater;
-    case TokenKind::GreaterEqual: return Op::GreaterEqual;
-    case TokenKind::And: return Op::And;
-    default: return Op::Or;
+    case TokenKind::Plus:
+      return Op::Add;
+    case TokenKind::Minus:
+      return Op::Subtract;
+    case TokenKind::Star:
+      return Op::Multiply;
+    case TokenKind::Slash:
+      return Op::Divide;
+    case TokenKind::Equal:
+      return Op::Equal;
+    case TokenKind::NotEqual:
+      return Op::NotEqual;
+    case TokenKind::Less:
+      return Op::Less;
+    case TokenKind::LessEqual:
+      return Op::LessEqual;
+    case TokenKind::Greater:
+      return Op::Greater;
+    case TokenKind::GreaterEqual:
+      return Op::GreaterEqual;
+    case TokenKind::And:
+      return Op::And;
+    default:
+      return Op::Or;
   }
 }
 
@@ -38,12 +52,14 @@ struct Builtin {
 };
 
 constexpr std::array kBuiltins = {
-    Builtin{"min", Op::Min, 1, 16}, Builtin{"max", Op::Max, 1, 16},
+    Builtin{"min", Op::Min, 1, 16},    Builtin{"max", Op::Max, 1, 16},
     Builtin{"floor", Op::Floor, 1, 1}, Builtin{"ceil", Op::Ceil, 1, 1},
-    Builtin{"abs", Op::Abs, 1, 1}, Builtin{"mod", Op::Mod, 2, 2},
+    Builtin{"abs", Op::Abs, 1, 1},     Builtin{"mod", Op::Mod, 2, 2},
 };
 
-std::string quoted(std::string_view text) { return "'" + std::string(text) + "'"; }
+std::string quoted(std::string_view text) {
+  return "'" + std::string(text) + "'";
+}
 
 // "a bool", "an int", "a number".
 std::string with_article(Type type) {
@@ -54,11 +70,16 @@ std::string with_article(Type type) {
 
 std::string_view describe(SymbolKind kind) {
   switch (kind) {
-    case SymbolKind::Constant: return "constant";
-    case SymbolKind::Variable: return "variable";
-    case SymbolKind::ContinuousVariable: return "continuous variable";
-    case SymbolKind::State: return "state";
-    case SymbolKind::Region: return "region";
+    case SymbolKind::Constant:
+      return "constant";
+    case SymbolKind::Variable:
+      return "variable";
+    case SymbolKind::ContinuousVariable:
+      return "continuous variable";
+    case SymbolKind::State:
+      return "state";
+    case SymbolKind::Region:
+      return "region";
   }
   return "name";
 }
@@ -79,10 +100,14 @@ std::optional<Expression> ExpressionChecker::check(const ast::Expr& expr,
     case ast::ExprKind::Boolean:
       return Expression::make_constant(Rational(expr.text == "true" ? 1 : 0), Type::Bool,
                                        expr.range);
-    case ast::ExprKind::Name: return name(expr, rules);
-    case ast::ExprKind::Unary: return unary(expr, rules);
-    case ast::ExprKind::Binary: return binary(expr, rules);
-    case ast::ExprKind::Call: return call(expr, rules);
+    case ast::ExprKind::Name:
+      return name(expr, rules);
+    case ast::ExprKind::Unary:
+      return unary(expr, rules);
+    case ast::ExprKind::Binary:
+      return binary(expr, rules);
+    case ast::ExprKind::Call:
+      return call(expr, rules);
   }
   return std::nullopt;
 }
@@ -282,8 +307,9 @@ std::optional<std::int64_t> ExpressionChecker::constant_integer(const ast::Expr&
   auto value = constant_number(expr, what);
   if (!value) return std::nullopt;
   if (value->get_den() != 1 || !value->get_num().fits_slong_p()) {
-    diagnostics_.error(expr.range, std::string(what) + " must be an integer that fits in 64 bits, not " +
-                                       describe(*value));
+    diagnostics_.error(
+        expr.range,
+        std::string(what) + " must be an integer that fits in 64 bits, not " + describe(*value));
     return std::nullopt;
   }
   return value->get_num().get_si();

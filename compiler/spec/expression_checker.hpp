@@ -14,9 +14,9 @@ namespace oasis::spec {
 
 // What an expression may refer to where it appears.
 struct ExpressionRules {
-  bool discrete_state = false;  // discrete variables and explicit state names
-  bool continuous = false;      // continuous variables
-  bool regions = false;         // region names
+  bool discrete_state = false;      // discrete variables and explicit state names
+  bool continuous = false;          // continuous variables
+  bool regions = false;             // region names
   std::string_view place = "here";  // for messages: "in a constant", "in a guard", ...
 };
 

@@ -39,15 +39,17 @@ constexpr std::array kKeywords = {
 bool is_identifier_start(char c) {
   return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || c == '_';
 }
-bool is_digit(char c) { return c >= '0' && c <= '9'; }
-bool is_identifier_char(char c) { return is_identifier_start(c) || is_digit(c); }
+bool is_digit(char c) {
+  return c >= '0' && c <= '9';
+}
+bool is_identifier_char(char c) {
+  return is_identifier_start(c) || is_digit(c);
+}
 
 class Lexer {
  public:
   Lexer(FileId file, DiagnosticEngine& diagnostics)
-      : file_(file),
-        text_(diagnostics.sources().file(file).text()),
-        diagnostics_(diagnostics) {}
+      : file_(file), text_(diagnostics.sources().file(file).text()), diagnostics_(diagnostics) {}
 
   std::vector<Token> run() {
     std::vector<Token> tokens;
@@ -77,7 +79,8 @@ class Lexer {
       if (c == ' ' || c == '\t' || c == '\n' || c == '\r' || c == '\f' || c == '\v') {
         ++pos_;
       } else if (c == '/' && peek(1) == '/') {
-        while (pos_ < text_.size() && text_[pos_] != '\n') ++pos_;
+        while (pos_ < text_.size() && text_[pos_] != '\n')
+          ++pos_;
       } else if (c == '/' && peek(1) == '*') {
         skip_block_comment();
       } else {
@@ -108,7 +111,8 @@ class Lexer {
   }
 
   Token identifier(std::size_t begin) {
-    while (pos_ < text_.size() && is_identifier_char(text_[pos_])) ++pos_;
+    while (pos_ < text_.size() && is_identifier_char(text_[pos_]))
+      ++pos_;
     const std::string_view word = text_.substr(begin, pos_ - begin);
     for (const Keyword& keyword : kKeywords) {
       if (keyword.spelling == word) return make(keyword.kind, begin, pos_);
@@ -119,19 +123,23 @@ class Lexer {
   // digits [ '.' digits ] [ ('e'|'E') ['+'|'-'] digits ]. A '.' is a decimal point only
   // when a digit follows, so that `0..9` lexes as 0 .. 9.
   Token number(std::size_t begin) {
-    while (is_digit(peek())) ++pos_;
+    while (is_digit(peek()))
+      ++pos_;
     if (peek() == '.' && is_digit(peek(1))) {
       ++pos_;
-      while (is_digit(peek())) ++pos_;
+      while (is_digit(peek()))
+        ++pos_;
     }
     if ((peek() == 'e' || peek() == 'E') &&
         (is_digit(peek(1)) || ((peek(1) == '+' || peek(1) == '-') && is_digit(peek(2))))) {
       pos_ += 2;
-      while (is_digit(peek())) ++pos_;
+      while (is_digit(peek()))
+        ++pos_;
     }
     if (is_identifier_start(peek())) {
       std::size_t end = pos_;
-      while (end < text_.size() && is_identifier_char(text_[end])) ++end;
+      while (end < text_.size() && is_identifier_char(text_[end]))
+        ++end;
       diagnostics_.error(SourceRange{{file_, static_cast<std::uint32_t>(begin)},
                                      static_cast<std::uint32_t>(end - begin)},
                          "invalid number '" + std::string(text_.substr(begin, end - begin)) +
@@ -150,27 +158,48 @@ class Lexer {
     const char c = peek();
     const char d = peek(1);
     switch (c) {
-      case '{': return take(1, TokenKind::LeftBrace);
-      case '}': return take(1, TokenKind::RightBrace);
-      case '[': return take(1, TokenKind::LeftBracket);
-      case ']': return take(1, TokenKind::RightBracket);
-      case '(': return take(1, TokenKind::LeftParen);
-      case ')': return take(1, TokenKind::RightParen);
-      case ',': return take(1, TokenKind::Comma);
-      case ';': return take(1, TokenKind::Semicolon);
-      case ':': return take(1, TokenKind::Colon);
-      case '\'': return take(1, TokenKind::Prime);
-      case '+': return take(1, TokenKind::Plus);
-      case '*': return take(1, TokenKind::Star);
-      case '/': return take(1, TokenKind::Slash);
-      case '&': return take(d == '&' ? 2 : 1, TokenKind::And);
-      case '|': return take(d == '|' ? 2 : 1, TokenKind::Or);
-      case '~': return take(1, TokenKind::Tilde);
-      case '-': return d == '>' ? take(2, TokenKind::Arrow) : take(1, TokenKind::Minus);
-      case '=': return d == '=' ? take(2, TokenKind::Equal) : take(1, TokenKind::Assign);
-      case '!': return d == '=' ? take(2, TokenKind::NotEqual) : take(1, TokenKind::Not);
-      case '<': return d == '=' ? take(2, TokenKind::LessEqual) : take(1, TokenKind::Less);
-      case '>': return d == '=' ? take(2, TokenKind::GreaterEqual) : take(1, TokenKind::Greater);
+      case '{':
+        return take(1, TokenKind::LeftBrace);
+      case '}':
+        return take(1, TokenKind::RightBrace);
+      case '[':
+        return take(1, TokenKind::LeftBracket);
+      case ']':
+        return take(1, TokenKind::RightBracket);
+      case '(':
+        return take(1, TokenKind::LeftParen);
+      case ')':
+        return take(1, TokenKind::RightParen);
+      case ',':
+        return take(1, TokenKind::Comma);
+      case ';':
+        return take(1, TokenKind::Semicolon);
+      case ':':
+        return take(1, TokenKind::Colon);
+      case '\'':
+        return take(1, TokenKind::Prime);
+      case '+':
+        return take(1, TokenKind::Plus);
+      case '*':
+        return take(1, TokenKind::Star);
+      case '/':
+        return take(1, TokenKind::Slash);
+      case '&':
+        return take(d == '&' ? 2 : 1, TokenKind::And);
+      case '|':
+        return take(d == '|' ? 2 : 1, TokenKind::Or);
+      case '~':
+        return take(1, TokenKind::Tilde);
+      case '-':
+        return d == '>' ? take(2, TokenKind::Arrow) : take(1, TokenKind::Minus);
+      case '=':
+        return d == '=' ? take(2, TokenKind::Equal) : take(1, TokenKind::Assign);
+      case '!':
+        return d == '=' ? take(2, TokenKind::NotEqual) : take(1, TokenKind::Not);
+      case '<':
+        return d == '=' ? take(2, TokenKind::LessEqual) : take(1, TokenKind::Less);
+      case '>':
+        return d == '=' ? take(2, TokenKind::GreaterEqual) : take(1, TokenKind::Greater);
       case '.':
         if (d == '.') return take(2, TokenKind::DotDot);
         break;
@@ -183,7 +212,8 @@ class Lexer {
   Token invalid_character(std::size_t begin) {
     // Take the whole UTF-8 sequence so the message shows the character, not a byte.
     std::size_t end = begin + 1;
-    while (end < text_.size() && (static_cast<unsigned char>(text_[end]) & 0xC0U) == 0x80U) ++end;
+    while (end < text_.size() && (static_cast<unsigned char>(text_[end]) & 0xC0U) == 0x80U)
+      ++end;
     pos_ = end;
     const std::string_view character = text_.substr(begin, end - begin);
     std::string message = "unexpected character '" + std::string(character) + "'";
@@ -202,37 +232,68 @@ class Lexer {
 
 std::string_view describe(TokenKind kind) {
   switch (kind) {
-    case TokenKind::EndOfFile: return "end of file";
-    case TokenKind::Identifier: return "name";
-    case TokenKind::Number: return "number";
-    case TokenKind::LeftBrace: return "'{'";
-    case TokenKind::RightBrace: return "'}'";
-    case TokenKind::LeftBracket: return "'['";
-    case TokenKind::RightBracket: return "']'";
-    case TokenKind::LeftParen: return "'('";
-    case TokenKind::RightParen: return "')'";
-    case TokenKind::Comma: return "','";
-    case TokenKind::Semicolon: return "';'";
-    case TokenKind::Colon: return "':'";
-    case TokenKind::Prime: return "'''";
-    case TokenKind::Assign: return "'='";
-    case TokenKind::Equal: return "'=='";
-    case TokenKind::NotEqual: return "'!='";
-    case TokenKind::Less: return "'<'";
-    case TokenKind::LessEqual: return "'<='";
-    case TokenKind::Greater: return "'>'";
-    case TokenKind::GreaterEqual: return "'>='";
-    case TokenKind::Plus: return "'+'";
-    case TokenKind::Minus: return "'-'";
-    case TokenKind::Star: return "'*'";
-    case TokenKind::Slash: return "'/'";
-    case TokenKind::And: return "'&'";
-    case TokenKind::Or: return "'|'";
-    case TokenKind::Not: return "'!'";
-    case TokenKind::Arrow: return "'->'";
-    case TokenKind::DotDot: return "'..'";
-    case TokenKind::Tilde: return "'~'";
-    case TokenKind::Invalid: return "invalid token";
+    case TokenKind::EndOfFile:
+      return "end of file";
+    case TokenKind::Identifier:
+      return "name";
+    case TokenKind::Number:
+      return "number";
+    case TokenKind::LeftBrace:
+      return "'{'";
+    case TokenKind::RightBrace:
+      return "'}'";
+    case TokenKind::LeftBracket:
+      return "'['";
+    case TokenKind::RightBracket:
+      return "']'";
+    case TokenKind::LeftParen:
+      return "'('";
+    case TokenKind::RightParen:
+      return "')'";
+    case TokenKind::Comma:
+      return "','";
+    case TokenKind::Semicolon:
+      return "';'";
+    case TokenKind::Colon:
+      return "':'";
+    case TokenKind::Prime:
+      return "'''";
+    case TokenKind::Assign:
+      return "'='";
+    case TokenKind::Equal:
+      return "'=='";
+    case TokenKind::NotEqual:
+      return "'!='";
+    case TokenKind::Less:
+      return "'<'";
+    case TokenKind::LessEqual:
+      return "'<='";
+    case TokenKind::Greater:
+      return "'>'";
+    case TokenKind::GreaterEqual:
+      return "'>='";
+    case TokenKind::Plus:
+      return "'+'";
+    case TokenKind::Minus:
+      return "'-'";
+    case TokenKind::Star:
+      return "'*'";
+    case TokenKind::Slash:
+      return "'/'";
+    case TokenKind::And:
+      return "'&'";
+    case TokenKind::Or:
+      return "'|'";
+    case TokenKind::Not:
+      return "'!'";
+    case TokenKind::Arrow:
+      return "'->'";
+    case TokenKind::DotDot:
+      return "'..'";
+    case TokenKind::Tilde:
+      return "'~'";
+    case TokenKind::Invalid:
+      return "invalid token";
     default:
       break;
   }

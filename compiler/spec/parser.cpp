@@ -221,8 +221,10 @@ class Parser {
         return;
       default:
         if (!behaviour_item(decl.behaviour)) {
-          fail(token, "expected a model item (states, actions, var, a transition, reward, ...), "
-                      "found " + found(token));
+          fail(token,
+               "expected a model item (states, actions, var, a transition, reward, ...), "
+               "found " +
+                   found(token));
         }
     }
   }
@@ -578,19 +580,25 @@ class Parser {
 
   static int precedence(TokenKind kind) {
     switch (kind) {
-      case TokenKind::Or: return 1;
-      case TokenKind::And: return 2;
+      case TokenKind::Or:
+        return 1;
+      case TokenKind::And:
+        return 2;
       case TokenKind::Equal:
       case TokenKind::NotEqual:
       case TokenKind::Less:
       case TokenKind::LessEqual:
       case TokenKind::Greater:
-      case TokenKind::GreaterEqual: return 4;
+      case TokenKind::GreaterEqual:
+        return 4;
       case TokenKind::Plus:
-      case TokenKind::Minus: return 5;
+      case TokenKind::Minus:
+        return 5;
       case TokenKind::Star:
-      case TokenKind::Slash: return 6;
-      default: return 0;
+      case TokenKind::Slash:
+        return 6;
+      default:
+        return 0;
     }
   }
 
@@ -731,8 +739,7 @@ class Parser {
 
 }  // namespace
 
-ast::SpecFile parse(FileId file, const std::vector<Token>& tokens,
-                    DiagnosticEngine& diagnostics) {
+ast::SpecFile parse(FileId file, const std::vector<Token>& tokens, DiagnosticEngine& diagnostics) {
   return Parser(file, tokens, diagnostics).run();
 }
 

@@ -19,7 +19,9 @@ std::string_view label(Severity severity) {
   return "error";
 }
 
-bool is_continuation_byte(char c) { return (static_cast<unsigned char>(c) & 0xC0U) == 0x80U; }
+bool is_continuation_byte(char c) {
+  return (static_cast<unsigned char>(c) & 0xC0U) == 0x80U;
+}
 
 // Byte offset of the code point that starts at `column` (1-based) within `line`.
 std::size_t byte_of_column(std::string_view line, std::uint32_t column) {
@@ -41,9 +43,11 @@ void print_snippet(std::ostream& out, std::string_view line, std::uint32_t colum
   std::string_view prefix_mark;
   if (line.size() > kMaxShownColumns) {
     std::size_t start = caret_byte > kMaxShownColumns / 2 ? caret_byte - kMaxShownColumns / 2 : 0;
-    while (start > 0 && start < line.size() && is_continuation_byte(line[start])) --start;
+    while (start > 0 && start < line.size() && is_continuation_byte(line[start]))
+      --start;
     std::size_t end = std::min(line.size(), start + kMaxShownColumns);
-    while (end < line.size() && is_continuation_byte(line[end])) ++end;
+    while (end < line.size() && is_continuation_byte(line[end]))
+      ++end;
     shown = line.substr(start, end - start);
     caret_byte -= start;
     if (start > 0) prefix_mark = "...";

@@ -34,8 +34,12 @@ class DiagnosticEngine {
   void error(SourceRange where, std::string_view message);
   void warning(SourceRange where, std::string_view message);
   void note(SourceRange where, std::string_view message);
-  void error(SourceLocation where, std::string_view message) { error(SourceRange{where, 1}, message); }
-  void note(SourceLocation where, std::string_view message) { note(SourceRange{where, 1}, message); }
+  void error(SourceLocation where, std::string_view message) {
+    error(SourceRange{where, 1}, message);
+  }
+  void note(SourceLocation where, std::string_view message) {
+    note(SourceRange{where, 1}, message);
+  }
 
   // For problems that belong to a file but to no place in it (cannot open, too large).
   void file_error(std::string_view path, std::string_view message);

@@ -8,7 +8,9 @@
 namespace oasis {
 namespace {
 
-bool is_digit(char c) { return c >= '0' && c <= '9'; }
+bool is_digit(char c) {
+  return c >= '0' && c <= '9';
+}
 
 // Exponents beyond this are refused: 10^100000 has ~330k bits, which is already absurd for a
 // probability and keeps hostile input from asking GMP for gigabytes.
@@ -26,7 +28,8 @@ std::optional<Rational> parse_decimal(std::string_view text) {
   std::size_t i = 0;
   std::string digits;
   long scale = 0;  // number of digits after the point
-  while (i < text.size() && is_digit(text[i])) digits += text[i++];
+  while (i < text.size() && is_digit(text[i]))
+    digits += text[i++];
   if (i < text.size() && text[i] == '.') {
     ++i;
     while (i < text.size() && is_digit(text[i])) {
@@ -76,9 +79,13 @@ std::optional<Rational> parse_rational(std::string_view text) {
   return value;
 }
 
-std::string to_string(const Rational& value) { return value.get_str(10); }
+std::string to_string(const Rational& value) {
+  return value.get_str(10);
+}
 
-double to_double(const Rational& value) { return value.get_d(); }
+double to_double(const Rational& value) {
+  return value.get_d();
+}
 
 std::string describe(const Rational& value) {
   if (value.get_den() == 1) return to_string(value);
@@ -99,7 +106,8 @@ std::size_t hash_value(const Rational& value) {
     }
     return seed;
   };
-  return hash_integer(value.get_den_mpz_t(), hash_integer(value.get_num_mpz_t(), 0xcbf29ce484222325ULL));
+  return hash_integer(value.get_den_mpz_t(),
+                      hash_integer(value.get_num_mpz_t(), 0xcbf29ce484222325ULL));
 }
 
 RationalPool::RationalPool() {

@@ -3,8 +3,6 @@
 // parsing and printing of the notations specs and model files use: integers, decimals with
 // an optional exponent (`0.125`, `1e-3`) and fractions (`1/3`).
 
-#include <gmpxx.h>
-
 #include <cstddef>
 #include <cstdint>
 #include <optional>
@@ -12,6 +10,8 @@
 #include <string_view>
 #include <unordered_map>
 #include <vector>
+
+#include <gmpxx.h>
 
 namespace oasis {
 

@@ -1,8 +1,7 @@
-#include <optional>
-
 #include "verify/bisimulation_check.hpp"
 
 #include <algorithm>
+#include <optional>
 #include <vector>
 
 #include "verify/block_distribution.hpp"
@@ -43,8 +42,10 @@ Rational probability_of(const std::vector<std::pair<bisim::BlockIndex, Rational>
 
 // States with no enabled action have no R(s, a); their state reward R(s), the reward for
 // being in s, must agree instead.
-std::optional<Violation> deadlock_reward_violation(const model::ExplicitModel& model, std::size_t context,
-                                                   const bisim::Partition& partition, const Pair& pair) {
+std::optional<Violation> deadlock_reward_violation(const model::ExplicitModel& model,
+                                                   std::size_t context,
+                                                   const bisim::Partition& partition,
+                                                   const Pair& pair) {
   const model::TransitionMatrix& matrix = *model.contexts[context].transitions;
   for (ActionIndex a = 0; a < model.num_actions(); ++a) {
     if (matrix.enabled(pair.first, a)) return std::nullopt;
@@ -54,8 +55,9 @@ std::optional<Violation> deadlock_reward_violation(const model::ExplicitModel& m
   const Rational& other = model.values[rewards[pair.other]];
   if (first == other) return std::nullopt;
   Violation v = pair_violation(model, partition, ViolationKind::RewardDiffers, pair, std::nullopt);
-  v.message += "neither has an enabled action, and R(" + model.states.name(pair.first) + ") = " +
-               describe(first) + " while R(" + model.states.name(pair.other) + ") = " + describe(other);
+  v.message += "neither has an enabled action, and R(" + model.states.name(pair.first) +
+               ") = " + describe(first) + " while R(" + model.states.name(pair.other) +
+               ") = " + describe(other);
   return v;
 }
 
@@ -93,7 +95,8 @@ VerificationResult check_bisimulation(const model::ExplicitModel& model, std::si
           return {std::move(v)};
         }
       }
-      if (auto v = deadlock_reward_violation(model, context, partition, pair)) return {std::move(*v)};
+      if (auto v = deadlock_reward_violation(model, context, partition, pair))
+        return {std::move(*v)};
     }
   }
 

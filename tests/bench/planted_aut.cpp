@@ -27,7 +27,8 @@ namespace {
 
 constexpr int kActions = 4;
 constexpr int kTargets = 3;
-constexpr std::array<std::array<int, kTargets>, 4> kEighths = {{{4, 2, 2}, {2, 2, 4}, {1, 3, 4}, {6, 1, 1}}};
+constexpr std::array<std::array<int, kTargets>, 4> kEighths = {
+    {{4, 2, 2}, {2, 2, 4}, {1, 3, 4}, {6, 1, 1}}};
 
 struct Options {
   std::uint64_t transitions = 1'000'000;  // action transitions: states * 4
@@ -43,7 +44,9 @@ struct BlockChoice {
 };
 
 [[noreturn]] void usage(const char* message) {
-  std::fprintf(stderr, "oasis-planted: %s\nusage: oasis-planted [--transitions N] [--blocks K] [--seed S] -o FILE.aut\n",
+  std::fprintf(stderr,
+               "oasis-planted: %s\nusage: oasis-planted [--transitions N] [--blocks K] [--seed S] "
+               "-o FILE.aut\n",
                message);
   std::exit(2);
 }
@@ -101,14 +104,16 @@ std::uint32_t minimal_blocks(const std::vector<BlockChoice>& quotient, std::uint
       for (int a = 0; a < kActions; ++a) {
         const BlockChoice& choice = quotient[std::size_t{z} * kActions + a];
         std::map<std::uint32_t, int> mass;
-        for (int k = 0; k < kTargets; ++k) mass[label[choice.target[k]]] += choice.eighths[k];
+        for (int k = 0; k < kTargets; ++k)
+          mass[label[choice.target[k]]] += choice.eighths[k];
         signature.push_back(-1 - choice.reward);
         for (const auto& [target, eighths] : mass) {
           signature.push_back(target);
           signature.push_back(eighths);
         }
       }
-      next[z] = signatures.try_emplace(signature, static_cast<std::uint32_t>(signatures.size())).first->second;
+      next[z] = signatures.try_emplace(signature, static_cast<std::uint32_t>(signatures.size()))
+                    .first->second;
     }
     const auto new_count = static_cast<std::uint32_t>(signatures.size());
     label.swap(next);
@@ -138,7 +143,8 @@ class Writer {
       digits[length++] = static_cast<char>('0' + n % 10);
       n /= 10;
     } while (n != 0);
-    while (length > 0) buffer_.push_back(digits[--length]);
+    while (length > 0)
+      buffer_.push_back(digits[--length]);
     if (buffer_.size() > (1 << 22) - 256) flush();
   }
 
@@ -151,9 +157,9 @@ class Writer {
   std::string buffer_;
 };
 
-const char* kLabels[2][kActions] = {{"\"a\"", "\"b\"", "\"c\"", "\"d\""},
-                                    {"\"a|reward(1)\"", "\"b|reward(1)\"", "\"c|reward(1)\"",
-                                     "\"d|reward(1)\""}};
+const char* kLabels[2][kActions] = {
+    {"\"a\"", "\"b\"", "\"c\"", "\"d\""},
+    {"\"a|reward(1)\"", "\"b|reward(1)\"", "\"c|reward(1)\"", "\"d|reward(1)\""}};
 const char* kFractions[9] = {"0", "1/8", "1/4", "3/8", "1/2", "5/8", "3/4", "7/8", "1"};
 
 }  // namespace

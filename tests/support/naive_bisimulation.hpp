@@ -36,7 +36,8 @@ inline bisim::Partition naive_bisimulation(const model::ExplicitModel& model, st
     }
     // No enabled action: the state reward R(s) still tells the state apart (action k
     // stands for "no action").
-    if (key.second.empty()) key.second.emplace_back(k, model.values[model.contexts[context].rewards.state[s]]);
+    if (key.second.empty())
+      key.second.emplace_back(k, model.values[model.contexts[context].rewards.state[s]]);
     labels[s] = initial.try_emplace(key, static_cast<std::uint32_t>(initial.size())).first->second;
   }
   bisim::Partition partition = bisim::canonical_partition(labels);

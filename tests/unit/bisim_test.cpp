@@ -3,10 +3,10 @@
 // denominators force exact rational sums, the --epsilon mode, and quotients that survive an
 // export to .aut and PRISM files and an import.
 
-#include <gtest/gtest.h>
-
 #include <filesystem>
 #include <sstream>
+
+#include <gtest/gtest.h>
 
 #include "../support/naive_bisimulation.hpp"
 #include "../support/random_mdp.hpp"
@@ -47,26 +47,32 @@ ExplicitModel explore_file(const std::string& path) {
   return std::move(*model);
 }
 
-std::vector<std::vector<std::string>> named_blocks(const ExplicitModel& model, const Partition& partition) {
+std::vector<std::vector<std::string>> named_blocks(const ExplicitModel& model,
+                                                   const Partition& partition) {
   std::vector<std::vector<std::string>> result;
   for (const auto& block : partition.blocks()) {
     result.emplace_back();
-    for (model::StateIndex s : block) result.back().push_back(model.states.name(s));
+    for (model::StateIndex s : block)
+      result.back().push_back(model.states.name(s));
   }
   return result;
 }
 
 TEST(Bisimulation, PaperExampleGivesTheTwoAbstractions) {
-  const ExplicitModel model = explore_file(std::string(OASIS_SOURCE_DIR) + "/specs/discrete_tracking.oasis");
+  const ExplicitModel model =
+      explore_file(std::string(OASIS_SOURCE_DIR) + "/specs/discrete_tracking.oasis");
   ASSERT_EQ(model.contexts[0].name, "object_at_s3");
   ASSERT_EQ(model.contexts[1].name, "object_at_s1");
   using Blocks = std::vector<std::vector<std::string>>;
-  EXPECT_EQ(named_blocks(model, bisim::coarsest_bisimulation(model, 0)), (Blocks{{"s1", "s2"}, {"s3"}}));
-  EXPECT_EQ(named_blocks(model, bisim::coarsest_bisimulation(model, 1)), (Blocks{{"s1"}, {"s2", "s3"}}));
+  EXPECT_EQ(named_blocks(model, bisim::coarsest_bisimulation(model, 0)),
+            (Blocks{{"s1", "s2"}, {"s3"}}));
+  EXPECT_EQ(named_blocks(model, bisim::coarsest_bisimulation(model, 1)),
+            (Blocks{{"s1"}, {"s2", "s3"}}));
 }
 
 TEST(Bisimulation, QuotientOfThePaperExample) {
-  const ExplicitModel model = explore_file(std::string(OASIS_SOURCE_DIR) + "/specs/discrete_tracking.oasis");
+  const ExplicitModel model =
+      explore_file(std::string(OASIS_SOURCE_DIR) + "/specs/discrete_tracking.oasis");
   const Partition partition = bisim::coarsest_bisimulation(model, 0);
   const ExplicitModel quotient = bisim::build_quotient(model, 0, partition);
   ASSERT_EQ(quotient.num_states(), 2U);
@@ -76,7 +82,8 @@ TEST(Bisimulation, QuotientOfThePaperExample) {
   // 1/2; s2: to s3 with 1/2); L stays in z0.
   const model::ActionIndex right = 1;
   ASSERT_EQ(matrix.edges_end(0, right) - matrix.edges_begin(0, right), 2U);
-  EXPECT_EQ(quotient.values[matrix.edge_probability[matrix.edges_begin(0, right) + 1]], Rational(1, 2));
+  EXPECT_EQ(quotient.values[matrix.edge_probability[matrix.edges_begin(0, right) + 1]],
+            Rational(1, 2));
   EXPECT_EQ(quotient.reward(0, 1, 0), 1);
   EXPECT_EQ(quotient.reward(0, 0, 0), 0);
 }
@@ -181,7 +188,8 @@ TEST(Bisimulation, ImportedModelsGiveTheSameQuotient) {
         DiagnosticEngine diagnostics(sources, messages);
         const auto imported = formats::read_model_file(prism + ".tra", sources, diagnostics, {});
         ASSERT_TRUE(imported) << messages.str();
-        EXPECT_EQ(bisim::coarsest_bisimulation(*imported, 0).block_of, original.block_of) << "seed " << seed;
+        EXPECT_EQ(bisim::coarsest_bisimulation(*imported, 0).block_of, original.block_of)
+            << "seed " << seed;
         ++prism_compared;
       }
       // .aut cannot carry the state reward of a state with no enabled action
@@ -189,7 +197,8 @@ TEST(Bisimulation, ImportedModelsGiveTheSameQuotient) {
       bool has_deadlock = false;
       for (model::StateIndex s = 0; s < model.num_states(); ++s) {
         bool any = false;
-        for (model::ActionIndex a = 0; a < model.num_actions(); ++a) any |= model.contexts[c].transitions->enabled(s, a);
+        for (model::ActionIndex a = 0; a < model.num_actions(); ++a)
+          any |= model.contexts[c].transitions->enabled(s, a);
         has_deadlock |= !any;
       }
       if (has_deadlock || !formats::write_aut_file(model, c, aut, error)) continue;
@@ -200,7 +209,8 @@ TEST(Bisimulation, ImportedModelsGiveTheSameQuotient) {
       ASSERT_TRUE(imported) << messages.str();
       if (imported->num_states() != model.num_states()) continue;  // trailing unreached states
       // Actions are renumbered by appearance in .aut; the partition does not depend on it.
-      EXPECT_EQ(bisim::coarsest_bisimulation(*imported, 0).block_of, original.block_of) << "seed " << seed;
+      EXPECT_EQ(bisim::coarsest_bisimulation(*imported, 0).block_of, original.block_of)
+          << "seed " << seed;
       ++aut_compared;
     }
   }

@@ -896,19 +896,19 @@ TEST(Checker, ContextDynamicsReplaceTheBaseForTheirAction) {
 // blocks (unless they say otherwise), and actions left to `default self;`.
 TEST(Checker, ModelDisturbanceHoldsForEveryAction) {
   using Kind = model::DisturbanceModel::Kind;
-  const ModelIR ir = expect_ok(with_catalog(
-      "mdp m {\n"
-      "  continuous x : [0 .. 1];\n"
-      "  continuous y : [0 .. 1];\n"
-      "  actions go, stop, turn;\n"
-      "  default self;\n"
-      "  disturbance x in [-0.1 .. 0.1];\n"
-      "  dynamics [go] { x' = x + 0.1; }\n"
-      "}\n",
-      "context windy { dynamics [go] { x' = x + 0.2; } dynamics [turn] { y' = 1 - y;\n"
-      "    disturbance x ~ gaussian(0, 0.5); } }\n"
-      "context calm = base;\n"
-      "switching stay 0.5;"));
+  const ModelIR ir = expect_ok(
+      with_catalog("mdp m {\n"
+                   "  continuous x : [0 .. 1];\n"
+                   "  continuous y : [0 .. 1];\n"
+                   "  actions go, stop, turn;\n"
+                   "  default self;\n"
+                   "  disturbance x in [-0.1 .. 0.1];\n"
+                   "  dynamics [go] { x' = x + 0.1; }\n"
+                   "}\n",
+                   "context windy { dynamics [go] { x' = x + 0.2; } dynamics [turn] { y' = 1 - y;\n"
+                   "    disturbance x ~ gaussian(0, 0.5); } }\n"
+                   "context calm = base;\n"
+                   "switching stay 0.5;"));
   for (const auto& context : ir.contexts) {
     for (std::size_t a = 0; a < 3; ++a) {
       ASSERT_TRUE(context.dynamics[a]) << context.name << " action " << a;
@@ -921,8 +921,8 @@ TEST(Checker, ModelDisturbanceHoldsForEveryAction) {
   EXPECT_EQ(windy[0]->disturbance[0].second, Rational(1, 10));
   EXPECT_EQ(windy[2]->disturbance[0].kind, Kind::Gaussian);  // the block's own wins
   const auto& calm = ir.contexts[1].dynamics;
-  EXPECT_EQ(calm[1]->matrix[0][0], 1);                      // `stop` has no block: x' = x
-  EXPECT_EQ(calm[1]->disturbance[0].kind, Kind::Bounded);   // ... and is disturbed too
+  EXPECT_EQ(calm[1]->matrix[0][0], 1);                     // `stop` has no block: x' = x
+  EXPECT_EQ(calm[1]->disturbance[0].kind, Kind::Bounded);  // ... and is disturbed too
   EXPECT_EQ(calm[1]->disturbance[0].first, Rational(-1, 10));
 }
 

@@ -1,15 +1,15 @@
 // End-to-end tests of the oasisc command line: exit statuses, JSON output, help, and the
 // errors for files that cannot be read.
 
-#include <gtest/gtest.h>
-#include <sys/wait.h>
-
 #include <array>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
-#include <nlohmann/json.hpp>
 #include <string>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+#include <sys/wait.h>
 
 namespace {
 
@@ -25,13 +25,16 @@ Result run(const std::string& arguments) {
   if (pipe == nullptr) return result;
   std::array<char, 4096> buffer{};
   std::size_t count = 0;
-  while ((count = std::fread(buffer.data(), 1, buffer.size(), pipe)) > 0) result.output.append(buffer.data(), count);
+  while ((count = std::fread(buffer.data(), 1, buffer.size(), pipe)) > 0)
+    result.output.append(buffer.data(), count);
   const int status = ::pclose(pipe);
   result.status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
   return result;
 }
 
-std::string spec(const std::string& name) { return std::string(OASIS_SOURCE_DIR) + "/specs/" + name; }
+std::string spec(const std::string& name) {
+  return std::string(OASIS_SOURCE_DIR) + "/specs/" + name;
+}
 
 std::filesystem::path write_temp(const std::string& name, const std::string& text) {
   const auto path = std::filesystem::temp_directory_path() / ("oasis_cli_test_" + name);
@@ -125,7 +128,8 @@ TEST(Cli, StateLimitIsAnError) {
 
 TEST(Cli, ErrorLimitStopsTheFlood) {
   std::string text = "mdp m { states a; actions go; a, go -> a;\n";
-  for (int i = 0; i < 50; ++i) text += "  reward nowhere" + std::to_string(i) + " : 1;\n";
+  for (int i = 0; i < 50; ++i)
+    text += "  reward nowhere" + std::to_string(i) + " : 1;\n";
   text += "}\n";
   const auto path = write_temp("flood.oasis", text);
   const Result result = run("check --max-errors 5 " + path.string());

@@ -2,12 +2,12 @@
 // of every discrete spec comes back with the same states, the same exact distributions and
 // the same rewards R(s, a). Actions are compared by name (.aut numbers them by appearance).
 
-#include <gtest/gtest.h>
-
 #include <algorithm>
 #include <filesystem>
 #include <sstream>
 #include <string>
+
+#include <gtest/gtest.h>
 
 #include "formats/aut_writer.hpp"
 #include "formats/model_file.hpp"
@@ -79,7 +79,8 @@ void expect_same_context(const ExplicitModel& original, std::size_t c, const Exp
   const auto& b = *copy.contexts[0].transitions;
   for (model::ActionIndex action = 0; action < original.num_actions(); ++action) {
     // .aut only lists actions that occur; an action never enabled cannot come back.
-    const auto found = std::find(copy.actions.begin(), copy.actions.end(), original.actions[action]);
+    const auto found =
+        std::find(copy.actions.begin(), copy.actions.end(), original.actions[action]);
     const bool ever_enabled = [&] {
       for (model::StateIndex s = 0; s < original.num_states(); ++s) {
         if (a.enabled(s, action)) return true;
@@ -94,7 +95,8 @@ void expect_same_context(const ExplicitModel& original, std::size_t c, const Exp
       if (!a.enabled(s, action)) continue;
       ASSERT_EQ(a.edges_end(s, action) - a.edges_begin(s, action),
                 b.edges_end(s, other) - b.edges_begin(s, other));
-      for (auto e = a.edges_begin(s, action), f = b.edges_begin(s, other); e < a.edges_end(s, action); ++e, ++f) {
+      for (auto e = a.edges_begin(s, action), f = b.edges_begin(s, other);
+           e < a.edges_end(s, action); ++e, ++f) {
         EXPECT_EQ(a.edge_target[e], b.edge_target[f]);
         EXPECT_EQ(original.values[a.edge_probability[e]], copy.values[b.edge_probability[f]]);
       }
@@ -107,9 +109,10 @@ void expect_same_context(const ExplicitModel& original, std::size_t c, const Exp
 class RoundTrip : public ::testing::Test {
  protected:
   void SetUp() override {
-    directory_ = std::filesystem::temp_directory_path() /
-                 ("oasis_roundtrip_" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()) +
-                  "_" + ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    directory_ =
+        std::filesystem::temp_directory_path() /
+        ("oasis_roundtrip_" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()) +
+         "_" + ::testing::UnitTest::GetInstance()->current_test_info()->name());
     std::filesystem::create_directories(directory_);
   }
   void TearDown() override { std::filesystem::remove_all(directory_); }
@@ -136,7 +139,8 @@ class RoundTrip : public ::testing::Test {
 };
 
 TEST_F(RoundTrip, DiscreteTrackingSpec) {
-  const ExplicitModel model = explore_file(std::string(OASIS_SOURCE_DIR) + "/specs/discrete_tracking.oasis");
+  const ExplicitModel model =
+      explore_file(std::string(OASIS_SOURCE_DIR) + "/specs/discrete_tracking.oasis");
   ASSERT_EQ(model.contexts.size(), 2U);
   check_all_contexts(model);
 }

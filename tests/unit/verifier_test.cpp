@@ -360,7 +360,8 @@ mdp stuck {
 }
 )");
   expect_accepted(model, 0, partition_of(model, {{"start"}, {"d1"}, {"d2", "d3"}}));
-  const verify::VerificationResult merged = verify::verify_partition(model, 0, partition_of(model, {{"start"}, {"d1", "d2", "d3"}}));
+  const verify::VerificationResult merged =
+      verify::verify_partition(model, 0, partition_of(model, {{"start"}, {"d1", "d2", "d3"}}));
   ASSERT_FALSE(merged.ok());
   EXPECT_EQ(merged.violation->kind, ViolationKind::RewardDiffers);
   EXPECT_FALSE(merged.violation->action.has_value());
