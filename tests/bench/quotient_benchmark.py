@@ -1,11 +1,18 @@
 #!/usr/bin/env python3
-"""Bisimulation benchmark: planted-structure .aut models (oasis-planted) at 10^4, 10^5,
-10^6 and 10^7 action transitions (4 actions, 3 probabilistic edges each), each run end to end
-as `oasisc quotient IN.aut --format aut -o OUT.aut -j 1`: read, refine, write the quotient.
-Checks that the block count equals the planted one, and prints seconds, peak RSS, blocks and
-time / (m log2 n) so growth can be compared with m log n.
+"""Bisimulation benchmark at 10^4, 10^5, 10^6 and 10^7 action transitions, single core, each
+run end to end with `oasisc quotient ... -j 1`. Three families, each with a known answer:
 
-    tests/bench/quotient_benchmark.py --build build/default [--sizes 4,5,6,7] [--blocks 1000]
+  planted  random .aut models from oasis-planted (4 actions, 3 probabilistic edges each) whose
+           coarsest bisimulation the generator computes independently; read, refine, write.
+  grid     a factored N x N slippery grid (4 actions) rewarded on its last column: y is
+           irrelevant, so the answer is N blocks (attention: forget y). Explore and refine.
+  queue    two symmetric bounded queues (1 action, 4 outcomes), reward q1 + q2: mirrored
+           states merge, so the answer is (N+1)(N+2)/2 blocks. Explore and refine.
+
+Prints seconds, peak RSS, blocks and time / (m log2 n) so growth can be compared with m log n;
+fails when a block count differs from the known answer.
+
+    tests/bench/quotient_benchmark.py --build build/default [--family all] [--sizes 4,5,6,7]
 """
 import argparse
 import math
@@ -30,43 +37,105 @@ def run_timed(command):
     return float(seconds), int(rss_kb) / 1024, rest
 
 
+GRID = """mdp grid {{
+  const N = {side};
+  var x : [0 .. N-1];
+  var y : [0 .. N-1];
+  actions left, right, up, down;
+  default self;
+  [left]  x > 0     -> 0.9: (x' = x - 1) + 0.1: true;
+  [right] x < N - 1 -> 0.9: (x' = x + 1) + 0.1: true;
+  [down]  y > 0     -> 0.9: (y' = y - 1) + 0.1: true;
+  [up]    y < N - 1 -> 0.9: (y' = y + 1) + 0.1: true;
+  reward x == N - 1 : 1;
+}}
+"""
+
+QUEUE = """mdp queues {{
+  const N = {side};
+  var q1 : [0 .. N];
+  var q2 : [0 .. N];
+  actions tick;
+  [tick] true -> 1/4: (q1' = min(q1 + 1, N)) + 1/4: (q2' = min(q2 + 1, N))
+              + 1/4: (q1' = max(q1 - 1, 0)) + 1/4: (q2' = max(q2 - 1, 0));
+  reward true : q1 + q2;
+}}
+"""
+
+
+def summary_figures(output):
+    match = re.search(r"^\s+default\s+(\d+)\s+(\d+)\s+(\d+)", output, re.M)
+    return tuple(int(g) for g in match.groups())
+
+
+def report(family, transitions, states, edges, expected, blocks, prepare, seconds, peak):
+    per = seconds / (transitions * math.log2(max(states, 2))) * 1e9
+    print(f"{family:>8} {transitions:>12} {states:>10} {edges:>10} {expected:>8} {blocks:>8} "
+          f"{prepare:>7.1f} {seconds:>8.2f} {peak:>9.0f} {per:>13.2f}")
+    if blocks != expected:
+        raise SystemExit(f"{family}: block count {blocks} differs from the known {expected}")
+
+
+def run_planted(args, oasisc, planted, directory, exponent):
+    transitions = 10 ** exponent
+    source = os.path.join(directory, f"planted_{exponent}.aut")
+    target = os.path.join(directory, f"quotient_{exponent}.aut")
+    started = time.perf_counter()
+    generated = subprocess.run([planted, "--transitions", str(transitions), "--blocks",
+                                str(min(args.blocks, transitions // 8)), "--seed",
+                                str(args.seed), "-o", source],
+                               capture_output=True, text=True, check=True)
+    prepare = time.perf_counter() - started
+    seconds, peak, output = run_timed([oasisc, "quotient", source, "--format", "aut", "-o",
+                                       target, "-j", "1", "--progress", "never",
+                                       "--max-states", "100000000"])
+    states, edges, blocks = summary_figures(output)
+    report("planted", transitions, states, edges, int(generated.stdout.strip()), blocks, prepare,
+           seconds, peak)
+    os.remove(source)
+    os.remove(target)
+
+
+def run_factored(family, oasisc, directory, exponent):
+    transitions = 10 ** exponent
+    if family == "grid":
+        side = max(2, round(math.sqrt(transitions / 4)))
+        text, expected = GRID.format(side=side), side
+    else:
+        side = max(1, round(math.sqrt(transitions)) - 1)
+        text, expected = QUEUE.format(side=side), (side + 1) * (side + 2) // 2
+    path = os.path.join(directory, f"{family}_{exponent}.oasis")
+    with open(path, "w", encoding="utf-8") as handle:
+        handle.write(text)
+    seconds, peak, output = run_timed([oasisc, "quotient", path, "-j", "1", "--progress", "never",
+                                       "--max-states", "100000000"])
+    states, edges, blocks = summary_figures(output)
+    actions = 4 if family == "grid" else 1
+    report(family, states * actions, states, edges, expected, blocks, 0.0, seconds, peak)
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--build", default="build/default")
+    parser.add_argument("--family", default="all", choices=["all", "planted", "grid", "queue"])
     parser.add_argument("--sizes", default="4,5,6,7", help="exponents of 10 (action transitions)")
-    parser.add_argument("--blocks", type=int, default=1000)
+    parser.add_argument("--blocks", type=int, default=1000, help="planted blocks")
     parser.add_argument("--seed", type=int, default=1)
     args = parser.parse_args()
     oasisc = os.path.join(args.build, "compiler", "oasisc")
     planted = os.path.join(args.build, "tests", "oasis-planted")
-    print(f"# quotient benchmark (planted .aut), {os.cpu_count()} cores, {time.strftime('%Y-%m-%d')}, "
-          f"-j 1, {args.blocks} planted blocks")
-    print(f"{'transitions':>12} {'states':>10} {'edges':>10} {'planted':>8} {'blocks':>8} "
-          f"{'gen s':>7} {'total s':>8} {'peak MiB':>9} {'ns/(m log n)':>13}")
+    families = ["planted", "grid", "queue"] if args.family == "all" else [args.family]
+    print(f"# quotient benchmark, {os.cpu_count()} cores, {time.strftime('%Y-%m-%d')}, -j 1, "
+          f"planted: {args.blocks} blocks")
+    print(f"{'family':>8} {'transitions':>12} {'states':>10} {'edges':>10} {'known':>8} "
+          f"{'blocks':>8} {'prep s':>7} {'total s':>8} {'peak MiB':>9} {'ns/(m log n)':>13}")
     with tempfile.TemporaryDirectory() as directory:
-        for exponent in (int(e) for e in args.sizes.split(",")):
-            transitions = 10 ** exponent
-            source = os.path.join(directory, f"planted_{exponent}.aut")
-            target = os.path.join(directory, f"quotient_{exponent}.aut")
-            started = time.perf_counter()
-            generated = subprocess.run([planted, "--transitions", str(transitions), "--blocks",
-                                        str(min(args.blocks, transitions // 8)), "--seed",
-                                        str(args.seed), "-o", source],
-                                       capture_output=True, text=True, check=True)
-            generate_seconds = time.perf_counter() - started
-            expected = int(generated.stdout.strip())
-            seconds, peak, output = run_timed([oasisc, "quotient", source, "--format", "aut", "-o",
-                                               target, "-j", "1", "--progress", "never",
-                                               "--max-states", "100000000"])
-            match = re.search(r"^\s+default\s+(\d+)\s+(\d+)\s+(\d+)", output, re.M)
-            states, edges, blocks = (int(g) for g in match.groups())
-            per = seconds / (transitions * math.log2(max(states, 2))) * 1e9
-            print(f"{transitions:>12} {states:>10} {edges:>10} {expected:>8} {blocks:>8} "
-                  f"{generate_seconds:>7.1f} {seconds:>8.2f} {peak:>9.0f} {per:>13.2f}")
-            if blocks != expected:
-                raise SystemExit(f"block count {blocks} differs from the planted {expected}")
-            os.remove(source)
-            os.remove(target)
+        for family in families:
+            for exponent in (int(e) for e in args.sizes.split(",")):
+                if family == "planted":
+                    run_planted(args, oasisc, planted, directory, exponent)
+                else:
+                    run_factored(family, oasisc, directory, exponent)
     return 0
 
 
