@@ -4,19 +4,12 @@
 #include <limits>
 #include <unordered_map>
 
+#include "support/hash.hpp"
+
 namespace oasis::bisim {
 namespace {
 
 constexpr std::uint32_t kDisabled = std::numeric_limits<std::uint32_t>::max();
-
-std::uint64_t mix(std::uint64_t x) {
-  x ^= x >> 30U;
-  x *= 0xbf58476d1ce4e5b9ULL;
-  x ^= x >> 27U;
-  x *= 0x94d049bb133111ebULL;
-  x ^= x >> 31U;
-  return x;
-}
 
 // Numbers R(s, a) = state reward + choice reward. Rewards are few distinct values, so the
 // sum is computed once per pair of value ids rather than once per (state, action).
@@ -82,10 +75,10 @@ InitialBlocks blocks_by_rewards(const model::ExplicitModel& model, std::size_t c
       const bool enabled = matrix.enabled(s, a);
       any_enabled |= enabled;
       signature[a] = enabled ? rewards.id(s, a) : kDisabled;
-      hash = mix(hash ^ signature[a]);
+      hash = mix_bits(hash ^ signature[a]);
     }
     signature[num_actions] = any_enabled ? kDisabled : rewards.state_only(s);
-    hash = mix(hash ^ signature[num_actions]);
+    hash = mix_bits(hash ^ signature[num_actions]);
     auto& candidates = seen[hash];
     std::uint32_t block = kDisabled;
     for (const auto& [other, index] : candidates) {

@@ -44,6 +44,7 @@
 
 #include "bisim/initial_partition.hpp"
 #include "bisim/weights.hpp"
+#include "support/hash.hpp"
 
 namespace oasis::bisim {
 namespace {
@@ -54,15 +55,6 @@ using model::EdgeIndex;
 using model::StateIndex;
 
 constexpr std::uint32_t kNone = std::numeric_limits<std::uint32_t>::max();
-
-std::uint64_t mix(std::uint64_t x) {
-  x ^= x >> 30U;
-  x *= 0xbf58476d1ce4e5b9ULL;
-  x ^= x >> 27U;
-  x *= 0x94d049bb133111ebULL;
-  x ^= x >> 31U;
-  return x;
-}
 
 class Stopwatch {
  public:
@@ -440,10 +432,10 @@ class Refiner {
 
   [[nodiscard]] std::uint64_t signature_hash(BlockIndex block,
                                              const std::vector<SignatureEntry>& signature) const {
-    std::uint64_t hash = mix(block + 0x9e3779b97f4a7c15ULL);
+    std::uint64_t hash = mix_bits(block + 0x9e3779b97f4a7c15ULL);
     for (const SignatureEntry& entry : signature) {
-      hash = mix(hash ^ entry.action ^ (std::uint64_t{entry.splitter} << 32U)) ^
-             mix(entry_hash(entry));
+      hash = mix_bits(hash ^ entry.action ^ (std::uint64_t{entry.splitter} << 32U)) ^
+             mix_bits(entry_hash(entry));
     }
     return hash;
   }

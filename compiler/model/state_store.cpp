@@ -3,19 +3,9 @@
 #include <bit>
 #include <stdexcept>
 
+#include "support/hash.hpp"
+
 namespace oasis::model {
-namespace {
-
-std::uint64_t mix(std::uint64_t x) {  // splitmix64 finaliser: cheap and well distributed
-  x ^= x >> 30U;
-  x *= 0xbf58476d1ce4e5b9ULL;
-  x ^= x >> 27U;
-  x *= 0x94d049bb133111ebULL;
-  x ^= x >> 31U;
-  return x;
-}
-
-}  // namespace
 
 StateStore::StateStore(const std::vector<DiscreteVariable>& variables) {
   std::size_t word = 0;
@@ -55,7 +45,7 @@ void StateStore::unpack(std::uint32_t state, std::span<std::int64_t> valuation) 
 std::uint64_t StateStore::hash(std::span<const std::uint64_t> key) const {
   std::uint64_t h = 0x9e3779b97f4a7c15ULL;
   for (std::uint64_t w : key)
-    h = mix(h ^ w);
+    h = mix_bits(h ^ w);
   return h;
 }
 

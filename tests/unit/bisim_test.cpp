@@ -10,6 +10,7 @@
 
 #include "../support/naive_bisimulation.hpp"
 #include "../support/random_mdp.hpp"
+#include "../support/spec_models.hpp"
 #include "bisim/quotient.hpp"
 #include "bisim/refinement.hpp"
 #include "formats/aut_writer.hpp"
@@ -24,28 +25,8 @@ namespace {
 
 using bisim::Partition;
 using model::ExplicitModel;
-
-ExplicitModel explore_text(const std::string& text) {
-  SourceManager sources;
-  std::ostringstream messages;
-  DiagnosticEngine diagnostics(sources, messages);
-  auto ir = spec::check_spec_text(sources.add("test.oasis", text), diagnostics);
-  EXPECT_TRUE(ir) << messages.str();
-  auto model = model::explore(*ir, diagnostics);
-  EXPECT_TRUE(model) << messages.str();
-  return std::move(*model);
-}
-
-ExplicitModel explore_file(const std::string& path) {
-  SourceManager sources;
-  std::ostringstream messages;
-  DiagnosticEngine diagnostics(sources, messages);
-  auto ir = spec::load_spec(path, sources, diagnostics);
-  EXPECT_TRUE(ir) << messages.str();
-  auto model = model::explore(*ir, diagnostics);
-  EXPECT_TRUE(model) << messages.str();
-  return std::move(*model);
-}
+using test::explore_spec_file;
+using test::explore_spec_text;
 
 std::vector<std::vector<std::string>> named_blocks(const ExplicitModel& model,
                                                    const Partition& partition) {
@@ -60,7 +41,7 @@ std::vector<std::vector<std::string>> named_blocks(const ExplicitModel& model,
 
 TEST(Bisimulation, PaperExampleGivesTheTwoAbstractions) {
   const ExplicitModel model =
-      explore_file(std::string(OASIS_SOURCE_DIR) + "/specs/discrete_tracking.oasis");
+      explore_spec_file(std::string(OASIS_SOURCE_DIR) + "/specs/discrete_tracking.oasis");
   ASSERT_EQ(model.contexts[0].name, "object_at_s3");
   ASSERT_EQ(model.contexts[1].name, "object_at_s1");
   using Blocks = std::vector<std::vector<std::string>>;
@@ -72,7 +53,7 @@ TEST(Bisimulation, PaperExampleGivesTheTwoAbstractions) {
 
 TEST(Bisimulation, QuotientOfThePaperExample) {
   const ExplicitModel model =
-      explore_file(std::string(OASIS_SOURCE_DIR) + "/specs/discrete_tracking.oasis");
+      explore_spec_file(std::string(OASIS_SOURCE_DIR) + "/specs/discrete_tracking.oasis");
   const Partition partition = bisim::coarsest_bisimulation(model, 0);
   const ExplicitModel quotient = bisim::build_quotient(model, 0, partition);
   ASSERT_EQ(quotient.num_states(), 2U);
@@ -110,7 +91,7 @@ TEST(Bisimulation, IntegerAndRationalSumsAgree) {
 // Probabilities with huge coprime denominators: no common denominator fits in 64 bits, so
 // the engine must fall back to exact rational sums by itself.
 TEST(Bisimulation, HugeDenominatorsUseRationalSums) {
-  const ExplicitModel model = explore_text(R"(
+  const ExplicitModel model = explore_spec_text(R"(
 mdp huge {
   states a, b, c, goal;
   actions go;
@@ -150,7 +131,7 @@ TEST(Bisimulation, TinyEpsilonMatchesExactOnExactModels) {
 // Floating-point noise: 0.1 + 0.2 written as 0.30000000000000004. Exact mode separates the
 // two states; --epsilon 1e-9 merges them, which is what the mode is for.
 TEST(Bisimulation, EpsilonAbsorbsFloatingPointNoise) {
-  const ExplicitModel model = explore_text(R"(
+  const ExplicitModel model = explore_spec_text(R"(
 mdp noisy {
   states a, b, goal, other;
   actions go;

@@ -9,6 +9,7 @@
 
 #include <gtest/gtest.h>
 
+#include "../support/spec_models.hpp"
 #include "formats/aut_writer.hpp"
 #include "formats/model_file.hpp"
 #include "formats/prism_writer.hpp"
@@ -38,28 +39,6 @@ catalog {
   switching stay 0.9;
 }
 )";
-
-ExplicitModel explore_text(const std::string& name, const std::string& text) {
-  SourceManager sources;
-  std::ostringstream messages;
-  DiagnosticEngine diagnostics(sources, messages);
-  auto ir = spec::check_spec_text(sources.add(name, text), diagnostics);
-  EXPECT_TRUE(ir) << messages.str();
-  auto model = model::explore(*ir, diagnostics);
-  EXPECT_TRUE(model) << messages.str();
-  return std::move(*model);
-}
-
-ExplicitModel explore_file(const std::string& path) {
-  SourceManager sources;
-  std::ostringstream messages;
-  DiagnosticEngine diagnostics(sources, messages);
-  auto ir = spec::load_spec(path, sources, diagnostics);
-  EXPECT_TRUE(ir) << messages.str();
-  auto model = model::explore(*ir, diagnostics);
-  EXPECT_TRUE(model) << messages.str();
-  return std::move(*model);
-}
 
 ExplicitModel read_back(const std::string& path) {
   SourceManager sources;
@@ -140,13 +119,13 @@ class RoundTrip : public ::testing::Test {
 
 TEST_F(RoundTrip, DiscreteTrackingSpec) {
   const ExplicitModel model =
-      explore_file(std::string(OASIS_SOURCE_DIR) + "/specs/discrete_tracking.oasis");
+      test::explore_spec_file(std::string(OASIS_SOURCE_DIR) + "/specs/discrete_tracking.oasis");
   ASSERT_EQ(model.contexts.size(), 2U);
   check_all_contexts(model);
 }
 
 TEST_F(RoundTrip, FactoredSpecWithDisabledActionsAndActionRewards) {
-  const ExplicitModel model = explore_text("walk.oasis", kFactoredSpec);
+  const ExplicitModel model = test::explore_spec_text(kFactoredSpec, "walk.oasis");
   ASSERT_EQ(model.contexts.size(), 2U);
   ASSERT_GT(model.num_states(), 10U);
   check_all_contexts(model);

@@ -18,6 +18,7 @@
 #include <unistd.h>
 
 #include "../support/naive_bisimulation.hpp"
+#include "../support/spec_models.hpp"
 #include "bisim/refinement.hpp"
 #include "model/explorer.hpp"
 #include "spec/frontend.hpp"
@@ -27,30 +28,11 @@ namespace {
 
 using bisim::Partition;
 using model::ExplicitModel;
+using test::explore_spec_text;
 using verify::ViolationKind;
 
-ExplicitModel explore_text(const std::string& text) {
-  SourceManager sources;
-  std::ostringstream messages;
-  DiagnosticEngine diagnostics(sources, messages);
-  auto ir = spec::check_spec_text(sources.add("test.oasis", text), diagnostics);
-  EXPECT_TRUE(ir) << messages.str();
-  if (!ir) return {};
-  auto model = model::explore(*ir, diagnostics);
-  EXPECT_TRUE(model) << messages.str();
-  return model ? std::move(*model) : ExplicitModel{};
-}
-
 ExplicitModel discrete_tracking() {
-  SourceManager sources;
-  std::ostringstream messages;
-  DiagnosticEngine diagnostics(sources, messages);
-  auto ir = spec::load_spec(std::string(OASIS_SOURCE_DIR) + "/specs/discrete_tracking.oasis",
-                            sources, diagnostics);
-  EXPECT_TRUE(ir) << messages.str();
-  auto model = model::explore(*ir, diagnostics);
-  EXPECT_TRUE(model) << messages.str();
-  return std::move(*model);
+  return test::explore_spec_file(std::string(OASIS_SOURCE_DIR) + "/specs/discrete_tracking.oasis");
 }
 
 std::size_t context_index(const ExplicitModel& model, const std::string& name) {
@@ -180,7 +162,7 @@ mdp chain {
 )";
 
 TEST(Verifier, ChainStatesAreAllDistinguished) {
-  const ExplicitModel model = explore_text(kChain);
+  const ExplicitModel model = explore_spec_text(kChain);
   expect_accepted(model, 0, partition_of(model, {{"c0"}, {"c1"}, {"c2"}, {"c3"}, {"c4"}}));
   // c0 and c1 agree on rewards but are different distances from the reward.
   const verify::Violation v =
@@ -197,7 +179,7 @@ TEST(Verifier, ChainStatesAreAllDistinguished) {
 }
 
 TEST(Verifier, RewardlessChainIsOneBlock) {
-  const ExplicitModel model = explore_text(R"(
+  const ExplicitModel model = explore_spec_text(R"(
 mdp chain {
   states c0, c1, c2, c3;
   actions go;
@@ -218,7 +200,7 @@ mdp chain {
 
 TEST(Verifier, ProbabilitiesAreComparedPerBlockNotPerState) {
   // a reaches b1 and b2 with 1/2 each, a2 reaches b1 with 1: equal once b1 ~ b2.
-  const ExplicitModel model = explore_text(R"(
+  const ExplicitModel model = explore_spec_text(R"(
 mdp split {
   states a, a2, b1, b2, goal;
   actions go;
@@ -246,7 +228,7 @@ mdp split {
 TEST(Verifier, SymmetricGridHasCornersEdgesAndCentre) {
   // A random walk on a 3x3 grid, rewarded in the centre: by symmetry the corners are
   // equivalent, and so are the edge midpoints.
-  const ExplicitModel model = explore_text(R"(
+  const ExplicitModel model = explore_spec_text(R"(
 mdp grid {
   var x : [0 .. 2] init 0;
   var y : [0 .. 2] init 0;
@@ -291,7 +273,7 @@ mdp grid {
 TEST(Verifier, RewardIsStatePlusChoiceReward) {
   // R(p, a) = 1, R(p, b) = 0 from choice rewards alone; q gets the same from a state reward
   // of 1 and a choice reward of -1 on b. r differs on b.
-  const ExplicitModel model = explore_text(R"(
+  const ExplicitModel model = explore_spec_text(R"(
 mdp labelled {
   states p, q, r, sink;
   actions a, b;
@@ -331,7 +313,7 @@ mdp disabled {
 )";
 
 TEST(Verifier, EnabledActionsMustAgree) {
-  const ExplicitModel model = explore_text(kDisabled);
+  const ExplicitModel model = explore_spec_text(kDisabled);
   const verify::Violation v =
       expect_violation(model, 0, partition_of(model, {{"u", "v", "w"}, {"sink"}}),
                        ViolationKind::EnabledActionsDiffer);
@@ -343,14 +325,14 @@ TEST(Verifier, EnabledActionsMustAgree) {
 }
 
 TEST(Verifier, RewardsOfDisabledActionsAreIgnored) {
-  const ExplicitModel model = explore_text(kDisabled);
+  const ExplicitModel model = explore_spec_text(kDisabled);
   expect_accepted(model, 0, partition_of(model, {{"u", "w", "sink"}, {"v"}}));
 }
 
 TEST(Verifier, StatesWithoutActionsAreToldApartByTheirStateReward) {
   // No enabled action, so no R(s, a): the state reward R(s), the reward for being in s,
   // separates such states instead (d1 earns 1, d2 and d3 earn 0).
-  const ExplicitModel model = explore_text(R"(
+  const ExplicitModel model = explore_spec_text(R"(
 mdp stuck {
   states start, d1, d2, d3;
   actions go;
