@@ -1,0 +1,389 @@
+// oasis/rt/catalog_view.hpp: the one in-memory schema of an abstraction catalog.
+//
+// A catalog is what the compiler produces for Online Attention Switching (OAS): one explicit
+// MDP state space, N abstractions (one per context, each the coarsest bisimulation quotient of
+// the MDP under that context's reward), the abstraction switching model p(phi_t | phi_{t-1}),
+// the prior p(phi_0), and optionally the models the robust joint filter needs.
+//
+// Every type here is a *view*: plain structs of pointers and counts that own nothing. The
+// arrays behind them may be generated `constexpr`/`const` tables compiled into the robot
+// binary, or buffers filled by a file loader; either way they must outlive the view and every
+// filter built on it. Nothing in this header allocates.
+//
+// Trust: a generated table is trusted (the compiler checked it). Anything read from a file or
+// a network is not: call validate() before handing the view to AttentionFilter. validate()
+// reads only the elements that the counts in the view say exist, in an order that checks each
+// count before using it, so a view whose arrays really have the stated lengths cannot make it
+// read out of bounds, however wrong the numbers in those arrays are.
+//
+// Conventions used throughout:
+//  * indices are std::uint32_t; states are 0..num_states-1, actions 0..num_actions-1,
+//    abstractions 0..num_abstractions-1, blocks of abstraction i 0..num_blocks-1;
+//  * "row-major N x M" means element (r, c) is at [r * M + c];
+//  * a probability row "sums to 1" within kProbabilityTolerance (absolute);
+//  * strings are NUL-terminated UTF-8 and must be non-null unless marked optional.
+#pragma once
+
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <string>
+
+namespace oasis::rt {
+
+/// Version of the layout below. Emitters write it, loaders and validate() reject any other.
+inline constexpr std::uint32_t kCatalogFormat = 1;
+
+/// Absolute tolerance for "a probability distribution sums to 1" in validate(). Generated
+/// tables round exact rationals to the nearest double, so their sums are off by a few ulp per
+/// term; 1e-9 leaves room for rows of up to about 10^6 terms.
+inline constexpr double kProbabilityTolerance = 1e-9;
+
+/// Marker in AbstractionView::policy for a block in which no action is enabled.
+inline constexpr std::uint32_t kNoAction = 0xFFFFFFFFu;
+
+/// A transition relation in compressed sparse rows, one row per (row, action) pair.
+///
+/// Row `r * num_actions + a` holds the successors of source `r` (a block of a quotient, or a
+/// state of the full model) under action `a`: edges choice_begin[k] .. choice_begin[k+1]-1,
+/// edge e going to `target[e]` with probability `probability[e]`.
+///
+/// Invariants checked by validate() (R = number of sources, A = num_actions):
+///  * choice_begin has R*A+1 entries, choice_begin[0] == 0, non-decreasing,
+///    choice_begin[R*A] == num_edges;
+///  * target and probability have num_edges entries; every target < number of destinations;
+///  * every probability is finite and in (0, 1]; every non-empty row sums to 1.
+/// An empty row means the action is not enabled in that source. Targets within a row need not
+/// be sorted or distinct (a loader may keep them as emitted), though emitters write them
+/// sorted and merged.
+struct TransitionsCsr {
+  const std::uint32_t* choice_begin = nullptr;  ///< [R*A + 1] first edge of each row
+  const std::uint32_t* target = nullptr;        ///< [num_edges] destination of each edge
+  const double* probability = nullptr;          ///< [num_edges] probability of each edge
+  std::uint32_t num_edges = 0;                  ///< length of target and probability
+};
+
+/// One abstraction phi^i: the quotient of the MDP under context i, its policy and values.
+struct AbstractionView {
+  /// Name of the context this abstraction was computed for (the spec's `context NAME`).
+  const char* context = nullptr;
+
+  /// Number of blocks (abstract states z) of the quotient; at least 1.
+  std::uint32_t num_blocks = 0;
+
+  /// [num_states] z^i(s): the block of every explicit state. Every value < num_blocks and
+  /// every block holds at least one state.
+  const std::uint32_t* block_of = nullptr;
+
+  /// [num_blocks] the state reward R(s) of the states in each block (bisimulation makes it
+  /// equal within a block). This is what the detection model p(r_t | phi^i, s_t) compares the
+  /// observed reward with: r_t "matches" abstraction i at state s when
+  /// |r_t - block_reward[block_of[s]]| <= the filter's reward tolerance. Finite.
+  const double* block_reward = nullptr;
+
+  /// The quotient's transitions P^Z(z' | z, a): num_blocks sources, targets are blocks.
+  TransitionsCsr quotient;
+
+  /// [num_blocks * num_actions] R^Z(z, a), the quotient's reward for taking a in z, row-major.
+  /// Meaningful only where action a is enabled in z; finite everywhere (emitters write 0 for
+  /// disabled actions).
+  const double* reward = nullptr;
+
+  /// [num_blocks] pi^i(z): the optimal action in each block. Either an action whose quotient
+  /// row in this block is non-empty, or kNoAction when no action is enabled in the block.
+  const std::uint32_t* policy = nullptr;
+
+  /// [num_blocks] V^i(z): the optimal discounted value of each block. Finite.
+  const double* value = nullptr;
+
+  /// Optional, for the robust joint filter only: the full-state transition model
+  /// P^i(s' | s, a) with num_states sources and states as targets. Present exactly when the
+  /// catalog's observation model is present (CatalogView::observation.kind != kNone);
+  /// otherwise all its pointers must be null and num_edges 0.
+  TransitionsCsr state_transitions;
+};
+
+/// How an observed state relates to the true state, for the robust joint filter.
+enum class ObservationKind : std::uint32_t {
+  /// No robust section in this catalog: only the paper's filter can run.
+  kNone = 0,
+  /// p(o | s) = p_correct if o == s, else (1 - p_correct) / (num_states - 1): the sensor
+  /// reports the true state with probability p_correct and otherwise one of the other states
+  /// uniformly (the paper's sigma is 1 - p_correct). With one state, p_correct must be 1.
+  kSymmetric = 1,
+  /// p(o | s) = confusion[s * num_states + o]: a full confusion matrix, one row per true
+  /// state s, each row a distribution over observed states o.
+  kMatrix = 2,
+};
+
+/// The state-observation model p(observed state | true state), catalog-wide (the sensor does
+/// not depend on the context).
+struct ObservationModel {
+  ObservationKind kind = ObservationKind::kNone;
+  /// kSymmetric only: in [0, 1]. Ignored otherwise.
+  double p_correct = 1.0;
+  /// kMatrix only: [num_states * num_states], row-major, each row sums to 1. Must be null
+  /// otherwise.
+  const double* confusion = nullptr;
+};
+
+/// The whole catalog. A generated table or a loader fills one of these; nothing is owned.
+struct CatalogView {
+  /// Must equal kCatalogFormat.
+  std::uint32_t format = kCatalogFormat;
+
+  /// Name of the spec's MDP (the `mdp NAME` block).
+  const char* name = nullptr;
+
+  /// Hash of the spec the catalog was compiled from, as the compiler computes it; lets a
+  /// robot check that its catalog and its configuration come from the same spec.
+  std::uint64_t spec_hash = 0;
+
+  /// Version string of the compiler that produced the catalog (informational).
+  const char* compiler_version = nullptr;
+
+  /// Number of explicit states of the MDP; at least 1.
+  std::uint32_t num_states = 0;
+
+  /// Number of actions; at least 1.
+  std::uint32_t num_actions = 0;
+
+  /// [num_actions] action names, each non-null.
+  const char* const* action_names = nullptr;
+
+  /// Optional: [num_states] state names (each non-null), or null when the catalog does not
+  /// carry them (large state spaces).
+  const char* const* state_names = nullptr;
+
+  /// Number of abstractions N in the catalog; at least 1.
+  std::uint32_t num_abstractions = 0;
+
+  /// [N * N] the abstraction transition model, row-major: switching[i * N + j] is
+  /// p(phi_t = j | phi_{t-1} = i). Every entry finite in [0, 1], every row sums to 1.
+  const double* switching = nullptr;
+
+  /// [N] the prior p(phi_0 = i). Finite, in [0, 1], sums to 1.
+  const double* prior = nullptr;
+
+  /// [N] the abstractions, in the catalog's order (the spec's context order).
+  const AbstractionView* abstractions = nullptr;
+
+  /// Optional robust section: the state-observation model (kNone when absent). When present,
+  /// every abstraction carries state_transitions.
+  ObservationModel observation;
+
+  /// True if the robust joint filter can run on this catalog.
+  bool has_robust_section() const noexcept { return observation.kind != ObservationKind::kNone; }
+};
+
+namespace detail {
+
+inline bool fail(std::string* why, const std::string& message) {
+  if (why != nullptr) *why = message;
+  return false;
+}
+
+inline bool is_probability(double p) noexcept {
+  return std::isfinite(p) && p >= 0.0 && p <= 1.0;
+}
+
+inline bool sums_to_one(double sum) noexcept {
+  return std::isfinite(sum) && std::fabs(sum - 1.0) <= kProbabilityTolerance;
+}
+
+/// Checks a CSR relation with `sources` sources and `destinations` destinations.
+inline bool validate_csr(const TransitionsCsr& csr, std::uint32_t sources,
+                         std::uint32_t num_actions, std::uint32_t destinations,
+                         const std::string& where, std::string* why) {
+  if (csr.choice_begin == nullptr) return fail(why, where + ": choice_begin is null");
+  if (csr.num_edges > 0 && (csr.target == nullptr || csr.probability == nullptr))
+    return fail(why, where + ": target or probability is null");
+  const std::size_t rows = static_cast<std::size_t>(sources) * num_actions;
+  if (csr.choice_begin[0] != 0) return fail(why, where + ": choice_begin[0] != 0");
+  for (std::size_t row = 0; row < rows; ++row) {
+    const std::uint32_t begin = csr.choice_begin[row];
+    const std::uint32_t end = csr.choice_begin[row + 1];
+    if (end < begin || end > csr.num_edges)
+      return fail(why, where + ": choice_begin not non-decreasing or past num_edges at row " +
+                           std::to_string(row));
+    double sum = 0.0;
+    for (std::uint32_t e = begin; e < end; ++e) {
+      if (csr.target[e] >= destinations)
+        return fail(why, where + ": target out of range at edge " + std::to_string(e));
+      const double p = csr.probability[e];
+      if (!is_probability(p) || p == 0.0)
+        return fail(why, where + ": probability not in (0, 1] at edge " + std::to_string(e));
+      sum += p;
+    }
+    if (end > begin && !sums_to_one(sum))
+      return fail(why, where + ": row " + std::to_string(row) + " sums to " + std::to_string(sum) +
+                           ", not 1");
+  }
+  if (csr.choice_begin[rows] != csr.num_edges)
+    return fail(why, where + ": choice_begin[last] != num_edges");
+  return true;
+}
+
+inline bool csr_is_empty(const TransitionsCsr& csr) noexcept {
+  return csr.choice_begin == nullptr && csr.target == nullptr && csr.probability == nullptr &&
+         csr.num_edges == 0;
+}
+
+}  // namespace detail
+
+/// Checks every invariant stated in this header.
+///
+/// Requires: every non-null pointer in `catalog` points to an array of at least the length
+/// that the counts in `catalog` give for it (for a CSR: choice_begin R*A+1, target and
+/// probability num_edges). A loader guarantees this by sizing its buffers from the counts it
+/// read; validate() then guarantees the rest.
+/// Guarantees: returns true iff all invariants hold (sizes at least 1, pointers non-null where
+/// required, every index in range, every block non-empty, every probability finite in [0, 1],
+/// every distribution summing to 1, every reward and value finite, every policy action
+/// enabled in its block, robust section complete or absent). On false, and if `why` is not
+/// null, stores a one-line reason naming the first violated invariant. Never reads past the
+/// stated lengths. Allocates only the message and a num_blocks-byte map per abstraction, so
+/// call it at load time, not in a control loop. O(size of the catalog).
+inline bool validate(const CatalogView& catalog, std::string* why = nullptr) {
+  using detail::fail;
+  if (catalog.format != kCatalogFormat)
+    return fail(why, "format " + std::to_string(catalog.format) + " is not " +
+                         std::to_string(kCatalogFormat));
+  if (catalog.name == nullptr) return fail(why, "name is null");
+  if (catalog.compiler_version == nullptr) return fail(why, "compiler_version is null");
+  const std::uint32_t num_states = catalog.num_states;
+  const std::uint32_t num_actions = catalog.num_actions;
+  const std::uint32_t n = catalog.num_abstractions;
+  if (num_states == 0) return fail(why, "num_states is 0");
+  if (num_actions == 0) return fail(why, "num_actions is 0");
+  if (n == 0) return fail(why, "num_abstractions is 0");
+  if (catalog.action_names == nullptr) return fail(why, "action_names is null");
+  for (std::uint32_t a = 0; a < num_actions; ++a)
+    if (catalog.action_names[a] == nullptr)
+      return fail(why, "action name " + std::to_string(a) + " is null");
+  if (catalog.state_names != nullptr)
+    for (std::uint32_t s = 0; s < num_states; ++s)
+      if (catalog.state_names[s] == nullptr)
+        return fail(why, "state name " + std::to_string(s) + " is null");
+
+  if (catalog.switching == nullptr) return fail(why, "switching is null");
+  for (std::uint32_t i = 0; i < n; ++i) {
+    double sum = 0.0;
+    for (std::uint32_t j = 0; j < n; ++j) {
+      const double p = catalog.switching[static_cast<std::size_t>(i) * n + j];
+      if (!detail::is_probability(p))
+        return fail(why, "switching[" + std::to_string(i) + "][" + std::to_string(j) +
+                             "] not a probability");
+      sum += p;
+    }
+    if (!detail::sums_to_one(sum))
+      return fail(why, "switching row " + std::to_string(i) + " does not sum to 1");
+  }
+  if (catalog.prior == nullptr) return fail(why, "prior is null");
+  double prior_sum = 0.0;
+  for (std::uint32_t i = 0; i < n; ++i) {
+    if (!detail::is_probability(catalog.prior[i]))
+      return fail(why, "prior[" + std::to_string(i) + "] not a probability");
+    prior_sum += catalog.prior[i];
+  }
+  if (!detail::sums_to_one(prior_sum)) return fail(why, "prior does not sum to 1");
+
+  const ObservationModel& obs = catalog.observation;
+  switch (obs.kind) {
+    case ObservationKind::kNone:
+      if (obs.confusion != nullptr) return fail(why, "confusion given without kMatrix");
+      break;
+    case ObservationKind::kSymmetric:
+      if (obs.confusion != nullptr) return fail(why, "confusion given without kMatrix");
+      if (!detail::is_probability(obs.p_correct)) return fail(why, "p_correct not in [0, 1]");
+      if (num_states == 1 && obs.p_correct != 1.0)
+        return fail(why, "p_correct must be 1 with a single state");
+      break;
+    case ObservationKind::kMatrix:
+      if (obs.confusion == nullptr) return fail(why, "kMatrix without confusion matrix");
+      for (std::uint32_t s = 0; s < num_states; ++s) {
+        double sum = 0.0;
+        for (std::uint32_t o = 0; o < num_states; ++o) {
+          const double p = obs.confusion[static_cast<std::size_t>(s) * num_states + o];
+          if (!detail::is_probability(p))
+            return fail(why, "confusion[" + std::to_string(s) + "][" + std::to_string(o) +
+                                 "] not a probability");
+          sum += p;
+        }
+        if (!detail::sums_to_one(sum))
+          return fail(why, "confusion row " + std::to_string(s) + " does not sum to 1");
+      }
+      break;
+    default:
+      return fail(why, "unknown observation kind");
+  }
+
+  if (catalog.abstractions == nullptr) return fail(why, "abstractions is null");
+  for (std::uint32_t i = 0; i < n; ++i) {
+    const AbstractionView& abs = catalog.abstractions[i];
+    const std::string where = "abstraction " + std::to_string(i);
+    if (abs.context == nullptr) return fail(why, where + ": context is null");
+    const std::uint32_t blocks = abs.num_blocks;
+    if (blocks == 0) return fail(why, where + ": num_blocks is 0");
+    if (blocks > num_states) return fail(why, where + ": more blocks than states");
+    if (abs.block_of == nullptr || abs.block_reward == nullptr || abs.reward == nullptr ||
+        abs.policy == nullptr || abs.value == nullptr)
+      return fail(why, where + ": a required array is null");
+    for (std::uint32_t s = 0; s < num_states; ++s)
+      if (abs.block_of[s] >= blocks)
+        return fail(why, where + ": block_of[" + std::to_string(s) + "] out of range");
+    // Every block must hold a state: count distinct blocks with a byte map (a std::string,
+    // the only allocation validate() makes besides the message). O(num_states).
+    std::uint32_t first_occurrences = 0;
+    {
+      std::string seen(blocks, '\0');
+      for (std::uint32_t s = 0; s < num_states; ++s) {
+        char& mark = seen[abs.block_of[s]];
+        if (mark == '\0') {
+          mark = '\1';
+          ++first_occurrences;
+        }
+      }
+    }
+    if (first_occurrences != blocks) return fail(why, where + ": a block holds no state");
+    for (std::uint32_t z = 0; z < blocks; ++z) {
+      if (!std::isfinite(abs.block_reward[z]))
+        return fail(why, where + ": block_reward[" + std::to_string(z) + "] not finite");
+      if (!std::isfinite(abs.value[z]))
+        return fail(why, where + ": value[" + std::to_string(z) + "] not finite");
+      for (std::uint32_t a = 0; a < num_actions; ++a)
+        if (!std::isfinite(abs.reward[static_cast<std::size_t>(z) * num_actions + a]))
+          return fail(why, where + ": reward[" + std::to_string(z) + "][" + std::to_string(a) +
+                               "] not finite");
+    }
+    if (!detail::validate_csr(abs.quotient, blocks, num_actions, blocks, where + " quotient", why))
+      return false;
+    for (std::uint32_t z = 0; z < blocks; ++z) {
+      const std::size_t row0 = static_cast<std::size_t>(z) * num_actions;
+      bool any_enabled = false;
+      for (std::uint32_t a = 0; a < num_actions; ++a)
+        if (abs.quotient.choice_begin[row0 + a + 1] > abs.quotient.choice_begin[row0 + a])
+          any_enabled = true;
+      const std::uint32_t action = abs.policy[z];
+      if (action == kNoAction) {
+        if (any_enabled)
+          return fail(why, where + ": policy[" + std::to_string(z) +
+                               "] is kNoAction but an action is enabled");
+      } else if (action >= num_actions || abs.quotient.choice_begin[row0 + action + 1] ==
+                                              abs.quotient.choice_begin[row0 + action]) {
+        return fail(why, where + ": policy[" + std::to_string(z) + "] not an enabled action");
+      }
+    }
+    if (catalog.has_robust_section()) {
+      if (!detail::validate_csr(abs.state_transitions, num_states, num_actions, num_states,
+                                where + " state_transitions", why))
+        return false;
+    } else if (!detail::csr_is_empty(abs.state_transitions)) {
+      return fail(why, where + ": state_transitions given without an observation model");
+    }
+  }
+  if (why != nullptr) why->clear();
+  return true;
+}
+
+}  // namespace oasis::rt
