@@ -1,0 +1,494 @@
+// oasis/rt/attention_filter.hpp: Online Attention Switching (Algorithm 1 of the paper).
+//
+// AttentionFilter keeps a belief over the catalog's abstractions, updates it from each
+// observed (state, reward) pair, selects the maximum-likelihood (ML) abstraction phi^i and
+// answers the action pi^i(z^i(s)) to apply next.
+//
+// Paper mode (the default) is Algorithm 1 exactly:
+//   dynamics update     b'(i) = sum_j p(phi_t = i | phi_{t-1} = j) b(j)
+//   measurement update  b(i)  = p(r_t | phi^i, s_t) b'(i) / sum_k p(r_t | phi^k, s_t) b'(k)
+//   selection           i     = argmax_i b(i)          (ties: FilterOptions::tie_rule)
+// with the deterministic detection model p(r | phi^i, s) = 1 if |r - R^i(s)| <= reward
+// tolerance, else 0, where R^i(s) = block_reward[block_of[s]] of abstraction i.
+//
+// Options beyond the paper (all off by default, see FilterOptions): a zero-likelihood guard,
+// a soft detection model, and a robust joint filter over (abstraction, true state).
+//
+// No heap allocation after construction: the filter works in a caller-provided buffer of
+// doubles (workspace_size() tells how many), which may be a std::vector allocated once, a
+// static array or a FixedWorkspace<...>. The catalog view and the buffer must outlive the
+// filter. The filter is not thread-safe; use one per thread.
+//
+// Cost of one step(): paper mode O(N^2) for N abstractions (the dense switching product) plus
+// O(N) for the measurement; robust mode O(N^2 * S + N * (S + E_a)) where S is
+// num_states and E_a the number of full-state edges of the action taken, i.e. one sparse
+// matrix-vector product per abstraction plus the dense switching product per state.
+#pragma once
+
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <limits>
+
+#include "oasis/rt/catalog_view.hpp"
+
+namespace oasis::rt {
+
+/// How the ML selection breaks ties. Two beliefs are tied when they differ by at most
+/// FilterOptions::tie_tolerance (absolute).
+enum class TieRule : std::uint32_t {
+  /// Keep the current ML abstraction if it is among the tied; otherwise the lowest index.
+  /// At construction there is no current abstraction, so the lowest tied index is taken.
+  kKeep = 0,
+  /// Pick uniformly among the tied with the filter's own PRNG (SplitMix64, seeded by
+  /// FilterOptions::seed): the same seed gives the same choices on every platform. One PRNG
+  /// draw (occasionally more, by rejection) per selection with two or more tied.
+  kRandom = 1,
+};
+
+/// Which filter runs.
+enum class FilterMode : std::uint32_t {
+  /// Algorithm 1 of the paper: a belief over abstractions, the observed state taken as true.
+  kPaper = 0,
+  /// Joint belief over (abstraction i, true state s); needs the catalog's robust section.
+  ///  predict:  b'(i, s') = sum_j p(i | j) sum_s P^i(s' | s, a_{t-1}) b(j, s)
+  ///            (the context at time t governs the move s_{t-1} -> s_t; an (s, a) pair with
+  ///            no successors in P^i loses its mass: the action could not have been taken
+  ///            there);
+  ///  weight:   b(i, s) ~ b'(i, s) * p(o_t | s) * p(r_t | phi^i, s)   (the reward depends on
+  ///            the true state, so the detection model is applied at s, not at o_t);
+  ///  belief over abstractions: the marginal m(i) = sum_s b(i, s); ML over m;
+  ///  abstract state for the policy: z = block_of^i(s*) with s* = argmax_s b(i, s) for the ML
+  ///  abstraction i (ties: lowest state index).
+  /// The first observation (start()) sets b(i, s) ~ prior(i) * p(o_0 | s).
+  kRobust = 1,
+};
+
+/// Options of AttentionFilter. The defaults give Algorithm 1 of the paper.
+struct FilterOptions {
+  FilterMode mode = FilterMode::kPaper;
+
+  TieRule tie_rule = TieRule::kKeep;
+
+  /// Seed of the PRNG used by TieRule::kRandom.
+  std::uint64_t seed = 0;
+
+  /// Absolute tolerance within which two beliefs count as tied for the ML selection.
+  double tie_tolerance = 1e-12;
+
+  /// Absolute tolerance of the detection model: the observed reward r matches abstraction i at
+  /// state s when |r - R^i(s)| <= reward_tolerance. Rewards in a generated catalog are the
+  /// spec's numbers rounded to double, and the robot reports the same numbers, so a tight
+  /// tolerance suffices; widen it if rewards come through a noisy channel. A non-finite
+  /// observed reward never matches.
+  double reward_tolerance = 1e-9;
+
+  /// Soft detection model: p(r | phi^i, s) = 1 - detection_epsilon on a match and
+  /// detection_epsilon otherwise. 0 (the default) is the paper's deterministic model. Must be
+  /// in [0, 1); with epsilon > 0 no likelihood is ever 0, so the guard below never fires.
+  double detection_epsilon = 0.0;
+
+  /// Zero-likelihood guard. When every abstraction (every (abstraction, state) pair in robust
+  /// mode) has likelihood 0 the paper's normalisation divides 0 by 0: Algorithm 1 is
+  /// undefined there. With the guard on, the filter keeps the predicted belief (the dynamics
+  /// update alone). With it off (the default) the filter resets the belief to the prior (in
+  /// robust mode: prior(i) * p(o_t | s), normalised, or prior(i) / S if that is 0 too): the
+  /// observation contradicts every hypothesis, so it restarts from what it knew at t = 0.
+  /// Either way step() reports StepStatus::kZeroLikelihood and the belief stays a
+  /// distribution: the filter never produces a NaN.
+  bool zero_likelihood_guard = false;
+};
+
+/// What step() did.
+enum class StepStatus : std::uint32_t {
+  kOk = 0,              ///< normal update
+  kZeroLikelihood = 1,  ///< no hypothesis explained the observation; see zero_likelihood_guard
+  kBadState = 2,        ///< observed_state >= num_states: input rejected, filter unchanged
+  kBadAction = 3,       ///< action_taken >= num_actions: input rejected, filter unchanged
+  kNotReady = 4,        ///< the filter could not be constructed (see error()); nothing done
+};
+
+/// Why construction failed.
+enum class FilterError : std::uint32_t {
+  kNone = 0,
+  kWorkspaceTooSmall = 1,  ///< fewer doubles than workspace_size() asks for
+  kNoRobustSection = 2,    ///< kRobust requested on a catalog without a robust section
+  kBadOptions = 3,         ///< an option out of range (epsilon, tolerances)
+  kEmptyCatalog = 4,       ///< num_abstractions, num_states or num_actions is 0
+};
+
+/// Storage for a filter whose sizes are bounded at compile time: holds enough doubles for
+/// MaxAbstractions abstractions and, when MaxStates > 0, robust mode over MaxStates states.
+template <std::size_t MaxAbstractions, std::size_t MaxStates = 0>
+struct FixedWorkspace {
+  std::array<double, 2 * MaxAbstractions + 2 * MaxAbstractions * MaxStates> data{};
+  double* buffer() noexcept { return data.data(); }
+  static constexpr std::size_t size() noexcept { return 2 * MaxAbstractions * (1 + MaxStates); }
+};
+
+/// The OAS filter. See the top of this header for the algorithm and the cost per step.
+class AttentionFilter {
+ public:
+  /// Number of doubles the workspace must hold for `catalog` under `options`:
+  /// 2N in paper mode, 2N + 2NS in robust mode (N abstractions, S states).
+  static std::size_t workspace_size(const CatalogView& catalog,
+                                    const FilterOptions& options) noexcept {
+    const std::size_t n = catalog.num_abstractions;
+    if (options.mode == FilterMode::kRobust)
+      return 2 * n + 2 * n * static_cast<std::size_t>(catalog.num_states);
+    return 2 * n;
+  }
+
+  /// Builds the filter and resets it (belief = prior, ML = argmax prior, no state yet).
+  /// Requires: validate(catalog) is true (the filter does not re-check the catalog; it does
+  /// check every sensor input). `workspace` points to `workspace_doubles` doubles that outlive
+  /// the filter and are used by nothing else.
+  /// Guarantees: ok() is true unless an error() condition holds, in which case every call
+  /// below is a harmless no-op (step() returns kNotReady, action() kNoAction).
+  AttentionFilter(const CatalogView& catalog, const FilterOptions& options, double* workspace,
+                  std::size_t workspace_doubles) noexcept
+      : catalog_(&catalog), options_(options) {
+    if (catalog.num_abstractions == 0 || catalog.num_states == 0 || catalog.num_actions == 0) {
+      error_ = FilterError::kEmptyCatalog;
+    } else if (!(options.detection_epsilon >= 0.0 && options.detection_epsilon < 1.0) ||
+               !(options.reward_tolerance >= 0.0) || !(options.tie_tolerance >= 0.0)) {
+      error_ = FilterError::kBadOptions;
+    } else if (options.mode == FilterMode::kRobust && !catalog.has_robust_section()) {
+      error_ = FilterError::kNoRobustSection;
+    } else if (workspace == nullptr || workspace_doubles < workspace_size(catalog, options)) {
+      error_ = FilterError::kWorkspaceTooSmall;
+    }
+    if (error_ != FilterError::kNone) return;
+    const std::size_t n = catalog.num_abstractions;
+    belief_ = workspace;
+    scratch_ = workspace + n;
+    if (options.mode == FilterMode::kRobust) {
+      joint_ = workspace + 2 * n;
+      joint_scratch_ = joint_ + n * catalog.num_states;
+    }
+    reset();
+  }
+
+  /// Convenience: a FixedWorkspace as the buffer.
+  template <std::size_t MaxAbstractions, std::size_t MaxStates>
+  AttentionFilter(const CatalogView& catalog, const FilterOptions& options,
+                  FixedWorkspace<MaxAbstractions, MaxStates>& workspace) noexcept
+      : AttentionFilter(catalog, options, workspace.buffer(), workspace.size()) {}
+
+  bool ok() const noexcept { return error_ == FilterError::kNone; }
+  FilterError error() const noexcept { return error_; }
+
+  /// Back to t = 0: belief = prior, ML = argmax prior (tie rule applies; with kKeep the lowest
+  /// tied index), PRNG reseeded, no observed state (action() is kNoAction until start() or
+  /// step()). O(N) (paper) or O(N S) (robust).
+  void reset() noexcept {
+    if (!ok()) return;
+    rng_state_ = options_.seed;
+    has_state_ = false;
+    state_ = 0;
+    ml_ = kNone_;
+    const std::uint32_t n = catalog_->num_abstractions;
+    for (std::uint32_t i = 0; i < n; ++i)
+      belief_[i] = catalog_->prior[i];
+    if (robust()) {
+      const std::uint32_t states = catalog_->num_states;
+      for (std::uint32_t i = 0; i < n; ++i)
+        for (std::uint32_t s = 0; s < states; ++s)
+          joint_[static_cast<std::size_t>(i) * states + s] = catalog_->prior[i] / states;
+    }
+    select_ml();
+  }
+
+  /// Records the initial observed state s_0 (Algorithm 1, line 1) so that action() can answer
+  /// a_1 = pi^i(z^i(s_0)). Paper mode: the belief is unchanged (Algorithm 1 does not update on
+  /// s_0). Robust mode: b(i, s) ~ prior(i) * p(o_0 | s). Returns kBadState (and changes
+  /// nothing) if observed_state >= num_states. O(1) paper, O(N S) robust.
+  StepStatus start(std::uint32_t observed_state) noexcept {
+    if (!ok()) return StepStatus::kNotReady;
+    if (observed_state >= catalog_->num_states) return StepStatus::kBadState;
+    reset();
+    state_ = observed_state;
+    has_state_ = true;
+    if (robust()) {
+      reset_joint_to_prior(observed_state);
+      marginalise();
+      select_ml();
+    }
+    return StepStatus::kOk;
+  }
+
+  /// One iteration of Algorithm 1's loop after the robot applied `action_taken` (a_t) and
+  /// observed `observed_state` (s_t) and `observed_reward` (r_t).
+  /// Requires nothing of the inputs: out-of-range indices are rejected (kBadState,
+  /// kBadAction; the filter is unchanged), a NaN or infinite reward matches no abstraction.
+  /// Guarantees: the belief stays a probability distribution (non-negative, sums to 1 up to
+  /// rounding, no NaN); ml_abstraction() and action() are updated. In paper mode action_taken
+  /// is only range-checked (the switching model does not depend on it). No allocation.
+  StepStatus step(std::uint32_t observed_state, double observed_reward,
+                  std::uint32_t action_taken) noexcept {
+    if (!ok()) return StepStatus::kNotReady;
+    if (observed_state >= catalog_->num_states) return StepStatus::kBadState;
+    if (action_taken >= catalog_->num_actions) return StepStatus::kBadAction;
+    const StepStatus status = robust() ? robust_step(observed_state, observed_reward, action_taken)
+                                       : paper_step(observed_state, observed_reward);
+    state_ = observed_state;
+    has_state_ = true;
+    select_ml();
+    return status;
+  }
+
+  /// pi^i(z^i(s)) for the ML abstraction i and the current state s (the last observed state in
+  /// paper mode; the most likely true state under i in robust mode). kNoAction before the
+  /// first start()/step(), if construction failed, or if the block has no enabled action.
+  std::uint32_t action() const noexcept {
+    if (!ok() || !has_state_) return kNoAction;
+    return catalog_->abstractions[ml_].policy[abstract_state()];
+  }
+
+  /// The ML abstraction index i (valid whenever ok()).
+  std::uint32_t ml_abstraction() const noexcept { return ok() ? ml_ : 0; }
+
+  /// The block z^i(s) the policy is evaluated at (see action()); 0 before any state.
+  std::uint32_t abstract_state() const noexcept {
+    if (!ok() || !has_state_) return 0;
+    return catalog_->abstractions[ml_].block_of[policy_state()];
+  }
+
+  /// The state the policy is evaluated at: the last observed state (paper mode) or the most
+  /// likely true state under the ML abstraction (robust mode).
+  std::uint32_t policy_state() const noexcept {
+    if (!ok() || !has_state_) return 0;
+    if (!robust()) return state_;
+    const std::uint32_t states = catalog_->num_states;
+    const double* row = joint_ + static_cast<std::size_t>(ml_) * states;
+    std::uint32_t best = 0;
+    for (std::uint32_t s = 1; s < states; ++s)
+      if (row[s] > row[best]) best = s;
+    return best;
+  }
+
+  /// p(phi = i | history): the belief (the marginal in robust mode). i < num_abstractions.
+  double belief(std::uint32_t i) const noexcept { return ok() ? belief_[i] : 0.0; }
+
+  /// The whole belief, num_abstractions entries (null if construction failed).
+  const double* beliefs() const noexcept { return ok() ? belief_ : nullptr; }
+
+  /// Robust mode only: b(i, s), the joint belief (0 in paper mode).
+  double joint_belief(std::uint32_t i, std::uint32_t s) const noexcept {
+    if (!ok() || !robust()) return 0.0;
+    return joint_[static_cast<std::size_t>(i) * catalog_->num_states + s];
+  }
+
+  const FilterOptions& options() const noexcept { return options_; }
+  const CatalogView& catalog() const noexcept { return *catalog_; }
+
+ private:
+  static constexpr std::uint32_t kNone_ = std::numeric_limits<std::uint32_t>::max();
+
+  bool robust() const noexcept { return options_.mode == FilterMode::kRobust; }
+
+  /// p(r | phi^i, s) under the deterministic or soft detection model.
+  double detection(std::uint32_t i, std::uint32_t s, double reward) const noexcept {
+    const AbstractionView& abs = catalog_->abstractions[i];
+    const double expected = abs.block_reward[abs.block_of[s]];
+    const bool match =
+        std::isfinite(reward) && std::fabs(reward - expected) <= options_.reward_tolerance;
+    return match ? 1.0 - options_.detection_epsilon : options_.detection_epsilon;
+  }
+
+  /// p(o | s) under the catalog's observation model (robust mode only).
+  double observation(std::uint32_t observed, std::uint32_t s) const noexcept {
+    const ObservationModel& obs = catalog_->observation;
+    const std::uint32_t states = catalog_->num_states;
+    if (obs.kind == ObservationKind::kMatrix)
+      return obs.confusion[static_cast<std::size_t>(s) * states + observed];
+    if (observed == s) return obs.p_correct;
+    return (1.0 - obs.p_correct) / static_cast<double>(states - 1);
+  }
+
+  /// out(i) = sum_j p(i | j) in(j); switching is row-major p(j | i) = switching[i*N + j].
+  void switch_predict(const double* in, double* out, std::size_t stride) const noexcept {
+    const std::uint32_t n = catalog_->num_abstractions;
+    for (std::uint32_t i = 0; i < n; ++i)
+      out[i * stride] = 0.0;
+    for (std::uint32_t j = 0; j < n; ++j) {
+      const double mass = in[j * stride];
+      if (mass == 0.0) continue;
+      const double* row = catalog_->switching + static_cast<std::size_t>(j) * n;
+      for (std::uint32_t i = 0; i < n; ++i)
+        out[i * stride] += row[i] * mass;
+    }
+  }
+
+  StepStatus paper_step(std::uint32_t state, double reward) noexcept {
+    const std::uint32_t n = catalog_->num_abstractions;
+    switch_predict(belief_, scratch_, 1);  // scratch_ = predicted belief
+    double total = 0.0;
+    for (std::uint32_t i = 0; i < n; ++i) {
+      const double weighted = detection(i, state, reward) * scratch_[i];
+      belief_[i] = weighted;
+      total += weighted;
+    }
+    if (total > 0.0 && std::isfinite(total)) {
+      for (std::uint32_t i = 0; i < n; ++i)
+        belief_[i] /= total;
+      return StepStatus::kOk;
+    }
+    if (options_.zero_likelihood_guard) {
+      for (std::uint32_t i = 0; i < n; ++i)
+        belief_[i] = scratch_[i];
+    } else {
+      for (std::uint32_t i = 0; i < n; ++i)
+        belief_[i] = catalog_->prior[i];
+    }
+    return StepStatus::kZeroLikelihood;
+  }
+
+  StepStatus robust_step(std::uint32_t observed, double reward, std::uint32_t action) noexcept {
+    const std::uint32_t n = catalog_->num_abstractions;
+    const std::uint32_t states = catalog_->num_states;
+    const std::uint32_t actions = catalog_->num_actions;
+    // 1. Switch: joint_scratch_(i, s) = sum_j p(i | j) joint_(j, s), one column per state.
+    for (std::uint32_t s = 0; s < states; ++s)
+      switch_predict(joint_ + s, joint_scratch_ + s, states);
+    // 2. Move under P^i(. | s, a): joint_(i, s') = sum_s P^i(s' | s, a) joint_scratch_(i, s).
+    for (std::uint32_t i = 0; i < n; ++i) {
+      const TransitionsCsr& csr = catalog_->abstractions[i].state_transitions;
+      const double* from = joint_scratch_ + static_cast<std::size_t>(i) * states;
+      double* to = joint_ + static_cast<std::size_t>(i) * states;
+      for (std::uint32_t s = 0; s < states; ++s)
+        to[s] = 0.0;
+      for (std::uint32_t s = 0; s < states; ++s) {
+        const double mass = from[s];
+        if (mass == 0.0) continue;
+        const std::size_t row = static_cast<std::size_t>(s) * actions + action;
+        for (std::uint32_t e = csr.choice_begin[row]; e < csr.choice_begin[row + 1]; ++e)
+          to[csr.target[e]] += csr.probability[e] * mass;
+      }
+    }
+    // Keep the prediction (normalised: mass may have been lost at disabled actions) in
+    // joint_scratch_ for the guard.
+    double predicted_total = 0.0;
+    const std::size_t cells = static_cast<std::size_t>(n) * states;
+    for (std::size_t k = 0; k < cells; ++k)
+      predicted_total += joint_[k];
+    // 3. Weight by p(o | s) and p(r | phi^i, s).
+    double total = 0.0;
+    for (std::uint32_t i = 0; i < n; ++i) {
+      double* row = joint_ + static_cast<std::size_t>(i) * states;
+      double* kept = joint_scratch_ + static_cast<std::size_t>(i) * states;
+      for (std::uint32_t s = 0; s < states; ++s) {
+        kept[s] = row[s];
+        if (row[s] == 0.0) continue;
+        row[s] *= observation(observed, s) * detection(i, s, reward);
+        total += row[s];
+      }
+    }
+    StepStatus status = StepStatus::kOk;
+    if (total > 0.0 && std::isfinite(total)) {
+      for (std::size_t k = 0; k < cells; ++k)
+        joint_[k] /= total;
+    } else {
+      status = StepStatus::kZeroLikelihood;
+      if (options_.zero_likelihood_guard && predicted_total > 0.0 &&
+          std::isfinite(predicted_total)) {
+        for (std::size_t k = 0; k < cells; ++k)
+          joint_[k] = joint_scratch_[k] / predicted_total;
+      } else {
+        reset_joint_to_prior(observed);
+      }
+    }
+    marginalise();
+    return status;
+  }
+
+  /// joint_(i, s) = prior(i) p(o | s) / sum_s p(o | s), or prior(i) / S if no state can
+  /// produce the observation.
+  void reset_joint_to_prior(std::uint32_t observed) noexcept {
+    const std::uint32_t n = catalog_->num_abstractions;
+    const std::uint32_t states = catalog_->num_states;
+    double norm = 0.0;
+    for (std::uint32_t s = 0; s < states; ++s)
+      norm += observation(observed, s);
+    for (std::uint32_t i = 0; i < n; ++i)
+      for (std::uint32_t s = 0; s < states; ++s)
+        joint_[static_cast<std::size_t>(i) * states + s] =
+            norm > 0.0 ? catalog_->prior[i] * observation(observed, s) / norm
+                       : catalog_->prior[i] / states;
+  }
+
+  void marginalise() noexcept {
+    const std::uint32_t n = catalog_->num_abstractions;
+    const std::uint32_t states = catalog_->num_states;
+    for (std::uint32_t i = 0; i < n; ++i) {
+      double sum = 0.0;
+      const double* row = joint_ + static_cast<std::size_t>(i) * states;
+      for (std::uint32_t s = 0; s < states; ++s)
+        sum += row[s];
+      belief_[i] = sum;
+    }
+  }
+
+  /// SplitMix64 (Steele, Lea, Flood 2014): a tiny PRNG with identical output everywhere.
+  std::uint64_t next_random() noexcept {
+    std::uint64_t z = (rng_state_ += 0x9E3779B97F4A7C15ull);
+    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
+    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+    return z ^ (z >> 31);
+  }
+
+  /// Uniform in [0, bound) by rejection (no modulo bias). bound >= 1.
+  std::uint64_t uniform_below(std::uint64_t bound) noexcept {
+    const std::uint64_t threshold = (0 - bound) % bound;  // 2^64 mod bound
+    for (;;) {
+      const std::uint64_t r = next_random();
+      if (r >= threshold) return r % bound;
+    }
+  }
+
+  /// i = argmax belief, ties per options_.tie_rule. O(N).
+  void select_ml() noexcept {
+    const std::uint32_t n = catalog_->num_abstractions;
+    double best = belief_[0];
+    for (std::uint32_t i = 1; i < n; ++i)
+      if (belief_[i] > best) best = belief_[i];
+    const double floor = best - options_.tie_tolerance;
+    std::uint32_t tied = 0;
+    std::uint32_t lowest = kNone_;
+    bool current_tied = false;
+    for (std::uint32_t i = 0; i < n; ++i) {
+      if (belief_[i] < floor) continue;
+      if (lowest == kNone_) lowest = i;
+      if (i == ml_) current_tied = true;
+      ++tied;
+    }
+    if (tied <= 1 || options_.tie_rule == TieRule::kKeep) {
+      ml_ = (tied > 1 && current_tied) ? ml_ : lowest;
+      return;
+    }
+    std::uint64_t pick = uniform_below(tied);
+    for (std::uint32_t i = 0; i < n; ++i) {
+      if (belief_[i] < floor) continue;
+      if (pick == 0) {
+        ml_ = i;
+        return;
+      }
+      --pick;
+    }
+  }
+
+  const CatalogView* catalog_;
+  FilterOptions options_;
+  FilterError error_ = FilterError::kNone;
+  double* belief_ = nullptr;         // [N] current belief (marginal in robust mode)
+  double* scratch_ = nullptr;        // [N] predicted belief (paper mode)
+  double* joint_ = nullptr;          // [N*S] robust joint belief, row i = abstraction
+  double* joint_scratch_ = nullptr;  // [N*S] robust scratch
+  std::uint64_t rng_state_ = 0;
+  std::uint32_t ml_ = kNone_;
+  std::uint32_t state_ = 0;
+  bool has_state_ = false;
+};
+
+}  // namespace oasis::rt
