@@ -1,0 +1,190 @@
+// Benchmark of AttentionFilter::step (runtime/include/oasis/rt/attention_filter.hpp).
+//
+//   BM_PaperStep/N     paper mode on N synthetic abstractions over 64 states (N = 2, 64):
+//                      dense switching matrix (stay 0.8, the rest spread evenly), block
+//                      rewards chosen so that most observations keep several abstractions alive.
+//   BM_RobustDiscrete  robust joint filter on the paper's discrete example (3 states, 2
+//                      abstractions, p_correct 0.7).
+// Reports ns per step (Google Benchmark's time per iteration, one step per iteration).
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include <benchmark/benchmark.h>
+
+#include "oasis/rt/attention_filter.hpp"
+#include "oasis/rt/catalog_view.hpp"
+
+namespace {
+
+using namespace oasis::rt;
+
+// Owns the arrays behind a synthetic CatalogView.
+struct SyntheticCatalog {
+  std::uint32_t n;
+  std::uint32_t states;
+  std::vector<double> switching;
+  std::vector<double> prior;
+  std::vector<std::vector<std::uint32_t>> block_of;
+  std::vector<std::vector<double>> block_reward;
+  std::vector<std::vector<std::uint32_t>> begin;
+  std::vector<std::vector<std::uint32_t>> target;
+  std::vector<std::vector<double>> probability;
+  std::vector<std::vector<double>> reward;
+  std::vector<std::vector<std::uint32_t>> policy;
+  std::vector<std::vector<double>> value;
+  std::vector<AbstractionView> abstractions;
+  const char* action_names[2] = {"a", "b"};
+  CatalogView view;
+
+  SyntheticCatalog(std::uint32_t num_abstractions, std::uint32_t num_states)
+      : n(num_abstractions), states(num_states) {
+    switching.assign(static_cast<std::size_t>(n) * n, n > 1 ? 0.2 / (n - 1) : 0.0);
+    for (std::uint32_t i = 0; i < n; ++i)
+      switching[i * n + i] = n > 1 ? 0.8 : 1.0;
+    prior.assign(n, 1.0 / n);
+    // Abstraction i: two blocks, block 1 = {state i mod S} with reward 1, the rest reward 0;
+    // each block moves to itself under both actions.
+    for (std::uint32_t i = 0; i < n; ++i) {
+      std::vector<std::uint32_t> of(states, 0);
+      of[i % states] = 1;
+      block_of.push_back(of);
+      block_reward.push_back({0.0, 1.0});
+      begin.push_back({0, 1, 2, 3, 4});
+      target.push_back({0, 0, 1, 1});
+      probability.push_back({1.0, 1.0, 1.0, 1.0});
+      reward.push_back({0.0, 0.0, 1.0, 1.0});
+      policy.push_back({0, 1});
+      value.push_back({0.0, 10.0});
+    }
+    abstractions.resize(n);
+    for (std::uint32_t i = 0; i < n; ++i) {
+      AbstractionView& a = abstractions[i];
+      a.context = "synthetic";
+      a.num_blocks = 2;
+      a.block_of = block_of[i].data();
+      a.block_reward = block_reward[i].data();
+      a.quotient = {begin[i].data(), target[i].data(), probability[i].data(), 4};
+      a.reward = reward[i].data();
+      a.policy = policy[i].data();
+      a.value = value[i].data();
+    }
+    view.name = "synthetic";
+    view.compiler_version = "bench";
+    view.num_states = states;
+    view.num_actions = 2;
+    view.action_names = action_names;
+    view.num_abstractions = n;
+    view.switching = switching.data();
+    view.prior = prior.data();
+    view.abstractions = abstractions.data();
+  }
+};
+
+void BM_PaperStep(benchmark::State& state) {
+  const auto n = static_cast<std::uint32_t>(state.range(0));
+  SyntheticCatalog catalog(n, 64);
+  std::string why;
+  if (!validate(catalog.view, &why)) {
+    state.SkipWithError(why.c_str());
+    return;
+  }
+  FilterOptions options;
+  options.zero_likelihood_guard = true;
+  std::vector<double> workspace(AttentionFilter::workspace_size(catalog.view, options));
+  AttentionFilter filter(catalog.view, options, workspace.data(), workspace.size());
+  filter.start(0);
+  std::uint32_t s = 0;
+  std::uint64_t k = 0;
+  for (auto _ : state) {
+    // Reward 0 at a state no abstraction rewards, now and then reward 1 at state s.
+    const double r = (k % 7 == 0) ? 1.0 : 0.0;
+    benchmark::DoNotOptimize(filter.step(s, r, static_cast<std::uint32_t>(k & 1)));
+    benchmark::DoNotOptimize(filter.action());
+    s = (s + 13) % 64;
+    ++k;
+  }
+  state.SetItemsProcessed(state.iterations());
+}
+BENCHMARK(BM_PaperStep)->Arg(2)->Arg(64);
+
+void BM_RobustDiscrete(benchmark::State& state) {
+  static const char* action_names[2] = {"L", "R"};
+  static const double switching[4] = {0.8, 0.2, 0.2, 0.8};
+  static const double prior[2] = {0.5, 0.5};
+  static const std::uint32_t a0_block_of[3] = {0, 0, 1};
+  static const std::uint32_t a1_block_of[3] = {0, 1, 1};
+  static const double a0_block_reward[2] = {0.0, 1.0};
+  static const double a1_block_reward[2] = {1.0, 0.0};
+  static const std::uint32_t a0_begin[5] = {0, 1, 3, 4, 5};
+  static const std::uint32_t a0_target[5] = {0, 0, 1, 0, 1};
+  static const double a0_prob[5] = {1.0, 0.5, 0.5, 1.0, 1.0};
+  static const std::uint32_t a1_begin[5] = {0, 1, 2, 4, 5};
+  static const std::uint32_t a1_target[5] = {0, 1, 0, 1, 1};
+  static const double a1_prob[5] = {1.0, 1.0, 0.5, 0.5, 1.0};
+  static const double a0_reward[4] = {0.0, 0.0, 1.0, 1.0};
+  static const double a1_reward[4] = {1.0, 1.0, 0.0, 0.0};
+  static const std::uint32_t a0_policy[2] = {1, 1};
+  static const std::uint32_t a1_policy[2] = {0, 0};
+  static const double value[2] = {4.5 / 0.55, 10.0};
+  static const std::uint32_t st_begin[7] = {0, 1, 3, 5, 7, 9, 10};
+  static const std::uint32_t st_target[10] = {0, 1, 2, 0, 1, 1, 2, 0, 1, 2};
+  static const double st_prob[10] = {1.0, 0.5, 0.5, 0.5, 0.5, 0.5, 0.5, 0.5, 0.5, 1.0};
+  AbstractionView abstractions[2];
+  abstractions[0] = {"object_at_s3",
+                     2,
+                     a0_block_of,
+                     a0_block_reward,
+                     {a0_begin, a0_target, a0_prob, 5},
+                     a0_reward,
+                     a0_policy,
+                     value,
+                     {st_begin, st_target, st_prob, 10}};
+  abstractions[1] = {"object_at_s1",
+                     2,
+                     a1_block_of,
+                     a1_block_reward,
+                     {a1_begin, a1_target, a1_prob, 5},
+                     a1_reward,
+                     a1_policy,
+                     value,
+                     {st_begin, st_target, st_prob, 10}};
+  CatalogView view;
+  view.name = "discrete_tracking";
+  view.compiler_version = "bench";
+  view.num_states = 3;
+  view.num_actions = 2;
+  view.action_names = action_names;
+  view.num_abstractions = 2;
+  view.switching = switching;
+  view.prior = prior;
+  view.abstractions = abstractions;
+  view.observation.kind = ObservationKind::kSymmetric;
+  view.observation.p_correct = 0.7;
+  std::string why;
+  if (!validate(view, &why)) {
+    state.SkipWithError(why.c_str());
+    return;
+  }
+  FilterOptions options;
+  options.mode = FilterMode::kRobust;
+  FixedWorkspace<2, 3> workspace;
+  AttentionFilter filter(view, options, workspace);
+  filter.start(1);
+  // A fixed cycle of plausible (action, observed state, reward) triples.
+  static const std::uint32_t cycle_action[6] = {1, 1, 1, 0, 0, 0};
+  static const std::uint32_t cycle_state[6] = {1, 2, 2, 1, 0, 0};
+  static const double cycle_reward[6] = {0.0, 1.0, 1.0, 0.0, 0.0, 0.0};
+  std::uint32_t k = 0;
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(filter.step(cycle_state[k], cycle_reward[k], cycle_action[k]));
+    benchmark::DoNotOptimize(filter.action());
+    k = (k + 1) % 6;
+  }
+  state.SetItemsProcessed(state.iterations());
+}
+BENCHMARK(BM_RobustDiscrete);
+
+}  // namespace
+
+BENCHMARK_MAIN();
