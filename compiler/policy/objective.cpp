@@ -1,6 +1,5 @@
 #include "policy/objective.hpp"
 
-#include <cmath>
 #include <stdexcept>
 #include <string>
 

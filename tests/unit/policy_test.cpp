@@ -3,11 +3,13 @@
 // solving the quotient gives the full model's optimal values, and its policy, lifted back to
 // the states, is optimal on the full model (random models, tests/support/random_mdp.hpp).
 
+#include <array>
 #include <cmath>
 #include <cstdint>
+#include <optional>
 #include <stdexcept>
 #include <string>
-#include <tuple>
+#include <utility>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -65,7 +67,7 @@ ExplicitModel hand_model(std::uint32_t num_states, std::uint32_t num_actions,
   model.contexts.push_back(
       {"c", std::make_shared<const model::TransitionMatrix>(builder.finish(model.values)),
        std::move(rewards)});
-  model.objective.discount = discount;
+  model.objective.discount = std::move(discount);
   return model;
 }
 
@@ -243,7 +245,7 @@ double quotient_value_gap(const ExplicitModel& model, std::size_t context,
 
 // The discounts vary with the seed so that slow (0.95) and fast (0.5) convergence both occur.
 PolicyOptions discounted_options(std::uint64_t seed) {
-  static const std::vector<double> kDiscounts{0.5, 0.9, 0.95};
+  constexpr std::array<double, 3> kDiscounts{0.5, 0.9, 0.95};
   PolicyOptions options;
   options.discount = kDiscounts[seed % kDiscounts.size()];
   return options;
