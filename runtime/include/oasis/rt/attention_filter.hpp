@@ -176,6 +176,10 @@ class AttentionFilter {
                   FixedWorkspace<MaxAbstractions, MaxStates>& workspace) noexcept
       : AttentionFilter(catalog, options, workspace.buffer(), workspace.size()) {}
 
+  /// Not copyable: a copy would share the workspace with the original.
+  AttentionFilter(const AttentionFilter&) = delete;
+  AttentionFilter& operator=(const AttentionFilter&) = delete;
+
   bool ok() const noexcept { return error_ == FilterError::kNone; }
   FilterError error() const noexcept { return error_; }
 
@@ -241,6 +245,7 @@ class AttentionFilter {
   /// pi^i(z^i(s)) for the ML abstraction i and the current state s (the last observed state in
   /// paper mode; the most likely true state under i in robust mode). kNoAction before the
   /// first start()/step(), if construction failed, or if the block has no enabled action.
+  /// O(1) in paper mode, O(S) in robust mode (finds the most likely state).
   std::uint32_t action() const noexcept {
     if (!ok() || !has_state_) return kNoAction;
     return catalog_->abstractions[ml_].policy[abstract_state()];
