@@ -279,6 +279,55 @@ TEST(RuntimeCatalog, RejectsNaN) {
   }
 }
 
+// Corrupt one array element at a time (the arrays keep the lengths the view states, as a
+// loader guarantees) and check that validate() never reads out of bounds (ASan) and that
+// whatever it accepts runs through the filter without leaving a distribution.
+TEST(RuntimeCatalog, CorruptedArraysAreRejectedOrHarmless) {
+  const std::uint32_t index_pool[] = {0, 1, 2, 3, 4, 5, 7, 10, 11, 0xFFFFFFFFu};
+  const double value_pool[] = {std::nan(""), -1.0, 0.0, 0.25,
+                               0.5,          1.0,  2.0, std::numeric_limits<double>::infinity()};
+  std::uint64_t rng = 12345;
+  auto next = [&rng] {
+    rng = rng * 6364136223846793005ull + 1442695040888963407ull;
+    return static_cast<std::uint32_t>(rng >> 33);
+  };
+  int accepted = 0;
+  for (int trial = 0; trial < 3000; ++trial) {
+    DiscreteExample ex(trial % 2 == 0);
+    std::uint32_t* ints[] = {ex.a0_block_of, ex.a1_block_of, ex.a0_begin,  ex.a1_begin,
+                             ex.a0_target,   ex.a1_target,   ex.a0_policy, ex.a1_policy,
+                             ex.st_begin,    ex.st_target};
+    const std::uint32_t int_sizes[] = {3, 3, 5, 5, 5, 5, 2, 2, 7, 10};
+    double* doubles[] = {ex.switching, ex.prior,           ex.a0_prob,
+                         ex.a1_prob,   ex.a0_block_reward, ex.st_prob};
+    const std::uint32_t double_sizes[] = {4, 2, 5, 5, 2, 10};
+    for (int k = 0; k < 1 + trial % 3; ++k) {
+      if (next() % 2 == 0) {
+        const std::uint32_t which = next() % 10;
+        ints[which][next() % int_sizes[which]] = index_pool[next() % 10];
+      } else {
+        const std::uint32_t which = next() % 6;
+        doubles[which][next() % double_sizes[which]] = value_pool[next() % 8];
+      }
+    }
+    if (!validate(ex.view)) continue;
+    ++accepted;
+    for (FilterMode mode : {FilterMode::kPaper, FilterMode::kRobust}) {
+      FilterOptions options;
+      options.mode = mode;
+      FixedWorkspace<2, 3> ws;
+      AttentionFilter f(ex.view, options, ws);
+      if (!f.ok()) continue;
+      f.start(next() % 3);
+      for (int s = 0; s < 10; ++s) {
+        f.step(next() % 3, (next() % 3) * 0.5, f.action() == kNoAction ? 0 : f.action());
+        ASSERT_TRUE(belief_is_distribution(f, 2));
+      }
+    }
+  }
+  EXPECT_GT(accepted, 0);  // some mutations are harmless (e.g. a value rewritten to itself)
+}
+
 // ---------------------------------------------------------------- paper mode
 
 TEST(RuntimeFilter, StartsAtPriorWithLowestTiedIndex) {
