@@ -65,8 +65,8 @@ struct Expression {
 // Raised when evaluating over a particular state fails (overflow, division by zero, a
 // non-integer where an integer is needed). The caller adds which state it was.
 struct EvaluationError : std::runtime_error {
-  EvaluationError(SourceRange where_, const std::string& message)
-      : std::runtime_error(message), where(where_) {}
+  EvaluationError(SourceRange location, const std::string& message)
+      : std::runtime_error(message), where(location) {}
   SourceRange where;
 };
 

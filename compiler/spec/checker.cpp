@@ -704,7 +704,8 @@ class Checker {
     if (base != nullptr) table = *base;
     for (const auto& [key, command] : body.explicit_transitions) {
       auto& commands = table.by_action[key.second];
-      std::erase_if(commands, [&](const Command& c) { return c.guard.slot == key.first; });
+      const std::uint32_t state = key.first;  // lambdas cannot capture structured bindings in C++17
+      std::erase_if(commands, [state](const Command& c) { return c.guard.slot == state; });
       commands.push_back(command);
     }
     for (std::size_t a = 0; a < ir_.actions.size(); ++a) {
