@@ -1,0 +1,80 @@
+#pragma once
+// A catalog in memory: for every context of a model, its coarsest bisimulation quotient and
+// the policy solved on it, in the runtime's schema (runtime/include/oasis/rt/catalog_view.hpp).
+// The data is owned here and read through rt::CatalogView, the same view the generated
+// tables and the binary file give, so the emitters serialise exactly what a program built
+// on this runs.
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "model/explicit_model.hpp"
+#include "oasis/rt/catalog_view.hpp"
+#include "policy/objective.hpp"
+
+namespace oasis::codegen {
+
+struct CsrData {
+  std::vector<std::uint32_t> choice_begin;
+  std::vector<std::uint32_t> target;
+  std::vector<double> probability;
+
+  [[nodiscard]] rt::TransitionsCsr view() const;
+};
+
+struct AbstractionData {
+  std::string context;
+  std::uint32_t num_blocks = 0;
+  std::vector<std::uint32_t> block_of;  // [num_states]
+  std::vector<double> block_reward;     // [num_blocks] R(s) of the block's states
+  CsrData quotient;                     // over blocks
+  std::vector<double> reward;           // [num_blocks * num_actions] R^Z(z, a)
+  std::vector<std::uint32_t> policy;    // [num_blocks] action, or rt::kNoAction
+  std::vector<double> value;            // [num_blocks]
+  CsrData state_transitions;            // over states; only with the robust section
+};
+
+struct CatalogData {
+  std::string name;
+  std::uint64_t spec_hash = 0;
+  std::string compiler_version;
+  std::uint32_t num_states = 0;
+  std::uint32_t num_actions = 0;
+  std::vector<std::string> action_names;
+  std::vector<std::string> state_names;
+  std::vector<double> switching;  // [N * N] row-major p(phi_t = j | phi_{t-1} = i)
+  std::vector<double> prior;      // [N]
+  std::vector<AbstractionData> abstractions;
+  rt::ObservationKind observation = rt::ObservationKind::kNone;
+  double p_correct = 1.0;
+
+  // A view into this object: valid until it is changed, moved or destroyed. Not const: the
+  // view's name tables are kept here.
+  rt::CatalogView view();
+
+ private:
+  std::vector<const char*> action_name_pointers_;
+  std::vector<const char*> state_name_pointers_;
+  std::vector<rt::AbstractionView> abstraction_views_;
+};
+
+struct BuildOptions {
+  // Add the robust filter's section: the full-state transitions of every context and a
+  // symmetric observation model that reports the true state with this probability.
+  std::optional<double> p_correct;
+  policy::PolicyOptions policy;
+};
+
+// Quotients every context, solves its policy and fills the catalog. nullopt with `error`
+// set when the model cannot be a catalog: no states, or states of one block with different
+// state rewards R(s) (their R(s, a) agree only through action rewards), which the detection
+// model cannot represent.
+std::optional<CatalogData> build_catalog(const model::ExplicitModel& model, std::uint64_t spec_hash,
+                                         const BuildOptions& options, std::string& error);
+
+// FNV-1a over the spec's bytes: the catalog remembers which spec it was compiled from.
+std::uint64_t spec_hash(std::string_view text);
+
+}  // namespace oasis::codegen

@@ -1,0 +1,109 @@
+// The in-memory catalog: what the compiler hands the runtime. For the paper's example it
+// must pass the runtime's own validation, carry the two abstractions and their policies, and
+// drive the attention filter to the context that explains the rewards.
+
+#include "codegen/catalog_data.hpp"
+
+#include <gtest/gtest.h>
+
+#include "../support/spec_models.hpp"
+#include "oasis/rt/attention_filter.hpp"
+#include "oasis/rt/catalog_view.hpp"
+
+namespace oasis {
+namespace {
+
+model::ExplicitModel discrete_tracking() {
+  return test::explore_spec_file(std::string(OASIS_SOURCE_DIR) + "/specs/discrete_tracking.oasis");
+}
+
+codegen::CatalogData build(const model::ExplicitModel& model, codegen::BuildOptions options = {}) {
+  std::string error;
+  auto catalog = codegen::build_catalog(model, 42, options, error);
+  EXPECT_TRUE(catalog) << error;
+  return catalog ? std::move(*catalog) : codegen::CatalogData{};
+}
+
+TEST(CatalogData, PaperExampleIsAValidCatalog) {
+  codegen::CatalogData catalog = build(discrete_tracking());
+  const rt::CatalogView view = catalog.view();
+  std::string why;
+  ASSERT_TRUE(rt::validate(view, &why)) << why;
+  EXPECT_EQ(view.num_states, 3U);
+  EXPECT_EQ(view.num_actions, 2U);
+  ASSERT_EQ(view.num_abstractions, 2U);
+  EXPECT_EQ(view.spec_hash, 42U);
+  EXPECT_STREQ(view.abstractions[0].context, "object_at_s3");
+  // object_at_s3: {s1, s2} -> 0, {s3} -> 1; rewarded in block 1.
+  const rt::AbstractionView& at_s3 = view.abstractions[0];
+  EXPECT_EQ(at_s3.num_blocks, 2U);
+  EXPECT_EQ(std::vector<std::uint32_t>(at_s3.block_of, at_s3.block_of + 3),
+            (std::vector<std::uint32_t>{0, 0, 1}));
+  EXPECT_EQ(at_s3.block_reward[0], 0.0);
+  EXPECT_EQ(at_s3.block_reward[1], 1.0);
+  // The policy moves right towards s3 and stays there (R at s3 keeps it: 10 > 8.36).
+  EXPECT_EQ(at_s3.policy[0], 1U);
+  EXPECT_EQ(at_s3.policy[1], 1U);
+  // object_at_s1: {s1} -> 0, {s2, s3} -> 1; the policy moves left.
+  const rt::AbstractionView& at_s1 = view.abstractions[1];
+  EXPECT_EQ(std::vector<std::uint32_t>(at_s1.block_of, at_s1.block_of + 3),
+            (std::vector<std::uint32_t>{0, 1, 1}));
+  EXPECT_EQ(at_s1.policy[0], 0U);
+  EXPECT_EQ(at_s1.policy[1], 0U);
+  EXPECT_DOUBLE_EQ(view.switching[0], 0.8);
+  EXPECT_DOUBLE_EQ(view.prior[1], 0.5);
+}
+
+TEST(CatalogData, RobustSectionValidates) {
+  codegen::BuildOptions options;
+  options.p_correct = 0.3;
+  codegen::CatalogData catalog = build(discrete_tracking(), options);
+  const rt::CatalogView view = catalog.view();
+  std::string why;
+  ASSERT_TRUE(rt::validate(view, &why)) << why;
+  EXPECT_TRUE(view.has_robust_section());
+  EXPECT_EQ(view.abstractions[0].state_transitions.num_edges, 10U);
+}
+
+TEST(CatalogData, FilterFollowsTheRewards) {
+  codegen::CatalogData catalog = build(discrete_tracking());
+  const rt::CatalogView view = catalog.view();
+  rt::FixedWorkspace<2> workspace;
+  rt::AttentionFilter filter(view, {}, workspace);
+  ASSERT_TRUE(filter.ok());
+  filter.start(1);  // s2
+  // At s1 with reward 1: only "object at s1" explains it.
+  EXPECT_EQ(filter.step(0, 1.0, 0), rt::StepStatus::kOk);
+  EXPECT_EQ(filter.ml_abstraction(), 1U);
+  EXPECT_EQ(filter.action(), 0U);  // go left, towards the object
+  // At s3 with reward 1: now only "object at s3" does.
+  filter.step(2, 1.0, 1);
+  EXPECT_EQ(filter.ml_abstraction(), 0U);
+  EXPECT_EQ(filter.action(), 1U);
+}
+
+TEST(CatalogData, BlockWithMixedStateRewardsIsRefused) {
+  // s1 and s2 are bisimilar through R(s, a) (1 + 0 = 0 + 1) but their state rewards differ.
+  const model::ExplicitModel model = test::explore_spec_text(R"(
+mdp m {
+  states s1, s2;
+  actions a;
+  s1, a -> s1;
+  s2, a -> s2;
+  reward s1 : 1;
+  reward [a] s2 : 1;
+}
+)");
+  std::string error;
+  EXPECT_FALSE(codegen::build_catalog(model, 0, {}, error));
+  EXPECT_NE(error.find("one reward R(s) per abstract state"), std::string::npos) << error;
+}
+
+TEST(CatalogData, SpecHashIsStableAndSensitive) {
+  EXPECT_EQ(codegen::spec_hash("mdp m {}"), codegen::spec_hash("mdp m {}"));
+  EXPECT_NE(codegen::spec_hash("mdp m {}"), codegen::spec_hash("mdp n {}"));
+  EXPECT_EQ(codegen::spec_hash(""), 0xcbf29ce484222325ULL);  // FNV-1a offset basis
+}
+
+}  // namespace
+}  // namespace oasis
