@@ -1,0 +1,159 @@
+// oasis-sim: experiments of the paper on the compiled catalog and the runtime filter.
+//   oasis-sim table1 [--spec FILE] [--seeds N] [--steps N] [--sigma S] [--noise R...]
+//                    [--filters F...] [--json PATH] [--csv-dir DIR] [--plot DIR]
+
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <CLI/CLI.hpp>
+
+#include "codegen/catalog_data.hpp"
+#include "model/explorer.hpp"
+#include "sim/report.hpp"
+#include "sim/table1.hpp"
+#include "spec/frontend.hpp"
+
+namespace {
+
+using namespace oasis;
+
+struct Table1Arguments {
+  std::string spec = OASIS_SIM_DEFAULT_SPEC;
+  std::uint32_t seeds = 5;
+  std::uint32_t steps = 500;
+  double sigma = 0.7;
+  std::vector<std::string> noises{"perceived", "process", "observed"};
+  std::vector<std::string> filters{"paper", "keep", "guard", "soft", "robust"};
+  std::string json;
+  std::string csv_dir;
+  std::string plot_dir;
+};
+
+std::optional<std::string> read_file(const std::string& path) {
+  std::ifstream file(path, std::ios::binary);
+  if (!file) return std::nullopt;
+  std::ostringstream text;
+  text << file.rdbuf();
+  return text.str();
+}
+
+int run_table1_command(const Table1Arguments& arguments) {
+  sim::Table1Options options;
+  options.seeds = arguments.seeds;
+  options.steps = arguments.steps;
+  options.sigma = arguments.sigma;
+  options.noises.clear();
+  for (const std::string& name : arguments.noises) {
+    const auto noise = sim::parse_noise(name);
+    if (!noise || *noise == sim::NoiseReading::kNone) {
+      std::cerr << "oasis-sim: unknown noise reading '" << name
+                << "' (perceived, process, observed)\n";
+      return 2;
+    }
+    options.noises.push_back(*noise);
+  }
+  options.filters.clear();
+  for (const std::string& name : arguments.filters) {
+    const auto filter = sim::parse_filter(name);
+    if (!filter) {
+      std::cerr << "oasis-sim: unknown filter '" << name
+                << "' (paper, keep, guard, soft, robust)\n";
+      return 2;
+    }
+    options.filters.push_back(*filter);
+  }
+
+  const std::optional<std::string> text = read_file(arguments.spec);
+  if (!text) {
+    std::cerr << "oasis-sim: cannot read " << arguments.spec << "\n";
+    return 1;
+  }
+  SourceManager sources;
+  DiagnosticEngine diagnostics(sources, std::cerr);
+  const auto ir = spec::load_spec(arguments.spec, sources, diagnostics);
+  if (!ir) return 1;
+  auto model = model::explore(*ir, diagnostics);
+  if (!model) return 1;
+  std::vector<std::string> context_names;
+  for (const auto& context : model->contexts)
+    context_names.push_back(context.name);
+  std::vector<std::string> state_names;
+  for (std::uint32_t s = 0; s < model->num_states(); ++s)
+    state_names.push_back(model->states.name(s));
+  const sim::Table1Experiment experiment(std::move(*model), codegen::spec_hash(*text));
+
+  namespace fs = std::filesystem;
+  std::string error;
+  for (const std::string& dir : {arguments.csv_dir, arguments.plot_dir}) {
+    std::error_code code;
+    if (!dir.empty() && !fs::create_directories(dir, code) && code) {
+      std::cerr << "oasis-sim: cannot create " << dir << ": " << code.message() << "\n";
+      return 1;
+    }
+  }
+  bool sink_failed = false;
+  const sim::TraceSink sink = [&](const sim::TrialSpec& spec, const sim::Trace& trace) {
+    if (sink_failed) return;
+    if (!arguments.csv_dir.empty() &&
+        !sim::write_text(fs::path(arguments.csv_dir) / (sim::trial_stem(spec) + ".csv"),
+                         sim::trace_csv(trace, context_names, state_names), error))
+      sink_failed = true;
+    const bool plotted = spec.pattern == sim::Pattern::kStep ||
+                         spec.pattern == sim::Pattern::kPeriodic ||
+                         spec.pattern == sim::Pattern::kUniformRandom;
+    if (!arguments.plot_dir.empty() && plotted && spec.model.id == "i" &&
+        !sim::write_text(fs::path(arguments.plot_dir) / (sim::trial_stem(spec) + ".svg"),
+                         sim::trace_svg(spec, trace, context_names), error))
+      sink_failed = true;
+  };
+  const auto rows = sim::run_table1(experiment, options, error, sink);
+  if (!rows || sink_failed) {
+    std::cerr << "oasis-sim: " << error << "\n";
+    return 1;
+  }
+  sim::print_table(std::cout, *rows, options);
+  if (!arguments.json.empty() &&
+      !sim::write_text(arguments.json, sim::rows_json(*rows).dump(2) + "\n", error)) {
+    std::cerr << "oasis-sim: " << error << "\n";
+    return 1;
+  }
+  return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"oasis-sim: the paper's experiments on the compiled catalog and the runtime filter"};
+  app.require_subcommand(1);
+  Table1Arguments table1;
+  CLI::App* command = app.add_subcommand(
+      "table1", "Table I: the discrete-space tracking example (accuracy, average and max lag)");
+  command->add_option("--spec", table1.spec, "the spec to load")->capture_default_str();
+  command->add_option("--seeds", table1.seeds, "seeds per row (0 .. N-1)")
+      ->capture_default_str()
+      ->check(CLI::PositiveNumber);
+  command->add_option("--steps", table1.steps, "steps per trial")
+      ->capture_default_str()
+      ->check(CLI::PositiveNumber);
+  command->add_option("--sigma", table1.sigma, "state-noise probability of the noisy patterns")
+      ->capture_default_str()
+      ->check(CLI::Range(0.0, 1.0));
+  command
+      ->add_option("--noise", table1.noises,
+                   "noise readings for the noisy patterns: perceived, process, observed")
+      ->capture_default_str();
+  command->add_option("--filters", table1.filters, "filters: paper, keep, guard, soft, robust")
+      ->capture_default_str();
+  command->add_option("--json", table1.json, "write the rows as JSON to this file");
+  command->add_option("--csv-dir", table1.csv_dir, "write per-trial CSV traces here");
+  command->add_option("--plot", table1.plot_dir,
+                      "write SVG plots (model (i), step/periodic/uniform_random, first 150 steps)");
+  int status = 0;
+  command->callback([&] { status = run_table1_command(table1); });
+  CLI11_PARSE(app, argc, argv);
+  return status;
+}

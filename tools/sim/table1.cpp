@@ -1,0 +1,230 @@
+#include "sim/table1.hpp"
+
+#include <utility>
+
+#include "oasis/rt/attention_filter.hpp"
+
+namespace oasis::sim {
+namespace {
+
+rt::FilterOptions filter_options(FilterKind filter, std::uint64_t seed) {
+  rt::FilterOptions options;
+  options.tie_rule = rt::TieRule::kRandom;
+  options.seed = seed;
+  switch (filter) {
+    case FilterKind::kPaper:
+      break;
+    case FilterKind::kKeep:
+      options.tie_rule = rt::TieRule::kKeep;
+      break;
+    case FilterKind::kGuard:
+      options.zero_likelihood_guard = true;
+      break;
+    case FilterKind::kSoft:
+      options.detection_epsilon = 0.05;
+      break;
+    case FilterKind::kRobust:
+      options.mode = rt::FilterMode::kRobust;
+      break;
+  }
+  return options;
+}
+
+// R^c(s) for every state s under context c.
+std::vector<double> state_rewards(const rt::CatalogView& catalog, std::uint32_t context) {
+  const rt::AbstractionView& abstraction = catalog.abstractions[context];
+  std::vector<double> rewards(catalog.num_states);
+  for (std::uint32_t s = 0; s < catalog.num_states; ++s)
+    rewards[s] = abstraction.block_reward[abstraction.block_of[s]];
+  return rewards;
+}
+
+std::uint32_t random_enabled_action(const rt::TransitionsCsr& csr, std::uint32_t state,
+                                    std::uint32_t num_actions, Rng& rng) {
+  std::uint32_t enabled = 0;
+  for (std::uint32_t a = 0; a < num_actions; ++a) {
+    const std::size_t row = static_cast<std::size_t>(state) * num_actions + a;
+    if (csr.choice_begin[row + 1] > csr.choice_begin[row]) ++enabled;
+  }
+  if (enabled == 0) return rt::kNoAction;
+  std::uint32_t pick = rng.below(enabled);
+  for (std::uint32_t a = 0; a < num_actions; ++a) {
+    const std::size_t row = static_cast<std::size_t>(state) * num_actions + a;
+    if (csr.choice_begin[row + 1] == csr.choice_begin[row]) continue;
+    if (pick == 0) return a;
+    --pick;
+  }
+  return rt::kNoAction;
+}
+
+std::uint32_t sample_successor(const rt::TransitionsCsr& csr, std::uint32_t state,
+                               std::uint32_t action, std::uint32_t num_actions, Rng& rng) {
+  const std::size_t row = static_cast<std::size_t>(state) * num_actions + action;
+  const std::uint32_t begin = csr.choice_begin[row];
+  const std::uint32_t end = csr.choice_begin[row + 1];
+  double u = rng.uniform();
+  for (std::uint32_t e = begin; e < end; ++e) {
+    u -= csr.probability[e];
+    if (u < 0.0) return csr.target[e];
+  }
+  return csr.target[end - 1];  // rounding: the last edge
+}
+
+// Tags that make the environment streams independent of each other.
+enum StreamTag : std::uint64_t { kPatternStream = 1, kDynamicsStream = 2, kNoiseStream = 3 };
+
+std::uint64_t environment_seed(const TrialSpec& spec, StreamTag stream) {
+  const std::uint64_t tag = (static_cast<std::uint64_t>(spec.pattern) << 16) ^
+                            (static_cast<std::uint64_t>(spec.noise) << 8) ^ stream;
+  return derive_seed(spec.seed, tag);
+}
+
+}  // namespace
+
+std::string_view filter_name(FilterKind filter) {
+  switch (filter) {
+    case FilterKind::kPaper:
+      return "paper";
+    case FilterKind::kKeep:
+      return "keep";
+    case FilterKind::kGuard:
+      return "guard";
+    case FilterKind::kSoft:
+      return "soft";
+    case FilterKind::kRobust:
+      return "robust";
+  }
+  return "?";
+}
+
+std::optional<FilterKind> parse_filter(std::string_view name) {
+  for (FilterKind filter : kAllFilters)
+    if (filter_name(filter) == name) return filter;
+  return std::nullopt;
+}
+
+const std::vector<TransitionModel>& table1_models() {
+  static const std::vector<TransitionModel> models{{"i", 0.8}, {"ii", 0.5}};
+  return models;
+}
+
+Table1Experiment::Table1Experiment(model::ExplicitModel model, std::uint64_t spec_hash)
+    : model_(std::move(model)), spec_hash_(spec_hash) {}
+
+std::optional<codegen::CatalogData> Table1Experiment::catalog_for(const TrialSpec& spec,
+                                                                  std::string& error) const {
+  codegen::BuildOptions options;
+  options.p_correct = spec.noise == NoiseReading::kNone ? 1.0 : 1.0 - spec.sigma;
+  std::optional<codegen::CatalogData> catalog =
+      codegen::build_catalog(model_, spec_hash_, options, error);
+  if (!catalog) return std::nullopt;
+  const std::size_t n = catalog->abstractions.size();
+  if (n < 2) {
+    error = "the model has fewer than two contexts";
+    return std::nullopt;
+  }
+  catalog->switching.assign(n * n, (1.0 - spec.model.p_stay) / static_cast<double>(n - 1));
+  for (std::size_t i = 0; i < n; ++i)
+    catalog->switching[i * n + i] = spec.model.p_stay;
+  return catalog;
+}
+
+std::optional<Trace> Table1Experiment::run_trial(const TrialSpec& spec, std::string& error) const {
+  std::optional<codegen::CatalogData> data = catalog_for(spec, error);
+  if (!data) return std::nullopt;
+  const rt::CatalogView catalog = data->view();
+  std::string why;
+  if (!rt::validate(catalog, &why)) {
+    error = "catalog does not validate: " + why;
+    return std::nullopt;
+  }
+  const rt::FilterOptions options = filter_options(spec.filter, spec.seed);
+  std::vector<double> workspace(rt::AttentionFilter::workspace_size(catalog, options));
+  rt::AttentionFilter filter(catalog, options, workspace.data(), workspace.size());
+  if (!filter.ok()) {
+    error = "the filter refused the catalog (error " +
+            std::to_string(static_cast<std::uint32_t>(filter.error())) + ")";
+    return std::nullopt;
+  }
+
+  const std::uint32_t n = catalog.num_abstractions;
+  const std::uint32_t num_actions = catalog.num_actions;
+  std::vector<std::vector<double>> rewards;
+  for (std::uint32_t c = 0; c < n; ++c)
+    rewards.push_back(state_rewards(catalog, c));
+
+  Rng pattern_rng(environment_seed(spec, kPatternStream));
+  Rng dynamics_rng(environment_seed(spec, kDynamicsStream));
+  Rng noise_rng(environment_seed(spec, kNoiseStream));
+  const double sigma = spec.noise == NoiseReading::kNone ? 0.0 : spec.sigma;
+
+  Trace trace;
+  trace.truth = context_sequence(spec.pattern, spec.steps, n, pattern_rng, spec.pattern_options);
+  std::uint32_t state = dynamics_rng.below(catalog.num_states);
+  {
+    const std::uint32_t first_context = trace.truth.empty() ? 0 : trace.truth[0];
+    const Sensed sensed = sense(spec.noise, sigma, state, rewards[first_context], noise_rng);
+    state = sensed.true_state;
+    filter.start(sensed.observed_state);
+  }
+  for (std::uint32_t k = 0; k < spec.steps; ++k) {
+    const std::uint32_t context = trace.truth[k];
+    const rt::TransitionsCsr& moves = catalog.abstractions[context].state_transitions;
+    const std::uint32_t action = random_enabled_action(moves, state, num_actions, dynamics_rng);
+    if (action == rt::kNoAction) {
+      error = "no action is enabled in state " + std::to_string(state);
+      return std::nullopt;
+    }
+    state = sample_successor(moves, state, action, num_actions, dynamics_rng);
+    const Sensed sensed = sense(spec.noise, sigma, state, rewards[context], noise_rng);
+    state = sensed.true_state;
+    if (filter.step(sensed.observed_state, sensed.reward, action) ==
+        rt::StepStatus::kZeroLikelihood)
+      ++trace.zero_likelihood_steps;
+    trace.inferred.push_back(filter.ml_abstraction());
+    trace.true_state.push_back(state);
+    trace.observed_state.push_back(sensed.observed_state);
+    trace.reward.push_back(sensed.reward);
+  }
+  return trace;
+}
+
+std::optional<std::vector<RowResult>> run_table1(const Table1Experiment& experiment,
+                                                 const Table1Options& options, std::string& error,
+                                                 const TraceSink& sink) {
+  std::vector<RowResult> rows;
+  for (const TransitionModel& model : table1_models()) {
+    for (Pattern pattern : options.patterns) {
+      std::vector<NoiseReading> noises{NoiseReading::kNone};
+      if (pattern_is_noisy(pattern)) noises = options.noises;
+      for (NoiseReading noise : noises) {
+        for (FilterKind filter : options.filters) {
+          std::vector<double> accuracy, avg_lag, max_lag, zero;
+          for (std::uint32_t seed = 0; seed < options.seeds; ++seed) {
+            TrialSpec spec;
+            spec.model = model;
+            spec.pattern = pattern;
+            spec.noise = noise;
+            spec.sigma = options.sigma;
+            spec.filter = filter;
+            spec.seed = seed;
+            spec.steps = options.steps;
+            const std::optional<Trace> trace = experiment.run_trial(spec, error);
+            if (!trace) return std::nullopt;
+            const TrialMetrics metrics = trial_metrics(trace->truth, trace->inferred);
+            accuracy.push_back(metrics.accuracy);
+            avg_lag.push_back(metrics.avg_lag);
+            max_lag.push_back(metrics.max_lag);
+            zero.push_back(trace->zero_likelihood_steps);
+            if (sink) sink(spec, *trace);
+          }
+          rows.push_back({model.id, pattern, noise, filter, mean_std(accuracy), mean_std(avg_lag),
+                          mean_std(max_lag), mean_std(zero)});
+        }
+      }
+    }
+  }
+  return rows;
+}
+
+}  // namespace oasis::sim
