@@ -1,0 +1,165 @@
+// The binary catalog file: written by the compiler, loaded by the runtime. A loaded catalog
+// must take the same decisions as the one it was written from; damaged files must be
+// refused with a reason and never read out of bounds (run under ASan/UBSan).
+
+#include "oasis/rt/catalog_file.hpp"
+
+#include <cstring>
+#include <filesystem>
+#include <random>
+
+#include <gtest/gtest.h>
+
+#include "../support/spec_models.hpp"
+#include "codegen/binary_catalog.hpp"
+#include "codegen/catalog_data.hpp"
+#include "oasis/rt/attention_filter.hpp"
+
+namespace oasis {
+namespace {
+
+codegen::CatalogData paper_catalog(std::optional<double> p_correct = std::nullopt) {
+  const auto model =
+      test::explore_spec_file(std::string(OASIS_SOURCE_DIR) + "/specs/discrete_tracking.oasis");
+  codegen::BuildOptions options;
+  options.p_correct = p_correct;
+  std::string error;
+  auto catalog = codegen::build_catalog(model, codegen::spec_hash("spec"), options, error);
+  EXPECT_TRUE(catalog) << error;
+  return std::move(*catalog);
+}
+
+rt::LoadedCatalog load(const std::string& bytes) {
+  return rt::LoadedCatalog::from_bytes(bytes.data(), bytes.size());
+}
+
+// Runs the filter on both views over the same pseudo-random observations and compares
+// every decision.
+void expect_same_decisions(const rt::CatalogView& a, const rt::CatalogView& b,
+                           rt::FilterMode mode) {
+  rt::FilterOptions options;
+  options.mode = mode;
+  options.tie_rule = rt::TieRule::kRandom;
+  options.seed = 7;
+  std::vector<double> work_a(rt::AttentionFilter::workspace_size(a, options));
+  std::vector<double> work_b(rt::AttentionFilter::workspace_size(b, options));
+  rt::AttentionFilter fa(a, options, work_a.data(), work_a.size());
+  rt::AttentionFilter fb(b, options, work_b.data(), work_b.size());
+  ASSERT_TRUE(fa.ok() && fb.ok());
+  fa.start(1);
+  fb.start(1);
+  std::mt19937 random(3);
+  for (int t = 0; t < 300; ++t) {
+    const auto state = static_cast<std::uint32_t>(random() % 3);
+    const double reward = (random() % 2 == 0) ? 0.0 : 1.0;
+    const std::uint32_t action = fa.action();
+    ASSERT_EQ(action, fb.action());
+    ASSERT_EQ(fa.step(state, reward, action), fb.step(state, reward, action));
+    ASSERT_EQ(fa.ml_abstraction(), fb.ml_abstraction()) << "step " << t;
+    ASSERT_EQ(fa.belief(0), fb.belief(0));
+  }
+}
+
+TEST(CatalogFile, RoundTripKeepsEverything) {
+  codegen::CatalogData catalog = paper_catalog();
+  const std::string bytes = codegen::binary_catalog(catalog);
+  EXPECT_EQ(bytes.size() % 8, 0U);
+  EXPECT_EQ(bytes, codegen::binary_catalog(catalog)) << "output must be deterministic";
+  const rt::LoadedCatalog loaded = load(bytes);
+  ASSERT_TRUE(loaded.ok()) << loaded.error();
+  const rt::CatalogView& view = loaded.view();
+  const rt::CatalogView original = catalog.view();
+  EXPECT_EQ(view.spec_hash, original.spec_hash);
+  EXPECT_STREQ(view.name, "discrete_tracking");
+  EXPECT_STREQ(view.action_names[1], "R");
+  EXPECT_STREQ(view.state_names[2], "s3");
+  EXPECT_STREQ(view.abstractions[1].context, "object_at_s1");
+  EXPECT_EQ(view.abstractions[0].num_blocks, 2U);
+  expect_same_decisions(original, view, rt::FilterMode::kPaper);
+}
+
+TEST(CatalogFile, RobustSectionRoundTrips) {
+  codegen::CatalogData catalog = paper_catalog(0.3);
+  const rt::LoadedCatalog loaded = load(codegen::binary_catalog(catalog));
+  ASSERT_TRUE(loaded.ok()) << loaded.error();
+  EXPECT_TRUE(loaded.view().has_robust_section());
+  EXPECT_DOUBLE_EQ(loaded.view().observation.p_correct, 0.3);
+  expect_same_decisions(catalog.view(), loaded.view(), rt::FilterMode::kRobust);
+}
+
+TEST(CatalogFile, FileOnDiskLoads) {
+  const auto path = std::filesystem::temp_directory_path() / "oasis_catalog_file_test.bin";
+  std::string error;
+  ASSERT_TRUE(codegen::write_binary_catalog(paper_catalog(), path.string(), error)) << error;
+  const rt::LoadedCatalog loaded = rt::LoadedCatalog::from_file(path.string());
+  EXPECT_TRUE(loaded.ok()) << loaded.error();
+  std::filesystem::remove(path);
+  const rt::LoadedCatalog missing = rt::LoadedCatalog::from_file(path.string());
+  EXPECT_FALSE(missing.ok());
+  EXPECT_NE(missing.error().find("cannot open"), std::string::npos);
+}
+
+TEST(CatalogFile, HeaderProblemsAreNamed) {
+  const std::string good = codegen::binary_catalog(paper_catalog());
+  std::string bad = good;
+  bad[0] = 'X';
+  EXPECT_NE(load(bad).error().find("bad magic"), std::string::npos);
+  bad = good;
+  bad[8] = 9;  // format version
+  EXPECT_NE(load(bad).error().find("format 9"), std::string::npos);
+  bad = good;
+  bad[bad.size() - 1] ^= 1;
+  EXPECT_NE(load(bad).error().find("checksum"), std::string::npos);
+  EXPECT_NE(load(good.substr(0, good.size() - 8)).error().find("size does not match"),
+            std::string::npos);
+  EXPECT_NE(load(good.substr(0, 10)).error().find("too short"), std::string::npos);
+  EXPECT_FALSE(load("").ok());
+}
+
+TEST(CatalogFile, EveryTruncationIsRefused) {
+  const std::string good = codegen::binary_catalog(paper_catalog(0.5));
+  for (std::size_t size = 0; size < good.size(); ++size) {
+    EXPECT_FALSE(load(good.substr(0, size)).ok()) << size;
+  }
+}
+
+// Mutations that keep the checksum right (it is recomputed), so the structural checks and
+// validate() must catch them: whatever loads must be a sound catalog the filter can run.
+TEST(CatalogFile, MutationsWithAFixedChecksumNeverBreakTheLoader) {
+  const std::string good = codegen::binary_catalog(paper_catalog(0.5));
+  std::mt19937 random(11);
+  int accepted = 0;
+  for (int trial = 0; trial < 4000; ++trial) {
+    std::string bad = good;
+    const int flips = 1 + static_cast<int>(random() % 4);
+    for (int f = 0; f < flips; ++f) {
+      const std::size_t at = 32 + random() % (bad.size() - 32);
+      bad[at] = static_cast<char>(
+          random() % 4 == 0 ? 0xFF : bad[at] ^ static_cast<char>(1U << (random() % 8)));
+    }
+    const std::uint64_t checksum =
+        rt::fnv1a64(reinterpret_cast<const unsigned char*>(bad.data()) + 32, bad.size() - 32);
+    std::memcpy(bad.data() + 24, &checksum, sizeof checksum);
+    const rt::LoadedCatalog loaded = load(bad);
+    if (!loaded.ok()) {
+      EXPECT_FALSE(loaded.error().empty());
+      continue;
+    }
+    ++accepted;
+    std::string why;
+    ASSERT_TRUE(rt::validate(loaded.view(), &why)) << why;
+    rt::FilterOptions options;
+    options.mode = rt::FilterMode::kRobust;
+    std::vector<double> work(rt::AttentionFilter::workspace_size(loaded.view(), options));
+    rt::AttentionFilter filter(loaded.view(), options, work.data(), work.size());
+    if (!filter.ok()) continue;
+    filter.start(0);
+    for (std::uint32_t t = 0; t < 20; ++t)
+      filter.step(t % 3, t % 2, filter.action() % 2);
+  }
+  // Some mutations (a value inside a double, a state name's letter) leave a valid catalog.
+  EXPECT_GT(accepted, 0);
+}
+
+}  // namespace
+}  // namespace oasis
