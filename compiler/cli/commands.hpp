@@ -27,6 +27,7 @@ CommandRunner add_check_command(CLI::App& app);
 CommandRunner add_info_command(CLI::App& app);
 CommandRunner add_export_command(CLI::App& app);
 CommandRunner add_quotient_command(CLI::App& app);
+CommandRunner add_compile_command(CLI::App& app);
 CommandRunner add_verify_command(CLI::App& app);
 
 }  // namespace oasis::cli

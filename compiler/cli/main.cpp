@@ -26,6 +26,7 @@ int main(int argc, char** argv) {
   add(oasis::cli::add_info_command(app));
   add(oasis::cli::add_export_command(app));
   add(oasis::cli::add_quotient_command(app));
+  add(oasis::cli::add_compile_command(app));
   add(oasis::cli::add_verify_command(app));
 
   try {

@@ -28,8 +28,10 @@ std::string dot_escape(const std::string& text) {
 void print_summary(std::ostream& out, const model::ExplicitModel& model,
                    const std::vector<ContextResult>& results, double load_seconds, double peak_mib,
                    std::optional<double> epsilon) {
-  out << model.name << ": " << model.num_states() << (model.num_states() == 1 ? " state, " : " states, ")
-      << model.num_actions() << (model.num_actions() == 1 ? " action" : " actions") << "; read in " << std::fixed << std::setprecision(3) << load_seconds << " s\n";
+  out << model.name << ": " << model.num_states()
+      << (model.num_states() == 1 ? " state, " : " states, ") << model.num_actions()
+      << (model.num_actions() == 1 ? " action" : " actions") << "; read in " << std::fixed
+      << std::setprecision(3) << load_seconds << " s\n";
   out << "  " << std::left << std::setw(24) << "context" << std::right << std::setw(12) << "states"
       << std::setw(14) << "transitions" << std::setw(10) << "blocks" << std::setw(10) << "seconds"
       << '\n';

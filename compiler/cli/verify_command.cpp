@@ -5,8 +5,10 @@
 #include <iostream>
 #include <memory>
 
+#include "cli/catalog_result_reader.hpp"
 #include "cli/commands.hpp"
 #include "cli/partition_result_reader.hpp"
+#include "codegen/catalog_data.hpp"
 #include "verify/verifier.hpp"
 
 namespace oasis::cli {
@@ -32,7 +34,13 @@ int run_verify(const VerifyOptions& options) {
   }
   const model::ExplicitModel& model = *loaded->model;
   std::string error;
-  const auto result = read_partition_result(options.result, model, error);
+  // A compiled binary catalog (oasisc compile) or a quotient --partition JSON result.
+  const bool catalog = options.result.size() > 4 &&
+                       options.result.compare(options.result.size() - 4, 4, ".bin") == 0;
+  const auto result =
+      catalog ? read_catalog_partitions(options.result, model,
+                                        codegen::spec_hash_of_file(options.model), error)
+              : read_partition_result(options.result, model, error);
   if (!result) {
     std::cerr << options.result << ": error: " << error << '\n';
     return 1;
@@ -97,7 +105,11 @@ CommandRunner add_verify_command(CLI::App& app) {
       "  oasisc verify specs/discrete_tracking.oasis r.json");
   command->add_option("model", options->model, "Spec (.oasis) or model (.aut, .tra) file")
       ->required();
-  command->add_option("result", options->result, "JSON written by 'oasisc quotient --partition'")
+  command
+      ->add_option(
+          "result", options->result,
+          "JSON written by 'oasisc quotient --partition', or a catalog NAME.bin written by "
+          "'oasisc compile' (refused if damaged or compiled from another spec)")
       ->required();
   add_common_options(*command, options->common);
   return [options] { return run_verify(*options); };

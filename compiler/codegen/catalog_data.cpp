@@ -3,6 +3,7 @@
 #include "bisim/quotient.hpp"
 #include "bisim/refinement.hpp"
 #include "policy/value_iteration.hpp"
+#include "support/mapped_file.hpp"
 
 namespace oasis::codegen {
 namespace {
@@ -155,6 +156,12 @@ std::uint64_t spec_hash(std::string_view text) {
     hash *= 0x100000001b3ULL;
   }
   return hash;
+}
+
+std::uint64_t spec_hash_of_file(const std::string& path) {
+  MappedFile file;
+  std::string error;
+  return file.open(path, std::size_t{1} << 34, error) ? spec_hash(file.text()) : 0;
 }
 
 }  // namespace oasis::codegen

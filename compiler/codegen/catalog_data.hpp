@@ -76,5 +76,7 @@ std::optional<CatalogData> build_catalog(const model::ExplicitModel& model, std:
 
 // FNV-1a over the spec's bytes: the catalog remembers which spec it was compiled from.
 std::uint64_t spec_hash(std::string_view text);
+// The same over a file's bytes; 0 when it cannot be read (the caller has read it already).
+std::uint64_t spec_hash_of_file(const std::string& path);
 
 }  // namespace oasis::codegen

@@ -3,13 +3,18 @@
 
 #include <array>
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <string>
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 #include <sys/wait.h>
+#include <unistd.h>
+
+#include "oasis/rt/catalog_file.hpp"
 
 namespace {
 
@@ -145,6 +150,65 @@ TEST(Cli, OneBadFileDoesNotHideTheOthers) {
   EXPECT_EQ(result.status, 1);
   EXPECT_NE(result.output.find("discrete_tracking.oasis: ok"), std::string::npos) << result.output;
   std::filesystem::remove(bad);
+}
+
+}  // namespace
+
+namespace {
+
+std::string read_all(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+void write_all(const std::filesystem::path& path, const std::string& bytes) {
+  std::ofstream(path, std::ios::binary) << bytes;
+}
+
+// Writes the checksum a catalog file must carry (FNV-1a of bytes 32..end, at offset 24).
+void fix_checksum(std::string& bytes) {
+  const std::uint64_t checksum = oasis::rt::fnv1a64(
+      reinterpret_cast<const unsigned char*>(bytes.data()) + 32, bytes.size() - 32);
+  std::memcpy(bytes.data() + 24, &checksum, sizeof checksum);
+}
+
+TEST(Cli, CompileThenVerifyTheCatalog) {
+  const auto dir =
+      std::filesystem::temp_directory_path() / ("oasis_cli_compile_" + std::to_string(::getpid()));
+  Result result = run("compile " + spec("discrete_tracking.oasis") + " -o " + dir.string());
+  ASSERT_EQ(result.status, 0) << result.output;
+  for (const char* file :
+       {"discrete_tracking.bin", "discrete_tracking.json", "discrete_tracking.object_at_s3.dot",
+        "discrete_tracking.object_at_s1.dot"}) {
+    EXPECT_TRUE(std::filesystem::exists(dir / file)) << file;
+  }
+  const auto catalog = dir / "discrete_tracking.bin";
+  result = run("verify " + spec("discrete_tracking.oasis") + " " + catalog.string());
+  EXPECT_EQ(result.status, 0) << result.output;
+  EXPECT_NE(result.output.find("context object_at_s1: bisimulation and coarsest (2 blocks)"),
+            std::string::npos);
+
+  // A flipped byte: the checksum refuses the file.
+  std::string bytes = read_all(catalog);
+  std::string damaged = bytes;
+  damaged[damaged.size() - 3] ^= 0x10;
+  write_all(dir / "damaged.bin", damaged);
+  result = run("verify " + spec("discrete_tracking.oasis") + " " + (dir / "damaged.bin").string());
+  EXPECT_EQ(result.status, 1);
+  EXPECT_NE(result.output.find("checksum mismatch"), std::string::npos) << result.output;
+
+  // A well-formed file with the wrong partition (object_at_s1's in object_at_s3's place,
+  // checksum recomputed): only the verifier can tell, and it does.
+  std::uint64_t offset = 0;
+  std::memcpy(&offset, bytes.data() + 64 + 5 * 16, sizeof offset);  // abstraction 0's block_of
+  const std::uint32_t swapped[3] = {0, 1, 1};
+  std::memcpy(bytes.data() + offset, swapped, sizeof swapped);
+  fix_checksum(bytes);
+  write_all(dir / "swapped.bin", bytes);
+  result = run("verify " + spec("discrete_tracking.oasis") + " " + (dir / "swapped.bin").string());
+  EXPECT_EQ(result.status, 1) << result.output;
+  EXPECT_NE(result.output.find("context object_at_s3: FAILED"), std::string::npos) << result.output;
+  std::filesystem::remove_all(dir);
 }
 
 }  // namespace

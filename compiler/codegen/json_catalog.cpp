@@ -1,0 +1,76 @@
+#include "codegen/json_catalog.hpp"
+
+#include <cstdio>
+
+namespace oasis::codegen {
+namespace {
+
+std::string hex(std::uint64_t value) {
+  char text[19];
+  std::snprintf(text, sizeof text, "%016llx", static_cast<unsigned long long>(value));
+  return text;
+}
+
+nlohmann::json abstraction_json(const CatalogData& catalog, const AbstractionData& data) {
+  std::vector<nlohmann::json> blocks(data.num_blocks);
+  for (std::uint32_t z = 0; z < data.num_blocks; ++z) {
+    const std::uint32_t action = data.policy[z];
+    blocks[z] = {{"block", z},
+                 {"members", nlohmann::json::array()},
+                 {"reward", data.block_reward[z]},
+                 {"action", action == rt::kNoAction ? nlohmann::json()
+                                                    : nlohmann::json(catalog.action_names[action])},
+                 {"value", data.value[z]}};
+  }
+  for (std::uint32_t s = 0; s < catalog.num_states; ++s)
+    blocks[data.block_of[s]]["members"].push_back(catalog.state_names[s]);
+  nlohmann::json transitions = nlohmann::json::array();
+  for (std::uint32_t z = 0; z < data.num_blocks; ++z) {
+    for (std::uint32_t a = 0; a < catalog.num_actions; ++a) {
+      const std::size_t row = std::size_t{z} * catalog.num_actions + a;
+      const std::uint32_t begin = data.quotient.choice_begin[row];
+      const std::uint32_t end = data.quotient.choice_begin[row + 1];
+      if (begin == end) continue;
+      nlohmann::json successors = nlohmann::json::array();
+      for (std::uint32_t e = begin; e < end; ++e)
+        successors.push_back({data.quotient.target[e], data.quotient.probability[e]});
+      transitions.push_back({{"block", z},
+                             {"action", catalog.action_names[a]},
+                             {"reward", data.reward[row]},
+                             {"successors", std::move(successors)}});
+    }
+  }
+  return {{"context", data.context}, {"blocks", blocks}, {"transitions", std::move(transitions)}};
+}
+
+}  // namespace
+
+nlohmann::json catalog_json(const CatalogData& catalog) {
+  nlohmann::json out;
+  out["format"] = rt::kCatalogFormat;
+  out["name"] = catalog.name;
+  out["spec_hash"] = hex(catalog.spec_hash);
+  out["compiler_version"] = catalog.compiler_version;
+  out["states"] = catalog.state_names;
+  out["actions"] = catalog.action_names;
+  const std::size_t n = catalog.abstractions.size();
+  nlohmann::json switching = nlohmann::json::array();
+  for (std::size_t i = 0; i < n; ++i) {
+    switching.push_back(
+        std::vector<double>(catalog.switching.begin() + static_cast<std::ptrdiff_t>(i * n),
+                            catalog.switching.begin() + static_cast<std::ptrdiff_t>((i + 1) * n)));
+  }
+  out["switching"] = std::move(switching);
+  out["prior"] = catalog.prior;
+  out["observation"] =
+      catalog.observation == rt::ObservationKind::kNone
+          ? nlohmann::json()
+          : nlohmann::json({{"kind", "symmetric"}, {"p_correct", catalog.p_correct}});
+  nlohmann::json abstractions = nlohmann::json::array();
+  for (const AbstractionData& data : catalog.abstractions)
+    abstractions.push_back(abstraction_json(catalog, data));
+  out["abstractions"] = std::move(abstractions);
+  return out;
+}
+
+}  // namespace oasis::codegen

@@ -1,0 +1,17 @@
+#pragma once
+// The catalog as JSON, for people and tools: the same content as the binary file, with
+// names instead of indices where they help (blocks list their member states, policies their
+// action names).
+
+#include <nlohmann/json.hpp>
+
+#include "codegen/catalog_data.hpp"
+
+namespace oasis::codegen {
+
+// Keys: format, name, spec_hash (hex string), compiler_version, states, actions,
+// switching, prior, observation, abstractions[] with context, blocks[] ({members, reward,
+// action, value}), transitions[] ({block, action, reward, successors: [[block, p], ...]}).
+nlohmann::json catalog_json(const CatalogData& catalog);
+
+}  // namespace oasis::codegen
