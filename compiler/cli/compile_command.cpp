@@ -8,6 +8,7 @@
 #include "cli/commands.hpp"
 #include "codegen/binary_catalog.hpp"
 #include "codegen/catalog_data.hpp"
+#include "codegen/cpp_catalog.hpp"
 #include "codegen/dot_catalog.hpp"
 #include "codegen/json_catalog.hpp"
 #include "support/atomic_file.hpp"
@@ -19,6 +20,7 @@ struct CompileOptions {
   std::string spec;
   std::string output = ".";
   std::vector<std::string> formats{"bin", "json", "dot"};
+  std::string basename;  // of the C++ files; default NAME_catalog
   std::optional<double> p_correct;
   CommonOptions common;
 };
@@ -53,6 +55,15 @@ bool emit(codegen::CatalogData& catalog, const CompileOptions& options) {
       std::cout << "wrote " << base << ".bin\n";
     } else if (format == "json") {
       if (!write_text(base + ".json", codegen::catalog_json(catalog).dump(2) + "\n")) return false;
+    } else if (format == "cpp") {
+      const std::string basename =
+          options.basename.empty() ? catalog.name + "_catalog" : options.basename;
+      const std::string spec_name = std::filesystem::path(options.spec).filename().string();
+      const codegen::CppSources sources = codegen::cpp_catalog(catalog, basename, spec_name);
+      if (!write_text((dir / (basename + ".hpp")).string(), sources.header) ||
+          !write_text((dir / (basename + ".cpp")).string(), sources.source)) {
+        return false;
+      }
     } else if (format == "dot") {
       for (std::size_t i = 0; i < catalog.abstractions.size(); ++i) {
         if (!write_text(base + "." + catalog.abstractions[i].context + ".dot",
@@ -101,6 +112,7 @@ CommandRunner add_compile_command(CLI::App& app) {
       "  NAME.bin           the binary catalog the runtime loads (rt::LoadedCatalog)\n"
       "  NAME.json          the same for people and tools\n"
       "  NAME.CONTEXT.dot   each abstraction for Graphviz (bold: the policy's action)\n"
+      "  NAME_catalog.hpp/.cpp  (--format cpp) C++ tables to link: NAME::catalog()\n"
       "Every file is written whole or not at all. --robust P adds what the runtime's robust\n"
       "filter needs: the full-state transitions of every context and a sensor that reports\n"
       "the true state with probability P.\n\n"
@@ -110,9 +122,13 @@ CommandRunner add_compile_command(CLI::App& app) {
   command->add_option("spec", options->spec, "Spec (.oasis) or model (.aut, .tra) file")
       ->required();
   command->add_option("-o,--output", options->output, "Output directory")->capture_default_str();
-  command->add_option("-f,--format", options->formats, "Formats: bin, json, dot (default: all)")
+  command
+      ->add_option("-f,--format", options->formats,
+                   "Formats: bin, json, dot, cpp (default: bin,json,dot)")
       ->delimiter(',')
-      ->check(CLI::IsMember({"bin", "json", "dot"}));
+      ->check(CLI::IsMember({"bin", "json", "dot", "cpp"}));
+  command->add_option("--basename", options->basename,
+                      "File name (without extension) of the C++ output");
   command
       ->add_option("--robust", options->p_correct,
                    "Add the robust filter's section with this sensor accuracy")

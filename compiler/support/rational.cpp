@@ -2,7 +2,9 @@
 
 #include <charconv>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
+#include <cstring>
 #include <utility>
 
 namespace oasis {
@@ -83,8 +85,21 @@ std::string to_string(const Rational& value) {
   return value.get_str(10);
 }
 
+// mpq_get_d truncates towards zero, so 4/5 would become 0.7999999999999999. The nearest
+// double is either that one or its neighbour away from zero; exact comparison decides.
 double to_double(const Rational& value) {
-  return value.get_d();
+  const double truncated = value.get_d();
+  if (!std::isfinite(truncated)) return truncated;
+  const double away = std::nextafter(truncated, value > 0 ? HUGE_VAL : -HUGE_VAL);
+  if (!std::isfinite(away)) return truncated;
+  const Rational below_error = abs(value - Rational(truncated));
+  const Rational above_error = abs(Rational(away) - value);
+  if (above_error < below_error) return away;
+  if (below_error < above_error) return truncated;
+  // A tie: round half to even, like IEEE-754 (the even one has a zero last mantissa bit).
+  std::uint64_t bits = 0;
+  std::memcpy(&bits, &truncated, sizeof bits);
+  return (bits & 1U) == 0 ? truncated : away;
 }
 
 std::string describe(const Rational& value) {

@@ -35,6 +35,23 @@ TEST(Describe, ShowsFractionAndDecimal) {
   EXPECT_EQ(describe(Rational(2)), "2");
 }
 
+TEST(ToDouble, RoundsToNearestNotTowardsZero) {
+  // GMP's mpq_get_d truncates: 4/5 would come out as 0.7999999999999999.
+  EXPECT_EQ(to_double(Rational(4, 5)), 0.8);
+  EXPECT_EQ(to_double(Rational(1, 5)), 0.2);
+  EXPECT_EQ(to_double(Rational(-4, 5)), -0.8);
+  EXPECT_EQ(to_double(Rational(1, 3)), 1.0 / 3.0);
+  EXPECT_EQ(to_double(Rational(1, 10)), 0.1);
+  EXPECT_EQ(to_double(Rational(7)), 7.0);
+  // Every small fraction converts like the correctly rounded division of two doubles.
+  for (long q = 1; q < 200; ++q) {
+    for (long p = -q; p <= q; ++p) {
+      EXPECT_EQ(to_double(Rational(p, q)), static_cast<double>(p) / static_cast<double>(q))
+          << p << "/" << q;
+    }
+  }
+}
+
 TEST(RationalPool, InternsEqualValuesOnce) {
   RationalPool pool;
   EXPECT_EQ(pool.intern(Rational(0)), RationalPool::kZero);
