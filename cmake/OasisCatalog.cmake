@@ -1,0 +1,34 @@
+# oasis_add_catalog(TARGET SPEC [BASENAME NAME])
+#
+# Compiles SPEC with oasisc at build time (like protobuf_generate) into C++ tables and makes
+# TARGET a static library holding them, linked to the header-only runtime. A robot program
+# needs three lines:
+#
+#   oasis_add_catalog(treat_catalog specs/go1_treat.oasis)
+#   add_executable(robot robot.cpp)
+#   target_link_libraries(robot PRIVATE treat_catalog)
+#
+# and then `#include "go1_treat_catalog.hpp"` and `go1_treat::catalog()`. The files are
+# generated in the build tree (never the source tree) and regenerated when the spec or
+# oasisc changes. BASENAME names the files (default: the spec's file name + "_catalog").
+function(oasis_add_catalog target spec)
+  cmake_parse_arguments(PARSE_ARGV 2 ARG "" "BASENAME" "")
+  get_filename_component(spec_path "${spec}" ABSOLUTE)
+  get_filename_component(stem "${spec}" NAME_WE)
+  if(NOT ARG_BASENAME)
+    set(ARG_BASENAME "${stem}_catalog")
+  endif()
+  set(out_dir "${CMAKE_CURRENT_BINARY_DIR}/${target}")
+  set(outputs "${out_dir}/${ARG_BASENAME}.hpp" "${out_dir}/${ARG_BASENAME}.cpp")
+  add_custom_command(
+    OUTPUT ${outputs}
+    COMMAND oasisc compile "${spec_path}" -o "${out_dir}" --format cpp --basename "${ARG_BASENAME}"
+            --progress never
+    DEPENDS oasisc "${spec_path}"
+    COMMENT "oasisc: compiling the catalog of ${spec}"
+    VERBATIM)
+  add_library(${target} STATIC ${outputs})
+  target_include_directories(${target} PUBLIC "${out_dir}")
+  target_link_libraries(${target} PUBLIC oasis_runtime)
+  target_compile_features(${target} PUBLIC cxx_std_17)
+endfunction()
