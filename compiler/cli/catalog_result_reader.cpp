@@ -1,20 +1,9 @@
 #include "cli/catalog_result_reader.hpp"
 
-#include <cstdio>
-
+#include "codegen/catalog_data.hpp"
 #include "oasis/rt/catalog_file.hpp"
 
 namespace oasis::cli {
-namespace {
-
-std::string hex(std::uint64_t value) {
-  char text[19];
-  std::snprintf(text, sizeof text, "%016llx", static_cast<unsigned long long>(value));
-  return text;
-}
-
-}  // namespace
-
 std::optional<PartitionResult> read_catalog_partitions(const std::string& path,
                                                        const model::ExplicitModel& model,
                                                        std::uint64_t model_hash,
@@ -28,8 +17,9 @@ std::optional<PartitionResult> read_catalog_partitions(const std::string& path,
   }
   const rt::CatalogView& view = catalog.view();
   if (view.spec_hash != model_hash) {
-    error = "the catalog was compiled from another spec (hash " + hex(view.spec_hash) +
-            ", this one has " + hex(model_hash) + "); recompile it";
+    error = "the catalog was compiled from another spec (hash " +
+            codegen::hash_text(view.spec_hash) + ", this one has " +
+            codegen::hash_text(model_hash) + "); recompile it";
     return std::nullopt;
   }
   if (view.num_states != model.num_states() || view.num_actions != model.num_actions()) {

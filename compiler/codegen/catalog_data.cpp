@@ -1,5 +1,7 @@
 #include "codegen/catalog_data.hpp"
 
+#include <cstdio>
+
 #include "bisim/quotient.hpp"
 #include "bisim/refinement.hpp"
 #include "policy/value_iteration.hpp"
@@ -162,6 +164,12 @@ std::uint64_t spec_hash_of_file(const std::string& path) {
   MappedFile file;
   std::string error;
   return file.open(path, std::size_t{1} << 34, error) ? spec_hash(file.text()) : 0;
+}
+
+std::string hash_text(std::uint64_t hash) {
+  char text[19];
+  std::snprintf(text, sizeof text, "%016llx", static_cast<unsigned long long>(hash));
+  return text;
 }
 
 }  // namespace oasis::codegen

@@ -78,5 +78,7 @@ std::optional<CatalogData> build_catalog(const model::ExplicitModel& model, std:
 std::uint64_t spec_hash(std::string_view text);
 // The same over a file's bytes; 0 when it cannot be read (the caller has read it already).
 std::uint64_t spec_hash_of_file(const std::string& path);
+// A hash as 16 hexadecimal digits, as JSON and messages show it.
+std::string hash_text(std::uint64_t hash);
 
 }  // namespace oasis::codegen

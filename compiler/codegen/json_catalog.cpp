@@ -5,12 +5,6 @@
 namespace oasis::codegen {
 namespace {
 
-std::string hex(std::uint64_t value) {
-  char text[19];
-  std::snprintf(text, sizeof text, "%016llx", static_cast<unsigned long long>(value));
-  return text;
-}
-
 nlohmann::json abstraction_json(const CatalogData& catalog, const AbstractionData& data) {
   std::vector<nlohmann::json> blocks(data.num_blocks);
   for (std::uint32_t z = 0; z < data.num_blocks; ++z) {
@@ -49,7 +43,7 @@ nlohmann::json catalog_json(const CatalogData& catalog) {
   nlohmann::json out;
   out["format"] = rt::kCatalogFormat;
   out["name"] = catalog.name;
-  out["spec_hash"] = hex(catalog.spec_hash);
+  out["spec_hash"] = hash_text(catalog.spec_hash);
   out["compiler_version"] = catalog.compiler_version;
   out["states"] = catalog.state_names;
   out["actions"] = catalog.action_names;
