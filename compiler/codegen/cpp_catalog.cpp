@@ -4,6 +4,8 @@
 #include <charconv>
 #include <cstdio>
 
+#include "support/text.hpp"
+
 namespace oasis::codegen {
 namespace {
 
@@ -18,12 +20,7 @@ std::string banner(const CatalogData& catalog, std::string_view spec_file_name) 
 }
 
 std::string literal(const std::string& text) {
-  std::string out = "\"";
-  for (char c : text) {
-    if (c == '"' || c == '\\') out += '\\';
-    out += c;
-  }
-  return out + '"';
+  return '"' + escape_double_quoted(text) + '"';
 }
 
 std::string number(std::uint32_t value) {

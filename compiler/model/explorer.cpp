@@ -6,13 +6,10 @@
 #include <vector>
 
 #include "model/state_store.hpp"
+#include "support/text.hpp"
 
 namespace oasis::model {
 namespace {
-
-std::string quoted(std::string_view text) {
-  return "'" + std::string(text) + "'";
-}
 
 // Raised after a diagnostic has been reported; ends exploration.
 struct ExplorationFailed {};

@@ -3,12 +3,10 @@
 #include <string>
 #include <vector>
 
+#include "support/text.hpp"
+
 namespace oasis::spec {
 namespace {
-
-std::string quoted(std::string_view text) {
-  return "'" + std::string(text) + "'";
-}
 
 // A distribution over contexts, e.g. `0.8: a + 0.2: b`, as one row of N probabilities.
 // Returns false after reporting a problem.

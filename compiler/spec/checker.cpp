@@ -10,6 +10,7 @@
 #include "spec/catalog_checker.hpp"
 #include "spec/expression_checker.hpp"
 #include "spec/scope.hpp"
+#include "support/text.hpp"
 
 namespace oasis::spec {
 namespace {
@@ -19,10 +20,6 @@ using model::Expression;
 using model::ModelKind;
 using model::Op;
 using model::Type;
-
-std::string quoted(std::string_view text) {
-  return "'" + std::string(text) + "'";
-}
 
 // A catalog holds at most this many contexts: the filter's cost grows with N^2.
 constexpr std::size_t kMaxContexts = 4096;

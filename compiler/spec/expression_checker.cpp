@@ -4,6 +4,8 @@
 #include <string>
 #include <utility>
 
+#include "support/text.hpp"
+
 namespace oasis::spec {
 namespace {
 
@@ -56,10 +58,6 @@ constexpr std::array kBuiltins = {
     Builtin{"floor", Op::Floor, 1, 1}, Builtin{"ceil", Op::Ceil, 1, 1},
     Builtin{"abs", Op::Abs, 1, 1},     Builtin{"mod", Op::Mod, 2, 2},
 };
-
-std::string quoted(std::string_view text) {
-  return "'" + std::string(text) + "'";
-}
 
 // "a bool", "an int", "a number".
 std::string with_article(Type type) {

@@ -1,0 +1,26 @@
+#pragma once
+// Small text helpers shared by diagnostics and emitters.
+
+#include <string>
+#include <string_view>
+
+namespace oasis {
+
+// 'name', as diagnostics quote names from the input.
+inline std::string quoted(std::string_view text) {
+  return "'" + std::string(text) + "'";
+}
+
+// `text` with `"` and `\` escaped, for the inside of a double-quoted string in C++ source or
+// a Graphviz label.
+inline std::string escape_double_quoted(std::string_view text) {
+  std::string out;
+  out.reserve(text.size());
+  for (char c : text) {
+    if (c == '"' || c == '\\') out += '\\';
+    out += c;
+  }
+  return out;
+}
+
+}  // namespace oasis
