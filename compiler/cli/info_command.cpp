@@ -44,14 +44,15 @@ std::vector<std::string> context_names(const LoadedModel& loaded) {
   return names;
 }
 
-nlohmann::json to_json(const LoadedModel& loaded) {
+// `stats`: context_statistics() of the explicit model, empty for continuous models; computed
+// once by the caller (it walks every choice of every context).
+nlohmann::json to_json(const LoadedModel& loaded,
+                       const std::vector<model::ContextStatistics>& stats) {
   nlohmann::json out;
   out["file"] = loaded.path;
   out["model"] = loaded.model ? loaded.model->name : loaded.ir->name;
   out["kind"] = kind_name(loaded);
   const std::vector<std::string> names = context_names(loaded);
-  std::vector<model::ContextStatistics> stats;
-  if (loaded.model) stats = model::context_statistics(*loaded.model);
   const auto& actions = loaded.model ? loaded.model->actions : loaded.ir->actions;
   out["action_names"] = actions;
   out["states"] = loaded.model ? nlohmann::json(loaded.model->num_states()) : nlohmann::json();
@@ -107,8 +108,8 @@ std::string reward_range(const model::ContextStatistics& stats) {
   return "[" + to_string(*stats.reward_min) + ", " + to_string(*stats.reward_max) + "]";
 }
 
-void print_text(const LoadedModel& loaded) {
-  const nlohmann::json summary = to_json(loaded);
+void print_text(const LoadedModel& loaded, const std::vector<model::ContextStatistics>& stats) {
+  const nlohmann::json summary = to_json(loaded, stats);
   std::cout << loaded.path << ": model '" << summary["model"].get<std::string>() << "' ("
             << kind_name(loaded) << ")\n";
   std::cout << "  actions: " << summary["actions"] << " (";
@@ -121,8 +122,6 @@ void print_text(const LoadedModel& loaded) {
               << ", regions: " << summary["regions"] << '\n';
   }
   const std::vector<std::string> names = context_names(loaded);
-  std::vector<model::ContextStatistics> stats;
-  if (loaded.model) stats = model::context_statistics(*loaded.model);
   std::cout << "  " << std::left << std::setw(24) << "context" << std::setw(12) << "states"
             << std::setw(12) << "choices" << std::setw(14) << "transitions"
             << "rewards\n";
@@ -143,10 +142,12 @@ int run_info(const InfoOptions& options) {
   auto loaded =
       load_model(options.file, sources, diagnostics, effective_load_options(options.common));
   if (!loaded || diagnostics.has_errors()) return 1;
+  std::vector<model::ContextStatistics> stats;
+  if (loaded->model) stats = model::context_statistics(*loaded->model);
   if (options.json) {
-    std::cout << std::setw(2) << to_json(*loaded) << '\n';
+    std::cout << std::setw(2) << to_json(*loaded, stats) << '\n';
   } else {
-    print_text(*loaded);
+    print_text(*loaded, stats);
   }
   return 0;
 }
