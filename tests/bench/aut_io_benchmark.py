@@ -9,10 +9,11 @@ per action (1/2, 1/4 and the remaining 1/4). Sizes: 10^5 and 10^6 action transit
 import argparse
 import os
 import random
-import subprocess
 import sys
 import tempfile
 import time
+
+from timed_run import run_timed
 
 ACTIONS = ["a", "b", "c", "d"]
 
@@ -34,16 +35,9 @@ def write_model(path, transitions, seed=1):
 
 
 def measure(oasisc, source, target):
-    probe = ("import resource,subprocess,sys,time;t=time.perf_counter();"
-             "r=subprocess.run(sys.argv[1:]);e=time.perf_counter()-t;"
-             "print(r.returncode,e,resource.getrusage(resource.RUSAGE_CHILDREN).ru_maxrss)")
-    result = subprocess.run([sys.executable, "-c", probe, oasisc, "export", source, "--format",
-                             "aut", "-o", target, "--progress", "never", "--max-states",
-                             "100000000"], capture_output=True, text=True, check=False)
-    status, seconds, rss_kb = result.stdout.split()
-    if status != "0":
-        raise SystemExit(f"oasisc failed:\n{result.stderr}")
-    return float(seconds), int(rss_kb) / 1024
+    seconds, peak_mib, _ = run_timed([oasisc, "export", source, "--format", "aut", "-o", target,
+                                      "--progress", "never", "--max-states", "100000000"])
+    return seconds, peak_mib
 
 
 def main():

@@ -23,18 +23,7 @@ import sys
 import tempfile
 import time
 
-
-def run_timed(command):
-    probe = ("import resource,subprocess,sys,time;t=time.perf_counter();"
-             "r=subprocess.run(sys.argv[1:],capture_output=True,text=True);e=time.perf_counter()-t;"
-             "print(r.returncode,e,resource.getrusage(resource.RUSAGE_CHILDREN).ru_maxrss);"
-             "print(r.stdout);sys.stderr.write(r.stderr)")
-    result = subprocess.run([sys.executable, "-c", probe] + command, capture_output=True, text=True)
-    first, _, rest = result.stdout.partition("\n")
-    status, seconds, rss_kb = first.split()
-    if status != "0":
-        raise SystemExit(f"failed: {' '.join(command)}\n{rest}\n{result.stderr}")
-    return float(seconds), int(rss_kb) / 1024, rest
+from timed_run import run_timed
 
 
 GRID = """mdp grid {{
