@@ -2,10 +2,10 @@
 // from a file must be the same catalog and take the same decisions on the same inputs.
 // C++17 and the runtime only, as a robot program would be.
 
-#include <gtest/gtest.h>
-
 #include <cstdint>
 #include <vector>
+
+#include <gtest/gtest.h>
 
 #include "discrete_tracking_catalog.hpp"
 #include "oasis/rt/attention_filter.hpp"
