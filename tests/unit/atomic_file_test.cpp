@@ -7,6 +7,8 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include "../support/scratch_directory.hpp"
+
 namespace oasis {
 namespace {
 
@@ -15,14 +17,8 @@ namespace fs = std::filesystem;
 // A fresh, empty directory per test, removed afterwards.
 class AtomicFileTest : public ::testing::Test {
  protected:
-  void SetUp() override {
-    directory_ = fs::temp_directory_path() /
-                 ("oasis_atomic_" + std::to_string(::getpid()) + "_" +
-                  ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::remove_all(directory_);
-    fs::create_directories(directory_);
-  }
-  void TearDown() override { fs::remove_all(directory_); }
+  test::ScratchDirectory scratch_{"oasis_atomic"};
+  const std::filesystem::path& directory_ = scratch_.path();
 
   [[nodiscard]] std::size_t entries() const {
     return static_cast<std::size_t>(
@@ -36,8 +32,6 @@ class AtomicFileTest : public ::testing::Test {
     text << in.rdbuf();
     return text.str();
   }
-
-  fs::path directory_;
 };
 
 TEST_F(AtomicFileTest, NothingAppearsBeforeCommit) {

@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include "../support/scratch_directory.hpp"
 #include "formats/aut_label.hpp"
 #include "formats/aut_reader.hpp"
 #include "formats/aut_writer.hpp"
@@ -339,13 +340,8 @@ ExplicitModel random_model(std::uint32_t num_states, std::uint32_t num_actions, 
 
 class AutFileTest : public AutTest {
  protected:
-  void SetUp() override {
-    directory_ = fs::temp_directory_path() /
-                 ("oasis_aut_" + std::to_string(::getpid()) + "_" +
-                  ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::create_directories(directory_);
-  }
-  void TearDown() override { fs::remove_all(directory_); }
+  test::ScratchDirectory scratch_{"oasis_aut"};
+  const std::filesystem::path& directory_ = scratch_.path();
 
   std::optional<ExplicitModel> round_trip(const ExplicitModel& model) {
     const std::string path = (directory_ / "model.aut").string();
@@ -364,8 +360,6 @@ class AutFileTest : public AutTest {
     text << in.rdbuf();
     return text.str();
   }
-
-  fs::path directory_;
 };
 
 TEST_F(AutFileTest, WritesTheDocumentedForm) {

@@ -10,6 +10,7 @@
 
 #include "../support/naive_bisimulation.hpp"
 #include "../support/random_mdp.hpp"
+#include "../support/scratch_directory.hpp"
 #include "../support/spec_models.hpp"
 #include "bisim/quotient.hpp"
 #include "bisim/refinement.hpp"
@@ -150,8 +151,8 @@ mdp noisy {
 
 // Export each context to .aut and PRISM, import it, and quotient again: the same partition.
 TEST(Bisimulation, ImportedModelsGiveTheSameQuotient) {
-  const auto directory = std::filesystem::temp_directory_path() / "oasis_bisim_import_test";
-  std::filesystem::create_directories(directory);
+  const test::ScratchDirectory scratch("oasis_bisim_import");
+  const std::filesystem::path& directory = scratch.path();
   std::size_t prism_compared = 0;
   std::size_t aut_compared = 0;
   for (std::uint64_t seed = 1; seed <= 80; ++seed) {
@@ -195,7 +196,6 @@ TEST(Bisimulation, ImportedModelsGiveTheSameQuotient) {
       ++aut_compared;
     }
   }
-  std::filesystem::remove_all(directory);
   EXPECT_GE(prism_compared, 40U);
   EXPECT_GE(aut_compared, 20U) << "too few models could go through .aut for the test to mean much";
 }

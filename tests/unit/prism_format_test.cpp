@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include "../support/scratch_directory.hpp"
 #include "formats/model_file.hpp"
 #include "formats/prism_reader.hpp"
 #include "formats/prism_writer.hpp"
@@ -305,16 +306,9 @@ ExplicitModel random_model(std::uint32_t num_states, unsigned seed) {
 
 class PrismFileTest : public PrismTest {
  protected:
-  void SetUp() override {
-    directory_ = fs::temp_directory_path() /
-                 ("oasis_prism_" + std::to_string(::getpid()) + "_" +
-                  ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::create_directories(directory_);
-  }
-  void TearDown() override { fs::remove_all(directory_); }
+  test::ScratchDirectory scratch_{"oasis_prism"};
+  const std::filesystem::path& directory_ = scratch_.path();
   [[nodiscard]] std::string base() const { return (directory_ / "model").string(); }
-
-  fs::path directory_;
 };
 
 TEST_F(PrismFileTest, RandomModelRoundTrips) {

@@ -9,6 +9,7 @@
 
 #include <gtest/gtest.h>
 
+#include "../support/scratch_directory.hpp"
 #include "../support/spec_models.hpp"
 #include "formats/aut_writer.hpp"
 #include "formats/model_file.hpp"
@@ -87,14 +88,8 @@ void expect_same_context(const ExplicitModel& original, std::size_t c, const Exp
 
 class RoundTrip : public ::testing::Test {
  protected:
-  void SetUp() override {
-    directory_ =
-        std::filesystem::temp_directory_path() /
-        ("oasis_roundtrip_" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()) +
-         "_" + ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    std::filesystem::create_directories(directory_);
-  }
-  void TearDown() override { std::filesystem::remove_all(directory_); }
+  test::ScratchDirectory scratch_{"oasis_roundtrip"};
+  const std::filesystem::path& directory_ = scratch_.path();
 
   void check_all_contexts(const ExplicitModel& model) {
     ASSERT_FALSE(model::find_structural_problem(model));
@@ -113,8 +108,6 @@ class RoundTrip : public ::testing::Test {
       EXPECT_EQ(from_prism.states.valuations, model.states.valuations);
     }
   }
-
-  std::filesystem::path directory_;
 };
 
 TEST_F(RoundTrip, DiscreteTrackingSpec) {
