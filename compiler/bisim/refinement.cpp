@@ -535,7 +535,7 @@ class Refiner {
     for (std::uint32_t g = first_group; g != kNone; g = groups_[g].next_in_block) {
       const std::uint32_t begin = cursor;
       for (StateIndex s = groups_[g].first_state; s != kNone;) {
-        place(s, cursor++);
+        swap_to(s, cursor++);
         s = clear_state(s);
       }
       BlockIndex part = block;
@@ -577,8 +577,6 @@ class Refiner {
     elements_[from] = other;
     state_scratch_[other].position = from;
   }
-
-  void place(StateIndex s, std::uint32_t target) { swap_to(s, target); }
 
   // Clears a touched state's scratch and returns the next state of its group.
   StateIndex clear_state(StateIndex s) {

@@ -10,11 +10,6 @@
 namespace oasis::cli {
 namespace {
 
-bool has_suffix(const std::string& text, std::string_view suffix) {
-  return text.size() >= suffix.size() &&
-         text.compare(text.size() - suffix.size(), suffix.size(), suffix) == 0;
-}
-
 void print_progress(std::uint64_t found, std::uint64_t explored) {
   std::cerr << "\rexploring: " << explored << " of " << found << " states found so far"
             << std::flush;
@@ -26,7 +21,7 @@ std::optional<LoadedModel> load_model(const std::string& path, SourceManager& so
                                       DiagnosticEngine& diagnostics, const LoadOptions& options) {
   LoadedModel loaded;
   loaded.path = path;
-  if (has_suffix(path, ".aut") || has_suffix(path, ".tra")) {
+  if (path.ends_with(".aut") || path.ends_with(".tra")) {
     formats::ReadOptions read_options;
     read_options.max_bytes = options.max_model_bytes;
     read_options.max_states = options.max_states;

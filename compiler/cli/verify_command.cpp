@@ -35,8 +35,7 @@ int run_verify(const VerifyOptions& options) {
   const model::ExplicitModel& model = *loaded->model;
   std::string error;
   // A compiled binary catalog (oasisc compile) or a quotient --partition JSON result.
-  const bool catalog = options.result.size() > 4 &&
-                       options.result.compare(options.result.size() - 4, 4, ".bin") == 0;
+  const bool catalog = options.result.size() > 4 && options.result.ends_with(".bin");
   const auto result =
       catalog ? read_catalog_partitions(options.result, model,
                                         codegen::spec_hash_of_file(options.model), error)

@@ -271,7 +271,7 @@ class PrismWriter {
 
 bool write_prism(const model::ExplicitModel& model, std::size_t context, const std::string& base,
                  std::string& error) {
-  const bool has_extension = base.size() > 4 && base.compare(base.size() - 4, 4, ".tra") == 0;
+  const bool has_extension = base.size() > 4 && base.ends_with(".tra");  // not a bare ".tra"
   return PrismWriter(model, context, has_extension ? base.substr(0, base.size() - 4) : base)
       .write(error);
 }

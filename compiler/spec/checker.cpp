@@ -46,7 +46,7 @@ class Checker {
     if (diagnostics_.has_errors()) return std::nullopt;  // names must be sound before bodies
 
     base_ = lower_behaviour(mdp->behaviour, /*is_context=*/false);
-    if (ir_.kind == ModelKind::Explicit) check_explicit_complete(*mdp);
+    if (ir_.kind == ModelKind::Explicit) check_explicit_complete();
     if (ir_.kind == ModelKind::Continuous) check_dynamics_complete(*mdp);
     check_catalog(*mdp);
     if (diagnostics_.has_errors()) return std::nullopt;
@@ -641,7 +641,7 @@ class Checker {
 
   // ---- completeness -----------------------------------------------------------------------
 
-  void check_explicit_complete(const ast::MdpDecl& mdp) {
+  void check_explicit_complete() {
     if (ir_.missing != model::MissingPolicy::Error) return;
     for (std::uint32_t s = 0; s < ir_.state_names.size() && !diagnostics_.should_stop(); ++s) {
       for (std::uint32_t a = 0; a < ir_.actions.size(); ++a) {
@@ -654,7 +654,6 @@ class Checker {
         if (diagnostics_.should_stop()) return;
       }
     }
-    (void)mdp;
   }
 
   // x' = x (+ the model-level disturbances): the dynamics of an action that has no block.
