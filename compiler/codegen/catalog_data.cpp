@@ -135,10 +135,22 @@ std::optional<CatalogData> build_catalog(const model::ExplicitModel& model, std:
   catalog.action_names = model.actions;
   for (model::StateIndex s = 0; s < model.num_states(); ++s)
     catalog.state_names.push_back(model.states.name(s));
-  for (const Rational& p : model.switching.matrix)
-    catalog.switching.push_back(to_double(p));
-  for (const Rational& p : model.switching.prior)
-    catalog.prior.push_back(to_double(p));
+  if (model.switching.matrix.empty() && model.contexts.size() == 1) {
+    // An imported model (docs/formats.md) has one context and no switching model: the
+    // catalog's is the trivial one, that context always, so the filter has nothing to switch.
+    catalog.switching = {1.0};
+    catalog.prior = {1.0};
+  } else if (model.switching.matrix.size() != model.contexts.size() * model.contexts.size() ||
+             model.switching.prior.size() != model.contexts.size()) {
+    error = "the model has " + std::to_string(model.contexts.size()) +
+            " contexts but no switching model and prior for them";
+    return std::nullopt;
+  } else {
+    for (const Rational& p : model.switching.matrix)
+      catalog.switching.push_back(to_double(p));
+    for (const Rational& p : model.switching.prior)
+      catalog.prior.push_back(to_double(p));
+  }
   for (std::size_t c = 0; c < model.contexts.size(); ++c) {
     auto abstraction = build_abstraction(model, c, options, error);
     if (!abstraction) return std::nullopt;
