@@ -6,6 +6,7 @@
 #include <CLI/CLI.hpp>
 
 #include "cli/commands.hpp"
+#include "support/standard_output.hpp"
 
 int main(int argc, char** argv) {
   CLI::App app{"oasisc " OASIS_VERSION
@@ -32,22 +33,23 @@ int main(int argc, char** argv) {
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
-    return app.exit(e);
+    return oasis::finish_standard_output("oasisc", app.exit(e));
   } catch (const CLI::CallForVersion& e) {
-    return app.exit(e);
+    return oasis::finish_standard_output("oasisc", app.exit(e));
   } catch (const CLI::ParseError& e) {
     app.exit(e);
     return 2;  // bad usage, distinct from 1 (the input has errors)
   }
+  int status = 2;
   try {
     for (const CLI::App* command : app.get_subcommands())
-      return runners.at(command)();
+      status = runners.at(command)();
   } catch (const std::bad_alloc&) {
     std::cerr << "oasisc: error: out of memory\n";
-    return 1;
+    status = 1;
   } catch (const std::exception& e) {
     std::cerr << "oasisc: error: " << e.what() << '\n';
-    return 1;
+    status = 1;
   }
-  return 2;
+  return oasis::finish_standard_output("oasisc", status);
 }

@@ -16,6 +16,7 @@
 #include "sim/report.hpp"
 #include "sim/table1.hpp"
 #include "spec/frontend.hpp"
+#include "support/standard_output.hpp"
 
 namespace {
 
@@ -155,5 +156,5 @@ int main(int argc, char** argv) {
   int status = 0;
   command->callback([&] { status = run_table1_command(table1); });
   CLI11_PARSE(app, argc, argv);
-  return status;
+  return oasis::finish_standard_output("oasis-sim", status);
 }
