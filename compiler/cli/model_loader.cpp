@@ -5,6 +5,7 @@
 
 #include "formats/model_file.hpp"
 #include "model/explorer.hpp"
+#include "policy/solvability.hpp"
 #include "spec/frontend.hpp"
 
 namespace oasis::cli {
@@ -27,6 +28,10 @@ std::optional<LoadedModel> load_model(const std::string& path, SourceManager& so
     read_options.max_states = options.max_states;
     loaded.model = formats::read_model_file(path, sources, diagnostics, read_options);
     if (!loaded.model) return std::nullopt;
+    if (const auto reason = policy::unsolvable_reason(*loaded.model)) {
+      diagnostics.file_error(path, *reason);
+      return std::nullopt;
+    }
     return loaded;
   }
   loaded.ir = spec::load_spec(path, sources, diagnostics, {.max_bytes = options.max_spec_bytes});
@@ -38,6 +43,11 @@ std::optional<LoadedModel> load_model(const std::string& path, SourceManager& so
   loaded.model = model::explore(*loaded.ir, diagnostics, explore_options);
   if (options.progress) std::cerr << "\r\033[K" << std::flush;
   if (!loaded.model) return std::nullopt;
+  // What `compile` would meet when solving the policies is an error of the spec, here.
+  if (const auto reason = policy::unsolvable_reason(*loaded.model)) {
+    diagnostics.error(loaded.ir->objective_range, *reason);
+    return std::nullopt;
+  }
   return loaded;
 }
 

@@ -66,6 +66,12 @@ std::optional<AbstractionData> build_abstraction(const model::ExplicitModel& mod
     }
   }
   const policy::Policy solved = policy::solve(quotient, 0, options.policy);
+  if (!solved.converged) {
+    error = "context '" + data.context + "': value iteration did not converge in " +
+            std::to_string(solved.iterations) + " sweeps (last change " +
+            std::to_string(solved.residual) + "); use a smaller discount or a horizon";
+    return std::nullopt;
+  }
   data.policy = solved.action;
   data.value = solved.value;
   if (options.p_correct)
@@ -159,6 +165,13 @@ std::optional<CatalogData> build_catalog(const model::ExplicitModel& model, std:
   if (options.p_correct) {
     catalog.observation = rt::ObservationKind::kSymmetric;
     catalog.p_correct = *options.p_correct;
+  }
+  // The last line of defence: the front ends refuse every value a catalog cannot carry, so a
+  // catalog that the runtime would refuse is a bug here, reported rather than written.
+  std::string why;
+  if (!rt::validate(catalog.view(), &why)) {
+    error = "internal error: the catalog would be invalid (" + why + "); please report it";
+    return std::nullopt;
   }
   return catalog;
 }

@@ -63,10 +63,12 @@ class AutReader {
 
  private:
   // --- diagnostics ---------------------------------------------------------------------
+  [[nodiscard]] SourceRange range_at(const char* position, std::size_t length) const {
+    return SourceRange{{file_, scan_.offset_of(position)},
+                       static_cast<std::uint32_t>(std::max<std::size_t>(length, 1))};
+  }
   void error_at(const char* position, std::size_t length, const std::string& message) {
-    const auto range = SourceRange{{file_, scan_.offset_of(position)},
-                                   static_cast<std::uint32_t>(std::max<std::size_t>(length, 1))};
-    diagnostics_.error(range, message);
+    diagnostics_.error(range_at(position, length), message);
   }
   void error_here(const std::string& message) { error_at(scan_.position(), 1, message); }
 
@@ -282,6 +284,10 @@ class AutReader {
         return std::nullopt;
       }
       LabelInfo info{action_index(parsed->action), cache_.intern(parsed->reward)};
+      if (!cache_.check_carried(info.reward, "reward", range_at(position, text.size() + 2),
+                                diagnostics_)) {
+        return std::nullopt;
+      }
       if (info.reward != RationalPool::kZero) any_reward_ = true;
       found = labels_.emplace(text, info).first;
     }
@@ -369,6 +375,8 @@ class AutReader {
       error_at(start, length, "probability must be positive");
       return std::nullopt;
     }
+    if (!cache_.check_carried(*id, "probability", range_at(start, length), diagnostics_))
+      return std::nullopt;
     return id;
   }
 

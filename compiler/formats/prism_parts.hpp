@@ -34,10 +34,11 @@ class PrismScanner : public TextScanner {
       skip_line();
     }
   }
+  [[nodiscard]] SourceRange range_at(const char* position, std::size_t length) const {
+    return SourceRange{location(position), static_cast<std::uint32_t>(length == 0 ? 1 : length)};
+  }
   void error_at(const char* position, std::size_t length, const std::string& message) {
-    diagnostics_.error(
-        SourceRange{location(position), static_cast<std::uint32_t>(length == 0 ? 1 : length)},
-        message);
+    diagnostics_.error(range_at(position, length), message);
   }
   void error_here(const std::string& message) { error_at(position(), 1, message); }
   [[nodiscard]] SourceLocation location(const char* position) const {

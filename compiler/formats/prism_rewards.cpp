@@ -48,7 +48,12 @@ std::optional<ValueId> read_reward(PrismScanner& scan, ValueCache& values) {
   const char* token = scan.position();
   const std::string_view text = scan.read_word();
   const std::optional<ValueId> id = text.empty() ? std::nullopt : values.intern_text(text);
-  if (!id) scan.error_at(token, text.size(), "reward '" + std::string(text) + "' is not a number");
+  if (!id) {
+    scan.error_at(token, text.size(), "reward '" + std::string(text) + "' is not a number");
+    return id;
+  }
+  if (!values.check_carried(*id, "reward", scan.range_at(token, text.size()), scan.diagnostics()))
+    return std::nullopt;
   return id;
 }
 

@@ -144,6 +144,10 @@ class TransitionsReader {
       scan_.error_at(token, text.size(), "probability must be positive");
       return std::nullopt;
     }
+    if (!values_.check_carried(*id, "probability", scan_.range_at(token, text.size()),
+                               scan_.diagnostics())) {
+      return std::nullopt;
+    }
     return id;
   }
 

@@ -1,5 +1,7 @@
 #include "formats/value_cache.hpp"
 
+#include "support/double_range.hpp"
+
 namespace oasis::formats {
 namespace {
 
@@ -59,6 +61,30 @@ ValueId ValueCache::intern(const Rational& value) {
   const ValueId id = pool_.intern(value);
   if (pool_.size() != before) remember_small(id);
   return id;
+}
+
+bool ValueCache::check_carried(ValueId id, std::string_view what, SourceRange where,
+                               DiagnosticEngine& diagnostics) {
+  if (judged_.size() <= id) judged_.resize(std::size_t{id} + 1, Judged::kNotYet);
+  Judged& judged = judged_[id];
+  if (judged == Judged::kFaithful || judged == Judged::kWarned) return true;
+  const DoubleFit fit = double_fit(pool_[id]);
+  const std::string message = carried_value_message(pool_[id], fit, what);
+  switch (fit) {
+    case DoubleFit::kFaithful:
+      judged = Judged::kFaithful;
+      return true;
+    case DoubleFit::kSubnormal:
+      judged = Judged::kWarned;
+      diagnostics.warning(where, message);
+      return true;
+    case DoubleFit::kUnderflow:
+    case DoubleFit::kOverflow:
+      judged = Judged::kRefused;
+      diagnostics.error(where, message);
+      return false;
+  }
+  return false;
 }
 
 ValueId ValueCache::intern_fraction_slow(std::uint64_t numerator, std::uint64_t denominator,

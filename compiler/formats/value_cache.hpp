@@ -17,6 +17,7 @@
 #include <unordered_map>
 #include <vector>
 
+#include "support/diagnostics.hpp"
 #include "support/rational.hpp"
 
 namespace oasis::formats {
@@ -50,6 +51,13 @@ class ValueCache {
   // Interns a value computed elsewhere, keeping the 64-bit form table up to date.
   ValueId intern(const Rational& value);
 
+  // Reports a value a catalog cannot carry as a double (support/double_range.hpp) at `where`:
+  // an error at every occurrence, a warning for a lossy (subnormal) value at its first one
+  // only. Each distinct value is judged once, so the cost per occurrence is a lookup.
+  // Returns false after an error.
+  bool check_carried(ValueId id, std::string_view what, SourceRange where,
+                     DiagnosticEngine& diagnostics);
+
  private:
   struct Slot {
     std::uint64_t numerator = 0;
@@ -76,6 +84,8 @@ class ValueCache {
   std::array<Slot, kSlots> slots_{};
   std::unordered_map<std::string, ValueId, TextHash, std::equal_to<>> by_text_;
   std::vector<SmallFraction> small_;
+  enum class Judged : std::uint8_t { kNotYet, kFaithful, kWarned, kRefused };
+  std::vector<Judged> judged_;  // by ValueId
 };
 
 }  // namespace oasis::formats

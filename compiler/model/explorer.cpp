@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "model/state_store.hpp"
+#include "support/double_range.hpp"
 #include "support/text.hpp"
 
 namespace oasis::model {
@@ -201,7 +202,9 @@ class Explorer {
                                       " is " + (value < 0 ? "negative" : "greater than 1"));
       throw ExplorationFailed{};
     }
-    return values_.intern(value);
+    const ValueId id = values_.intern(value);
+    check_carried(id, "probability", p.range);
+    return id;
   }
 
   void check_sum(const Command& command, const Rational& state_dependent_sum) {
@@ -238,6 +241,24 @@ class Explorer {
       diagnostics_.error(error.where, std::string(error.what()) + " in state " + state_text());
       throw ExplorationFailed{};
     }
+  }
+
+  // A state-dependent value the catalog must carry as a double (support/double_range.hpp).
+  // Each distinct value is judged once: a warning for a lossy value is not repeated for every
+  // state that has it, and an error ends the exploration.
+  void check_carried(ValueId id, std::string_view what, SourceRange where) {
+    if (id < judged_.size() && judged_[id]) return;
+    if (judged_.size() <= id) judged_.resize(std::size_t{id} + 1, false);
+    judged_[id] = true;
+    const DoubleFit fit = double_fit(values_[id]);
+    if (fit == DoubleFit::kFaithful) return;
+    const std::string message = carried_value_message(values_[id], fit, what);
+    if (fit == DoubleFit::kSubnormal) {
+      diagnostics_.warning(where, message + " (first in state " + state_text() + ")");
+      return;
+    }
+    diagnostics_.error(where, message + " in state " + state_text());
+    throw ExplorationFailed{};
   }
 
   [[nodiscard]] std::string state_text() const {
@@ -306,8 +327,11 @@ class Explorer {
         ValueId& slot =
             reward.action ? table.choice[s * num_actions + *reward.action] : table.state[s];
         const Rational value = evaluate([&] { return evaluate_number(reward.value, valuation_); });
-        slot = slot == RationalPool::kZero ? values_.intern(value)
-                                           : values_.intern(values_[slot] + value);
+        const bool summed = slot != RationalPool::kZero;
+        slot = summed ? values_.intern(values_[slot] + value) : values_.intern(value);
+        // A constant alone was judged by the checker already.
+        if (summed || !reward.value.is_constant())
+          check_carried(slot, "reward", reward.value.range);
       }
     }
     return table;
@@ -315,6 +339,7 @@ class Explorer {
 
   const ModelIR& ir_;
   DiagnosticEngine& diagnostics_;
+  std::vector<bool> judged_;  // by ValueId: checked by check_carried() already
   const ExploreOptions& options_;
   StateStore store_;
   std::vector<std::int64_t> valuation_;

@@ -114,6 +114,7 @@ struct ModelIR {
   std::vector<ContextIR> contexts;
   SwitchingModel switching;
   Objective objective;
+  SourceRange objective_range;     // the spec's discount or horizon; else the model's name
   std::optional<Rational> period;  // seconds per step (continuous models)
 };
 

@@ -36,6 +36,10 @@ struct ResolvedObjective {
 ResolvedObjective resolve_objective(const model::ExplicitModel& model,
                                     const PolicyOptions& options);
 
+// The stopping threshold is never below this many units of double rounding of max|V|
+// (value_iteration.cpp): a smaller tolerance cannot be told apart from rounding noise.
+inline constexpr double kResolutionUlps = 8;
+
 // Stop when successive iterates differ by at most this in the max norm: tolerance(1-γ)/(2γ).
 // Then (Puterman 1994, Theorem 6.3.1) the greedy policy of the last iterate is
 // tolerance-optimal and the last iterate is within tolerance/2 of the optimal values.

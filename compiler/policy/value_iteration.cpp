@@ -2,10 +2,21 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <utility>
 
 namespace oasis::policy {
 namespace {
+
+// Doubles cannot resolve changes much below an ulp of the largest value: iterates that close
+// to the fixed point may step back and forth by an ulp forever. The stopping threshold never
+// goes below a few ulps of max|V| (docs/policies.md).
+double resolution_floor(const std::vector<double>& value) {
+  double largest = 0;
+  for (const double v : value)
+    largest = std::max(largest, std::abs(v));
+  return kResolutionUlps * std::numeric_limits<double>::epsilon() * largest;
+}
 
 // Jacobi sweeps from V = 0: the stopping bound of objective.hpp is the textbook one for
 // Jacobi updates, which Gauss-Seidel would change.
@@ -38,7 +49,7 @@ void discounted(const NumericContext& context, const PolicyOptions& options, Pol
     std::swap(value, next);
     ++policy.iterations;
     policy.residual = change;
-    if (change <= threshold) {
+    if (change <= std::max(threshold, resolution_floor(value))) {
       policy.converged = true;
       break;
     }

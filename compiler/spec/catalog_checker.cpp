@@ -3,6 +3,7 @@
 #include <string>
 #include <vector>
 
+#include "support/double_range.hpp"
 #include "support/text.hpp"
 
 namespace oasis::spec {
@@ -64,6 +65,10 @@ void stay_matrix(const ast::SwitchingDecl& decl, model::ModelIR& ir, DiagnosticE
   }
   // Stay with probability p, otherwise move to one of the other N-1 contexts uniformly.
   const Rational move = n > 1 ? (1 - *stay) / Rational(static_cast<long>(n - 1)) : Rational(0);
+  if (!check_carried_value(move, "the probability of moving to each other context",
+                           decl.stay->range, diagnostics)) {
+    return;
+  }
   ir.switching.matrix.assign(n * n, move);
   for (std::size_t i = 0; i < n; ++i)
     ir.switching.matrix[i * n + i] = *stay;

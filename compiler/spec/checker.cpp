@@ -10,6 +10,7 @@
 #include "spec/catalog_checker.hpp"
 #include "spec/expression_checker.hpp"
 #include "spec/scope.hpp"
+#include "support/double_range.hpp"
 #include "support/text.hpp"
 
 namespace oasis::spec {
@@ -37,6 +38,7 @@ class Checker {
     if (mdp == nullptr) return std::nullopt;
     ir_.name = std::string(mdp->name.text);
     ir_.range = mdp->range;
+    ir_.objective_range = mdp->name.range;
     if (!decide_kind(*mdp)) return std::nullopt;
     declare_actions(*mdp);
     declare_constants(*mdp);
@@ -296,15 +298,11 @@ class Checker {
       diagnostics_.error(mdp.horizon->range, "give a 'discount' or a 'horizon', not both");
     }
     if (mdp.discount) {
-      auto value = expressions_.constant_number(*mdp.discount->value, "the discount");
-      if (value && (*value <= 0 || *value > 1)) {
-        diagnostics_.error(mdp.discount->value->range,
-                           "discount must be in (0, 1], not " + describe(*value));
-      } else if (value) {
-        ir_.objective.discount = *value;
-      }
+      ir_.objective_range = mdp.discount->value->range;
+      check_discount(*mdp.discount->value, mdp.horizon.has_value());
     }
     if (mdp.horizon) {
+      ir_.objective_range = mdp.horizon->value->range;
       auto value = expressions_.constant_integer(*mdp.horizon->value, "the horizon");
       if (value && (*value < 1 || *value > 1'000'000'000)) {
         diagnostics_.error(mdp.horizon->value->range, "horizon must be between 1 and 10^9 steps");
@@ -319,6 +317,26 @@ class Checker {
       } else if (value) {
         ir_.period = *value;
       }
+    }
+  }
+
+  // The policy solver works in doubles (docs/policies.md): a discount must stay a discount
+  // there, and 1 is allowed only with a finite horizon, where values stay finite.
+  void check_discount(const ast::Expr& expr, bool has_horizon) {
+    auto value = expressions_.constant_number(expr, "the discount");
+    if (!value) return;
+    if (*value <= 0 || *value > 1) {
+      diagnostics_.error(expr.range, "discount must be in (0, 1], not " + describe(*value));
+    } else if (*value == 1 && !has_horizon) {
+      diagnostics_.error(expr.range,
+                         "discount 1 over an infinite horizon may give infinite values: write a "
+                         "discount below 1, or 'horizon N' for undiscounted rewards over N steps");
+    } else if (*value < 1 && to_double(*value) == 1) {
+      diagnostics_.error(expr.range, "discount 1 - " + describe(1 - *value) +
+                                         " rounds to 1 in double precision, where the policy "
+                                         "is solved; write at most 1 - 2^-53 (0.9999999999999999)");
+    } else {
+      ir_.objective.discount = *value;
     }
   }
 
@@ -427,6 +445,8 @@ class Checker {
         ok = false;
       } else if (p.constant > 1) {
         diagnostics_.error(p.range, "probability " + describe(p.constant) + " is greater than 1");
+        ok = false;
+      } else if (!check_carried_value(p.constant, "probability", p.range, diagnostics_)) {
         ok = false;
       }
       sum += p.constant;
@@ -537,6 +557,11 @@ class Checker {
     const ExpressionRules value_rules{.discrete_state = !continuous, .place = "in a reward value"};
     auto value = expressions_.check_typed(*item.value, value_rules, Type::Real, "a reward value");
     if (!guard || !value) return std::nullopt;
+    // State-dependent values (and sums of several rewards) are checked during exploration.
+    if (value->is_constant() &&
+        !check_carried_value(value->constant, "reward", item.value->range, diagnostics_)) {
+      return std::nullopt;
+    }
     if (continuous && !polyhedral_constraints(*guard, ir_.continuous.size(), ir_.regions)) {
       diagnostics_.error(item.guard->range,
                          "a continuous reward condition must be a conjunction "

@@ -4,6 +4,7 @@
 #include <string>
 #include <utility>
 
+#include "support/double_range.hpp"
 #include "support/text.hpp"
 
 namespace oasis::spec {
@@ -292,17 +293,26 @@ std::optional<Expression> ExpressionChecker::check_typed(const ast::Expr& expr,
   return checked;
 }
 
-std::optional<Rational> ExpressionChecker::constant_number(const ast::Expr& expr,
-                                                           std::string_view what) {
+std::optional<Rational> ExpressionChecker::constant_value(const ast::Expr& expr,
+                                                          std::string_view what) {
   const ExpressionRules rules{.place = "in a constant expression"};
   auto checked = check_typed(expr, rules, Type::Real, what);
   if (!checked) return std::nullopt;
   return checked->constant;
 }
 
+std::optional<Rational> ExpressionChecker::constant_number(const ast::Expr& expr,
+                                                           std::string_view what) {
+  auto value = constant_value(expr, what);
+  if (!value || !check_carried_value(*value, what, expr.range, diagnostics_)) return std::nullopt;
+  return value;
+}
+
+// Integers (horizons, ranges of discrete variables) are not carried as doubles: only their
+// own bounds apply.
 std::optional<std::int64_t> ExpressionChecker::constant_integer(const ast::Expr& expr,
                                                                 std::string_view what) {
-  auto value = constant_number(expr, what);
+  auto value = constant_value(expr, what);
   if (!value) return std::nullopt;
   if (value->get_den() != 1 || !value->get_num().fits_slong_p()) {
     diagnostics_.error(

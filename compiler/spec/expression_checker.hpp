@@ -32,7 +32,9 @@ class ExpressionChecker {
   std::optional<model::Expression> check_typed(const ast::Expr& expr, const ExpressionRules& rules,
                                                model::Type type, std::string_view what);
 
-  // A constant number (constant folding must succeed). `what` is used in messages.
+  // A constant number (constant folding must succeed) that a catalog can carry as a double
+  // (support/double_range.hpp: an error beyond the double range, a warning when subnormal).
+  // `what` is used in messages.
   std::optional<Rational> constant_number(const ast::Expr& expr, std::string_view what);
   // A constant integer that fits in 64 bits.
   std::optional<std::int64_t> constant_integer(const ast::Expr& expr, std::string_view what);
@@ -43,6 +45,7 @@ class ExpressionChecker {
   std::optional<model::Expression> binary(const ast::Expr& expr, const ExpressionRules& rules);
   std::optional<model::Expression> call(const ast::Expr& expr, const ExpressionRules& rules);
   std::optional<model::Expression> fold(model::Expression expr);
+  std::optional<Rational> constant_value(const ast::Expr& expr, std::string_view what);
   bool expect_type(const model::Expression& expr, model::Type type, std::string_view context);
 
   const Scope& scope_;

@@ -102,11 +102,34 @@ double to_double(const Rational& value) {
   return (bits & 1U) == 0 ? truncated : away;
 }
 
+std::string scientific(const Rational& value) {
+  // mpf's exponent is a long, so this works far beyond the range of a double.
+  const mpf_class approximate(value, 64);
+  mp_exp_t exponent = 0;
+  char* digits = mpf_get_str(nullptr, &exponent, 10, 6, approximate.get_mpf_t());
+  std::string mantissa = digits;
+  void (*release)(void*, std::size_t) = nullptr;
+  mp_get_memory_functions(nullptr, nullptr, &release);
+  release(digits, std::strlen(digits) + 1);
+  if (mantissa.empty() || mantissa == "0") return "0";
+  const bool negative = mantissa[0] == '-';
+  if (negative) mantissa.erase(0, 1);
+  std::string text = negative ? "-" : "";
+  text += mantissa.substr(0, 1);
+  if (mantissa.size() > 1) text += "." + mantissa.substr(1);
+  return text + "e" + (exponent - 1 >= 0 ? "+" : "") + std::to_string(exponent - 1);
+}
+
 std::string describe(const Rational& value) {
-  if (value.get_den() == 1) return to_string(value);
+  std::string exact = to_string(value);
+  if (exact.size() > kMaxDescribedDigits) {
+    return "about " + scientific(value) + " (an exact fraction of " + std::to_string(exact.size()) +
+           " characters)";
+  }
+  if (value.get_den() == 1) return exact;
   char decimal[32];
   std::snprintf(decimal, sizeof decimal, "%.6g", to_double(value));
-  return to_string(value) + " (" + decimal + ")";
+  return exact + " (" + decimal + ")";
 }
 
 std::size_t hash_value(const Rational& value) {

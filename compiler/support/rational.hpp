@@ -24,8 +24,13 @@ std::optional<Rational> parse_rational(std::string_view text);
 
 // "1/3", "2", "-5/2": exact and canonical.
 std::string to_string(const Rational& value);
-// "1/3 (0.333333)" for messages; plain "2" when the value is an integer.
+// "1/3 (0.333333)" for messages; plain "2" when the value is an integer. A value whose exact
+// text is longer than kMaxDescribedDigits is shown as "about 1e+1000 (an exact fraction of N
+// characters)", so that a hostile number cannot make a message megabytes long.
 std::string describe(const Rational& value);
+inline constexpr std::size_t kMaxDescribedDigits = 48;
+// "1.23457e+1000": six significant digits, for any magnitude (not limited to doubles).
+std::string scientific(const Rational& value);
 // The nearest double (what emitted tables carry).
 double to_double(const Rational& value);
 
