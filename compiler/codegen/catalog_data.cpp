@@ -3,6 +3,7 @@
 #include <cstdio>
 
 #include "bisim/quotient.hpp"
+#include "oasis/rt/spec_hash.hpp"
 #include "bisim/refinement.hpp"
 #include "policy/value_iteration.hpp"
 #include "support/mapped_file.hpp"
@@ -176,19 +177,10 @@ std::optional<CatalogData> build_catalog(const model::ExplicitModel& model, std:
   return catalog;
 }
 
-std::uint64_t spec_hash(std::string_view text) {
-  std::uint64_t hash = 0xcbf29ce484222325ULL;
-  for (char c : text) {
-    hash ^= static_cast<unsigned char>(c);
-    hash *= 0x100000001b3ULL;
-  }
-  return hash;
-}
-
 std::uint64_t spec_hash_of_file(const std::string& path) {
   MappedFile file;
   std::string error;
-  return file.open(path, std::size_t{1} << 34, error) ? spec_hash(file.text()) : 0;
+  return file.open(path, std::size_t{1} << 34, error) ? rt::spec_hash(file.text()) : 0;
 }
 
 std::string hash_text(std::uint64_t hash) {

@@ -74,9 +74,9 @@ struct BuildOptions {
 std::optional<CatalogData> build_catalog(const model::ExplicitModel& model, std::uint64_t spec_hash,
                                          const BuildOptions& options, std::string& error);
 
-// FNV-1a over the spec's bytes: the catalog remembers which spec it was compiled from.
-std::uint64_t spec_hash(std::string_view text);
-// The same over a file's bytes; 0 when it cannot be read (the caller has read it already).
+// rt::spec_hash (FNV-1a 64, oasis/rt/spec_hash.hpp) over a file's bytes: the catalog
+// remembers which spec it was compiled from. 0 when the file cannot be read (the caller has
+// read it already).
 std::uint64_t spec_hash_of_file(const std::string& path);
 // A hash as 16 hexadecimal digits, as JSON and messages show it.
 std::string hash_text(std::uint64_t hash);

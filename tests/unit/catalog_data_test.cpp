@@ -4,11 +4,16 @@
 
 #include "codegen/catalog_data.hpp"
 
+#include <fstream>
+#include <iterator>
+#include <string>
+
 #include <gtest/gtest.h>
 
 #include "../support/spec_models.hpp"
 #include "oasis/rt/attention_filter.hpp"
 #include "oasis/rt/catalog_view.hpp"
+#include "oasis/rt/spec_hash.hpp"
 
 namespace oasis {
 namespace {
@@ -99,10 +104,23 @@ mdp m {
   EXPECT_NE(error.find("one reward R(s) per abstract state"), std::string::npos) << error;
 }
 
-TEST(CatalogData, SpecHashIsStableAndSensitive) {
-  EXPECT_EQ(codegen::spec_hash("mdp m {}"), codegen::spec_hash("mdp m {}"));
-  EXPECT_NE(codegen::spec_hash("mdp m {}"), codegen::spec_hash("mdp n {}"));
-  EXPECT_EQ(codegen::spec_hash(""), 0xcbf29ce484222325ULL);  // FNV-1a offset basis
+TEST(CatalogData, SpecHashIsFnv1a64) {
+  EXPECT_EQ(rt::spec_hash("mdp m {}"), rt::spec_hash("mdp m {}"));
+  EXPECT_NE(rt::spec_hash("mdp m {}"), rt::spec_hash("mdp n {}"));
+  // Published FNV-1a 64 test values.
+  EXPECT_EQ(rt::spec_hash(""), 0xcbf29ce484222325ULL);
+  EXPECT_EQ(rt::spec_hash("a"), 0xaf63dc4c8601ec8cULL);
+  EXPECT_EQ(rt::spec_hash("foobar"), 0x85944171f73967e8ULL);
+  const std::string_view text = "foobar";
+  EXPECT_EQ(rt::fnv1a64(reinterpret_cast<const unsigned char*>(text.data()), text.size()),
+            rt::spec_hash(text));
+}
+
+TEST(CatalogData, SpecHashOfAFileHashesItsBytes) {
+  const std::string path = std::string(OASIS_SOURCE_DIR) + "/specs/discrete_tracking.oasis";
+  std::ifstream in(path, std::ios::binary);
+  const std::string text{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+  EXPECT_EQ(codegen::spec_hash_of_file(path), rt::spec_hash(text));
 }
 
 }  // namespace

@@ -24,7 +24,7 @@ codegen::CatalogData paper_catalog(std::optional<double> p_correct = std::nullop
   codegen::BuildOptions options;
   options.p_correct = p_correct;
   std::string error;
-  auto catalog = codegen::build_catalog(model, codegen::spec_hash("spec"), options, error);
+  auto catalog = codegen::build_catalog(model, rt::spec_hash("spec"), options, error);
   EXPECT_TRUE(catalog) << error;
   return std::move(*catalog);
 }

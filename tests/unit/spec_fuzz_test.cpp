@@ -35,6 +35,7 @@
 #include <unistd.h>
 
 #include "model/explorer.hpp"
+#include "oasis/rt/spec_hash.hpp"
 #include "spec/frontend.hpp"
 
 namespace oasis {
@@ -134,16 +135,6 @@ std::vector<SpecInput> spec_inputs() {
       inputs.push_back({test_name(prefix, path), read_file(path)});
   }
   return inputs;
-}
-
-// FNV-1a: a seed per spec that does not depend on the standard library's std::hash.
-std::uint64_t fnv1a(std::string_view text) {
-  std::uint64_t hash = 0xcbf29ce484222325ULL;
-  for (char c : text) {
-    hash ^= static_cast<unsigned char>(c);
-    hash *= 0x100000001b3ULL;
-  }
-  return hash;
 }
 
 // ---- mutation -------------------------------------------------------------------------------
@@ -317,7 +308,7 @@ TEST_P(SpecFuzz, Truncations) {
 }
 
 TEST_P(SpecFuzz, Mutations) {
-  const std::uint64_t seed = kSeed ^ fnv1a(GetParam().name);
+  const std::uint64_t seed = kSeed ^ rt::spec_hash(GetParam().name);
   std::mt19937_64 rng(seed);
   int failures = 0;
   const char* override_count = std::getenv("OASIS_FUZZ_MUTANTS");

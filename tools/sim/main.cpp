@@ -12,6 +12,7 @@
 #include <CLI/CLI.hpp>
 
 #include "codegen/catalog_data.hpp"
+#include "oasis/rt/spec_hash.hpp"
 #include "model/explorer.hpp"
 #include "sim/report.hpp"
 #include "sim/table1.hpp"
@@ -85,7 +86,7 @@ int run_table1_command(const Table1Arguments& arguments) {
   std::vector<std::string> state_names;
   for (std::uint32_t s = 0; s < model->num_states(); ++s)
     state_names.push_back(model->states.name(s));
-  const sim::Table1Experiment experiment(std::move(*model), codegen::spec_hash(*text));
+  const sim::Table1Experiment experiment(std::move(*model), rt::spec_hash(*text));
 
   namespace fs = std::filesystem;
   std::string error;

@@ -31,6 +31,7 @@
 #include <vector>
 
 #include "oasis/rt/catalog_view.hpp"
+#include "oasis/rt/spec_hash.hpp"
 
 namespace oasis {
 namespace rt {
@@ -45,16 +46,6 @@ inline constexpr std::uint32_t kCatalogGlobalArrays = 5;
 inline constexpr std::uint32_t kCatalogArraysPerAbstraction = 11;
 /// Refuse files larger than this (1 GiB): a catalog is tables for a robot, not a dataset.
 inline constexpr std::uint64_t kMaxCatalogFileBytes = std::uint64_t{1} << 30;
-
-/// FNV-1a 64-bit over `size` bytes.
-inline std::uint64_t fnv1a64(const unsigned char* data, std::size_t size,
-                             std::uint64_t hash = 0xcbf29ce484222325ULL) noexcept {
-  for (std::size_t i = 0; i < size; ++i) {
-    hash ^= data[i];
-    hash *= 0x100000001b3ULL;
-  }
-  return hash;
-}
 
 /// A catalog loaded from bytes: owns them (8-byte aligned) and exposes a CatalogView into
 /// them. Move-only, so the view's pointers stay valid.
