@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "cli/commands.hpp"
+#include "geom/relevance.hpp"
 #include "model/statistics.hpp"
 
 namespace oasis::cli {
@@ -42,6 +43,25 @@ std::vector<std::string> context_names(const LoadedModel& loaded) {
       names.push_back(context.name);
   }
   return names;
+}
+
+// Attention by exact projection (geom/relevance.hpp): which variables the context reads.
+void add_relevance(const model::ModelIR& ir, std::size_t context, nlohmann::json& out) {
+  const geom::Relevance relevance = geom::analyse_relevance(ir, context);
+  auto names = [&](const std::vector<std::uint32_t>& indices) {
+    nlohmann::json list = nlohmann::json::array();
+    for (const std::uint32_t v : indices)
+      list.push_back(ir.continuous[v].name);
+    return list;
+  };
+  out["relevant_variables"] = names(relevance.relevant);
+  out["ignored_variables"] = names(relevance.ignored);
+  nlohmann::json reasons = nlohmann::json::object();
+  for (std::size_t i = 0; i < relevance.relevant.size(); ++i)
+    reasons[ir.continuous[relevance.relevant[i]].name] = relevance.reasons[i];
+  out["relevance_reasons"] = reasons;
+  out["exact_projection"] = relevance.exact();
+  out["failed_conditions"] = relevance.failed_conditions;
 }
 
 // `stats`: context_statistics() of the explicit model, empty for continuous models; computed
@@ -80,6 +100,7 @@ nlohmann::json to_json(const LoadedModel& loaded,
     } else {  // continuous: no finite state space until the geometry layer partitions it
       context["states"] = nullptr;
       context["transitions"] = nullptr;
+      add_relevance(*loaded.ir, c, context);
     }
     contexts.push_back(context);
   }
@@ -108,6 +129,27 @@ std::string reward_range(const model::ContextStatistics& stats) {
   return "[" + to_string(*stats.reward_min) + ", " + to_string(*stats.reward_max) + "]";
 }
 
+std::string joined(const nlohmann::json& names) {
+  std::string text;
+  for (const auto& name : names)
+    text += (text.empty() ? "" : ", ") + name.get<std::string>();
+  return text.empty() ? "none" : text;
+}
+
+void print_relevance(const nlohmann::json& context) {
+  std::cout << "continuous: attends to " << joined(context["relevant_variables"]) << "; ignores "
+            << joined(context["ignored_variables"])
+            << (context["exact_projection"].get<bool>() ? " (exact projection)\n"
+                                                        : " (NOT an exact projection)\n");
+  for (const auto& [name, reason] : context["relevance_reasons"].items()) {
+    std::cout << "  " << std::setw(24) << "" << name << ": read by " << reason.get<std::string>()
+              << '\n';
+  }
+  for (const auto& condition : context["failed_conditions"])
+    std::cout << "  " << std::setw(24) << ""
+              << "fails: " << condition.get<std::string>() << '\n';
+}
+
 void print_text(const LoadedModel& loaded, const std::vector<model::ContextStatistics>& stats) {
   const nlohmann::json summary = to_json(loaded, stats);
   std::cout << loaded.path << ": model '" << summary["model"].get<std::string>() << "' ("
@@ -131,7 +173,7 @@ void print_text(const LoadedModel& loaded, const std::vector<model::ContextStati
       std::cout << std::setw(12) << stats[c].states << std::setw(12) << stats[c].choices
                 << std::setw(14) << stats[c].transitions << reward_range(stats[c]) << '\n';
     } else {
-      std::cout << "(continuous; partitioned by the geometry layer)\n";
+      print_relevance(summary["contexts"][c]);
     }
   }
 }
@@ -163,8 +205,9 @@ CommandRunner add_info_command(CLI::App& app) {
       "Counts are those of the explicit model: every declared state of an explicit spec,\n"
       "the reachable states of a factored one. 'transitions' counts (state, action,\n"
       "successor) triples with positive probability; 'choices' the enabled (state, action)\n"
-      "pairs. Continuous models report their variables; their states come from the\n"
-      "geometry layer.\n\n"
+      "pairs. Continuous models report their variables and, per context, the variables it\n"
+      "attends to: those its rewards read, closed under the dynamics (relevant_variables,\n"
+      "ignored_variables; docs/geometry.md); their states come from the geometry layer.\n\n"
       "Examples:\n  oasisc info specs/discrete_tracking.oasis\n"
       "  oasisc info specs/discrete_tracking.oasis --json | jq '.contexts[].name'");
   command->add_option("file", options->file, "Spec (.oasis) or model (.aut, .tra) file")
