@@ -1,0 +1,196 @@
+#include "geom/grid_refinement.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <set>
+
+#include "support/text.hpp"
+
+namespace oasis::geom {
+namespace {
+
+using Breaks = std::vector<std::set<Rational>>;
+
+Breaks mandatory_breaks(const ContextGeometry& geometry) {
+  Breaks breaks(geometry.dimension());
+  for (std::size_t i = 0; i < geometry.dimension(); ++i) {
+    breaks[i].insert(geometry.domain[i].low);
+    breaks[i].insert(geometry.domain[i].high);
+  }
+  for (const RewardBox& reward : geometry.rewards) {
+    for (std::size_t i = 0; i < geometry.dimension(); ++i) {
+      const Interval& domain = geometry.domain[i];
+      for (const Rational& t : {reward.box[i].low, reward.box[i].high})
+        if (t > domain.low && t < domain.high) breaks[i].insert(t);
+    }
+  }
+  return breaks;
+}
+
+bool stochastic_somewhere(const ContextGeometry& geometry, std::size_t axis) {
+  return std::any_of(geometry.actions.begin(), geometry.actions.end(),
+                     [&](const AxisDynamics& a) { return a.disturbance[axis].has_value(); });
+}
+
+// The narrowest disturbance on an axis: the unit its cells are measured in.
+double narrowest_width(const ContextGeometry& geometry, std::size_t axis) {
+  double narrowest = HUGE_VAL;
+  for (const AxisDynamics& action : geometry.actions) {
+    if (const auto& w = action.disturbance[axis])
+      narrowest = std::min(narrowest, to_double(w->high - w->low));
+  }
+  return narrowest;
+}
+
+// Cuts every segment between consecutive breaks of `axis` into pieces of at most `step`.
+std::set<Rational> subdivided(const std::set<Rational>& breaks, double step) {
+  std::set<Rational> out = breaks;
+  for (auto it = breaks.begin(); std::next(it) != breaks.end(); ++it) {
+    const Rational low = *it;
+    const Rational length = *std::next(it) - low;
+    const double pieces = std::ceil(to_double(length) / step);
+    const long count = static_cast<long>(std::max(1.0, pieces));
+    for (long k = 1; k < count; ++k)
+      out.insert(low + length * Rational(k, count));
+  }
+  return out;
+}
+
+std::size_t cell_count(const Breaks& breaks) {
+  double cells = 1;
+  for (const auto& axis : breaks)
+    cells *= static_cast<double>(axis.size() - 1);
+  return cells > 1e18 ? static_cast<std::size_t>(1e18) : static_cast<std::size_t>(cells);
+}
+
+// The largest half-width of the cells of every axis.
+std::vector<Rational> widest_half_widths(const Breaks& breaks) {
+  std::vector<Rational> half(breaks.size());
+  for (std::size_t i = 0; i < breaks.size(); ++i) {
+    for (auto it = breaks[i].begin(); std::next(it) != breaks[i].end(); ++it)
+      half[i] = std::max(half[i], Rational((*std::next(it) - *it) / 2));
+  }
+  return half;
+}
+
+Rational partition_error(const ContextGeometry& geometry, const Breaks& breaks) {
+  const std::vector<Rational> half = widest_half_widths(breaks);
+  Rational worst = 0;
+  for (const AxisDynamics& action : geometry.actions)
+    worst = std::max(worst, cell_error(action, half));
+  return worst;
+}
+
+// Breaks of the stochastic axes for cells of `scale` times each axis's narrowest disturbance.
+Breaks with_scale(const ContextGeometry& geometry, const Breaks& mandatory, double scale) {
+  Breaks breaks = mandatory;
+  for (std::size_t i = 0; i < geometry.dimension(); ++i) {
+    if (stochastic_somewhere(geometry, i))
+      breaks[i] = subdivided(mandatory[i], scale * narrowest_width(geometry, i));
+  }
+  return breaks;
+}
+
+// The pre-images of every break of axis i under every action that moves i without a
+// disturbance, until closed. False when the budget is passed.
+bool close_under_preimages(const ContextGeometry& geometry, Breaks& breaks, std::size_t max_breaks,
+                           std::size_t& rounds) {
+  for (std::size_t i = 0; i < geometry.dimension(); ++i) {
+    const Interval& domain = geometry.domain[i];
+    std::vector<Rational> pending(breaks[i].begin(), breaks[i].end());
+    while (!pending.empty()) {
+      ++rounds;
+      std::vector<Rational> found;
+      for (const AxisDynamics& action : geometry.actions) {
+        if (action.disturbance[i]) continue;
+        for (const Rational& t : pending) {
+          const Rational preimage = (t - action.offset[i]) / action.matrix[i][i];
+          if (preimage > domain.low && preimage < domain.high &&
+              breaks[i].insert(preimage).second) {
+            found.push_back(preimage);
+          }
+        }
+      }
+      if (breaks[i].size() > max_breaks) return false;
+      pending = std::move(found);
+    }
+  }
+  return true;
+}
+
+}  // namespace
+
+Rational cell_error(const AxisDynamics& action, std::span<const Rational> half_widths) {
+  const std::size_t d = half_widths.size();
+  Rational worst = 0;
+  // Every vertex v - c = (±r_1, ..., ±r_d); 2^d of them, d is the number of relevant axes.
+  for (std::size_t signs = 0; signs < (std::size_t{1} << d); ++signs) {
+    Rational total = 0;
+    for (std::size_t i = 0; i < d; ++i) {
+      const auto& w = action.disturbance[i];
+      if (!w) continue;
+      Rational shift = 0;
+      for (std::size_t j = 0; j < d; ++j) {
+        const Rational term = action.matrix[i][j] * half_widths[j];
+        shift += ((signs >> j) & 1U) != 0 ? -term : term;
+      }
+      total += abs(shift) / (w->high - w->low);
+    }
+    worst = std::max(worst, total);
+  }
+  return worst;
+}
+
+std::optional<GridPartition> partition_grid(const ContextGeometry& geometry,
+                                            const GridTarget& target, std::string& error) {
+  const Breaks mandatory = mandatory_breaks(geometry);
+  // ε grows with the scale of the cells and the cell count shrinks: take the coarsest scale
+  // that meets the target, or, when that needs too many cells, the finest that fits the
+  // budget. Bisection on doubles chooses the grid; its ε is then computed exactly.
+  auto meets = [&](double scale) {
+    return to_double(partition_error(geometry, with_scale(geometry, mandatory, scale))) <=
+           target.epsilon;
+  };
+  auto fits = [&](double scale) {
+    return cell_count(with_scale(geometry, mandatory, scale)) <= target.max_cells;
+  };
+  double fine = 0;  // meets the target (a scale of 0 would, with infinitely many cells)
+  double coarse = 1;
+  while (meets(coarse) && coarse < 1e6)
+    coarse *= 2;
+  for (int step = 0; step < 40; ++step) {
+    const double middle = (fine + coarse) / 2;
+    (meets(middle) ? fine : coarse) = middle;
+  }
+  double scale = fine > 0 ? fine : coarse;
+  if (!fits(scale)) {
+    double crowded = scale;  // too many cells
+    double sparse = scale;
+    while (!fits(sparse) && sparse < 1e6)
+      sparse *= 2;
+    for (int step = 0; step < 40; ++step) {
+      const double middle = (crowded + sparse) / 2;
+      (fits(middle) ? sparse : crowded) = middle;
+    }
+    scale = sparse;
+  }
+  Breaks breaks = with_scale(geometry, mandatory, scale);
+  GridPartition result;
+  if (!close_under_preimages(geometry, breaks, target.max_cells + 1, result.preimage_rounds) ||
+      cell_count(breaks) > target.max_cells) {
+    error = "context " + quoted(geometry.context) + ": the partition needs more than " +
+            std::to_string(target.max_cells) +
+            " cells (pre-images of deterministic moves do not close, or the error target "
+            "is too fine); raise --max-cells or the target epsilon";
+    return std::nullopt;
+  }
+  result.epsilon = partition_error(geometry, breaks);
+  result.met = to_double(result.epsilon) <= target.epsilon;
+  std::vector<std::vector<Rational>> axes;
+  for (const auto& axis : breaks)
+    axes.emplace_back(axis.begin(), axis.end());
+  result.grid = Grid(std::move(axes));
+  return result;
+}
+
+}  // namespace oasis::geom

@@ -1,0 +1,51 @@
+#pragma once
+// The partition of a context's relevant box into a rectilinear grid, and its sound error
+// bound (docs/geometry.md).
+//
+// 1. Mandatory breakpoints: the domain's ends and every reward box's edges, so that the
+//    reward is constant on every cell.
+// 2. Axes with a uniform disturbance are cut into equal pieces inside each mandatory segment,
+//    as fine as the error target asks (or the cell budget allows).
+// 3. Axes that some action moves without a disturbance (x' = a x + b) get the pre-images of
+//    their breakpoints under those maps, until nothing new appears: the classic bisimulation
+//    step for deterministic dynamics, which makes every cell's image fall inside one cell.
+//
+// The error bound of a cell C under action a: the successor of a point x of C is uniform on
+// the box A x + b + W; moving a uniform box of widths w_i by δ changes the probability of any
+// set by at most Σ_i |δ_i| / w_i. With the probabilities computed at C's centre c, the whole
+// row is off by at most ε_C,a = max over C's vertices v of Σ_i |(A (v - c))_i| / w_i, summed
+// over the axes with a disturbance (axes moved deterministically land in one cell from
+// every point of C, so they add nothing). This is monotone in C's half-widths, so the
+// context's ε is that of the widest cell shape, per action.
+
+#include <cstddef>
+#include <optional>
+#include <span>
+#include <string>
+
+#include "geom/context_geometry.hpp"
+#include "geom/grid.hpp"
+
+namespace oasis::geom {
+
+struct GridTarget {
+  double epsilon = 0.1;               // the error bound to reach
+  std::size_t max_cells = 1'000'000;  // refuse to refine past this many cells
+};
+
+struct GridPartition {
+  Grid grid;
+  Rational epsilon;  // the sound bound reached: max over cells and actions, exact
+  bool met = false;  // epsilon <= the target
+  std::size_t preimage_rounds = 0;
+};
+
+// ε_C,a for a cell of these half-widths (per relevant axis) under `action`.
+Rational cell_error(const AxisDynamics& action, std::span<const Rational> half_widths);
+
+// nullopt with `error` when the pre-image refinement passes the cell budget (the coarsest
+// partition may be infinite, as for a shift by an irrational-looking step).
+std::optional<GridPartition> partition_grid(const ContextGeometry& geometry,
+                                            const GridTarget& target, std::string& error);
+
+}  // namespace oasis::geom
