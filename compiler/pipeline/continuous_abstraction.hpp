@@ -1,0 +1,60 @@
+#pragma once
+// One context of a continuous model, abstracted end to end: the variables it attends to
+// (geom/relevance.hpp), a grid on them meeting the error target (geom/grid_refinement.hpp),
+// the finite MDP of the grid (geom/finite_mdp.hpp), its coarsest bisimulation (cells with
+// equal rows merge into one block) and the policy solved on the quotient.
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "geom/grid.hpp"
+#include "geom/relevance.hpp"
+#include "model/explicit_model.hpp"
+#include "model/model_ir.hpp"
+#include "policy/objective.hpp"
+
+namespace oasis::pipeline {
+
+struct ContinuousOptions {
+  double epsilon = 0.1;             // the error bound to reach per context
+  std::size_t max_cells = 200'000;  // per context
+  bool attention = true;            // false: partition the full state (the baseline)
+  policy::PolicyOptions policy;
+};
+
+struct StageSeconds {
+  double grid = 0;
+  double finite_mdp = 0;
+  double bisimulation = 0;
+  double policy = 0;
+};
+
+struct ContinuousAbstraction {
+  std::string context;
+  geom::Relevance relevance;            // relevance.relevant: the grid's axes, in order
+  std::vector<std::string> axis_names;  // their variable names
+  geom::Grid grid;
+  Rational epsilon;  // the sound bound on every row's error (0: exact bisimulation)
+  bool met = false;  // epsilon <= the target
+  std::vector<std::uint32_t> cell_block;  // [cells] the block of every cell
+  std::uint32_t outside_block = 0;        // the block of `outside`
+  std::uint32_t num_blocks = 0;
+  std::vector<double> block_reward;   // [blocks]
+  std::vector<std::uint32_t> policy;  // [blocks], rt::kNoAction never (every action enabled)
+  std::vector<double> value;          // [blocks]
+  model::ExplicitModel quotient;      // over blocks: the transition rows, for analysis
+  std::size_t finite_edges = 0;       // edges of the finite MDP before quotienting
+  StageSeconds seconds;
+
+  [[nodiscard]] bool exact() const { return sgn(epsilon) == 0 && relevance.exact(); }
+};
+
+// nullopt with `error` when the context is outside what the geometry path handles, or the
+// partition needs more cells than allowed.
+std::optional<ContinuousAbstraction> abstract_context(const model::ModelIR& ir, std::size_t context,
+                                                      const ContinuousOptions& options,
+                                                      std::string& error);
+
+}  // namespace oasis::pipeline
