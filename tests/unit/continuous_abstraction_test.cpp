@@ -7,7 +7,11 @@
 #include <string>
 
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
+#include "codegen/abstraction_svg.hpp"
+#include "codegen/continuous_json.hpp"
+#include "pipeline/continuous_catalog.hpp"
 #include "spec/frontend.hpp"
 
 namespace oasis {
@@ -84,6 +88,77 @@ TEST(ContinuousAbstraction, Go1ContextAttendsToItsHumanAndMeetsTheTarget) {
   const std::uint32_t block = abstraction->cell_block[*cell];
   EXPECT_EQ(abstraction->block_reward[block], 1.0);
   EXPECT_NEAR(abstraction->value[block], best, 0.2 * best);
+}
+
+constexpr const char* kLine = R"(
+mdp line {
+  continuous x : [0 .. 10];
+  actions left, right;
+  discount 0.9;
+  dynamics [left] { x' = x - 1; }
+  dynamics [right] { x' = x + 1; }
+  region goal = x >= 3 & x <= 4;
+}
+catalog { context at_goal { reward goal : 1; } }
+)";
+
+TEST(ContinuousCatalog, JsonFollowsTheContract) {
+  const model::ModelIR ir = checked_text(kLine);
+  std::string error;
+  const auto catalog = pipeline::build_continuous_catalog(ir, 7, {}, error);
+  ASSERT_TRUE(catalog) << error;
+  const nlohmann::json json = codegen::continuous_catalog_json(*catalog, true);
+  EXPECT_EQ(json["name"], "line");
+  EXPECT_EQ(json["variables"], nlohmann::json({"x"}));
+  EXPECT_EQ(json["actions"], nlohmann::json({"left", "right"}));
+  EXPECT_EQ(json["switching"], nlohmann::json({{1.0}}));
+  ASSERT_EQ(json["abstractions"].size(), 1U);
+  const nlohmann::json& abstraction = json["abstractions"][0];
+  EXPECT_EQ(abstraction["context"], "at_goal");
+  EXPECT_EQ(abstraction["relevant_variables"], nlohmann::json({"x"}));
+  EXPECT_EQ(abstraction["epsilon"], 0.0);
+  EXPECT_EQ(abstraction["exact"], true);
+  EXPECT_EQ(abstraction["num_blocks"], 11);
+  ASSERT_EQ(abstraction["cells"].size(), 10U);
+  // Cell 3 is 3 <= x <= 4: A = [[1], [-1]], b = [4, -3].
+  const nlohmann::json& cell = abstraction["cells"][3];
+  EXPECT_EQ(cell["A"], nlohmann::json({{1}, {-1}}));
+  EXPECT_EQ(cell["b"], nlohmann::json({4.0, -3.0}));
+  const int block = cell["block"];
+  EXPECT_EQ(abstraction["blocks"][block]["reward"], 1.0);
+  // Every `next` row is a distribution over blocks.
+  for (const auto& entry : abstraction["blocks"]) {
+    ASSERT_TRUE(entry.contains("next"));
+    for (const auto& [action, row] : entry["next"].items()) {
+      double total = 0;
+      for (const auto& pair : row) {
+        EXPECT_LT(pair[0].get<int>(), 11);
+        total += pair[1].get<double>();
+      }
+      EXPECT_NEAR(total, 1.0, 1e-12) << action;
+    }
+  }
+  EXPECT_FALSE(
+      codegen::continuous_catalog_json(*catalog, false)["abstractions"][0]["blocks"][0].contains(
+          "next"));
+}
+
+TEST(ContinuousCatalog, SvgShowsTheCellsAndTheCaption) {
+  const model::ModelIR ir = checked_text(kLine);
+  std::string error;
+  const auto catalog = pipeline::build_continuous_catalog(ir, 7, {}, error);
+  ASSERT_TRUE(catalog) << error;
+  const std::string svg = codegen::abstraction_svg(*catalog, 0);
+  EXPECT_EQ(svg.rfind("<svg", 0), 0U);
+  EXPECT_NE(svg.find("</svg>"), std::string::npos);
+  std::size_t rects = 0;
+  for (std::size_t at = svg.find("<rect"); at != std::string::npos; at = svg.find("<rect", at + 1))
+    ++rects;
+  EXPECT_EQ(rects, 10U + 2U);  // ten cells and two legend swatches
+  EXPECT_NE(svg.find("line / at_goal: attends to x; epsilon 0 (exact bisimulation)"),
+            std::string::npos)
+      << svg;
+  EXPECT_NE(svg.find("stroke=\"black\""), std::string::npos);  // the reward's outline
 }
 
 }  // namespace

@@ -1,0 +1,22 @@
+#pragma once
+// The JSON of a continuous catalog, for people and for tools outside the project (keep the
+// names: they are a contract, docs/geometry.md). Top level: format, name, spec_hash,
+// compiler_version, variables, actions, switching, prior, abstractions. Each abstraction:
+//   context, relevant_variables (names), epsilon (the sound bound), exact (bool),
+//   num_blocks, outside_block, grid (per relevant variable its breakpoints),
+//   cells: [{"A": [[...]], "b": [...], "block": z}]  meaning A x <= b over the relevant
+//          variables in the listed order (each cell a box: two rows per variable),
+//   blocks: [{"reward": r, "policy": "action", "value": v, "next": {...}}]
+// where `next` (only with transitions) maps each action name to [[block, probability], ...]
+// with zero entries omitted. Written compactly (no indentation): it can be large.
+
+#include <nlohmann/json.hpp>
+
+#include "pipeline/continuous_catalog.hpp"
+
+namespace oasis::codegen {
+
+nlohmann::json continuous_catalog_json(const pipeline::ContinuousCatalog& catalog,
+                                       bool with_transitions);
+
+}  // namespace oasis::codegen
