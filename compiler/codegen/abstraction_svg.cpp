@@ -131,8 +131,9 @@ std::string abstraction_svg(const pipeline::ContinuousCatalog& catalog, std::siz
   std::string attends;
   for (const std::string& name : abstraction.axis_names)
     attends += (attends.empty() ? "" : ", ") + name;
-  out << "<text x=\"" << number(kMargin) << "\" y=\"24\">" << catalog.name << " / "
-      << abstraction.context << ": attends to " << attends << "; epsilon "
+  out << "<text x=\"" << number(kMargin) << "\" y=\"20\">" << catalog.name << " / "
+      << abstraction.context << ": attends to " << attends << "</text>\n";
+  out << "<text x=\"" << number(kMargin) << "\" y=\"38\">epsilon "
       << number(to_double(abstraction.epsilon))
       << (abstraction.exact() ? " (exact bisimulation)" : " (approximation)") << "; "
       << grid.num_cells() << " cells, " << abstraction.num_blocks << " blocks"
