@@ -3,7 +3,8 @@
 #include <bit>
 #include <cstring>
 
-#include "oasis/rt/catalog_file.hpp"
+#include "oasis/rt/catalog_sections.hpp"
+#include "oasis/rt/spec_hash.hpp"
 #include "support/atomic_file.hpp"
 
 namespace oasis::codegen {
@@ -11,44 +12,64 @@ namespace {
 
 static_assert(std::endian::native == std::endian::little, "catalog files are little-endian");
 
+// Collects tagged sections, then lays out the header, the section table and the arrays
+// (catalog_sections.hpp). Sections are written in the order they are added.
 class Builder {
  public:
-  explicit Builder(std::uint32_t num_arrays) : num_arrays_(num_arrays) {
-    bytes_.assign(rt::kCatalogHeaderBytes + std::size_t{num_arrays} * 16, '\0');
-  }
-
   template <typename T>
   void put_at(std::size_t offset, T value) {
-    std::memcpy(bytes_.data() + offset, &value, sizeof value);
+    std::memcpy(header_.data() + offset, &value, sizeof value);
   }
 
-  // Appends the next array of the table of contents, 8-byte aligned.
   template <typename T>
-  void array(const T* data, std::size_t count) {
-    bytes_.resize((bytes_.size() + 7) / 8 * 8, '\0');
-    const std::size_t entry = rt::kCatalogHeaderBytes + std::size_t{next_++} * 16;
-    put_at<std::uint64_t>(entry, bytes_.size());
-    put_at<std::uint64_t>(entry + 8, count);
-    if (count > 0) bytes_.append(reinterpret_cast<const char*>(data), count * sizeof(T));
+  void section(rt::Section tag, std::uint32_t abstraction, const T* data, std::size_t count) {
+    std::string bytes(count * sizeof(T), '\0');
+    if (count > 0) std::memcpy(bytes.data(), data, bytes.size());
+    sections_.push_back({tag, abstraction, count, std::move(bytes)});
   }
   template <typename T>
-  void array(const std::vector<T>& data) {
-    array(data.data(), data.size());
+  void section(rt::Section tag, std::uint32_t abstraction, const std::vector<T>& data) {
+    section(tag, abstraction, data.data(), data.size());
   }
 
   std::string finish() {
-    bytes_.resize((bytes_.size() + 7) / 8 * 8, '\0');
-    put_at<std::uint32_t>(12, num_arrays_);
-    put_at<std::uint64_t>(16, bytes_.size());
-    const auto* data = reinterpret_cast<const unsigned char*>(bytes_.data());
-    put_at<std::uint64_t>(24, rt::fnv1a64(data + 32, bytes_.size() - 32));
-    return std::move(bytes_);
+    std::string out = header_;
+    const std::size_t table = out.size();
+    out.resize(table + sections_.size() * rt::kFormat2EntryBytes, '\0');
+    for (std::size_t k = 0; k < sections_.size(); ++k) {
+      out.resize((out.size() + 7) / 8 * 8, '\0');
+      const Pending& pending = sections_[k];
+      const std::size_t entry = table + k * rt::kFormat2EntryBytes;
+      write(out, entry, static_cast<std::uint32_t>(pending.tag));
+      write(out, entry + 4, pending.abstraction);
+      write<std::uint64_t>(out, entry + 8, out.size());
+      write<std::uint64_t>(out, entry + 16, pending.count);
+      out += pending.bytes;
+    }
+    out.resize((out.size() + 7) / 8 * 8, '\0');
+    write<std::uint32_t>(out, 8, rt::kCatalogFileFormat);
+    write<std::uint32_t>(out, 12, static_cast<std::uint32_t>(sections_.size()));
+    write<std::uint64_t>(out, 16, out.size());
+    const auto* data = reinterpret_cast<const unsigned char*>(out.data());
+    write<std::uint64_t>(out, 24, rt::fnv1a64(data + 32, out.size() - 32));
+    return out;
   }
 
  private:
-  std::uint32_t num_arrays_;
-  std::uint32_t next_ = 0;
-  std::string bytes_;
+  struct Pending {
+    rt::Section tag;
+    std::uint32_t abstraction;
+    std::size_t count;
+    std::string bytes;
+  };
+
+  template <typename T>
+  static void write(std::string& out, std::size_t offset, T value) {
+    std::memcpy(out.data() + offset, &value, sizeof value);
+  }
+
+  std::string header_ = std::string(rt::kCatalogHeaderBytes, '\0');
+  std::vector<Pending> sections_;
 };
 
 // All strings in one NUL-separated text, in the order the loader expects.
@@ -68,23 +89,24 @@ void add_strings(const CatalogData& catalog, Builder& out) {
     add(state);
   for (const AbstractionData& abstraction : catalog.abstractions)
     add(abstraction.context);
-  out.array(text.data(), text.size());
-  out.array(offsets);
+  out.section(rt::Section::kNameText, rt::kCatalogWide, text.data(), text.size());
+  out.section(rt::Section::kStringOffsets, rt::kCatalogWide, offsets);
 }
 
-void add_csr(const CsrData& csr, Builder& out) {
-  out.array(csr.choice_begin);
-  out.array(csr.target);
-  out.array(csr.probability);
+void add_csr(const CsrData& csr, std::uint32_t abstraction, rt::Section rows, rt::Section targets,
+             rt::Section probabilities, Builder& out) {
+  if (csr.choice_begin.empty()) return;  // absent: an optional section, or no robust section
+  out.section(rows, abstraction, csr.choice_begin);
+  out.section(targets, abstraction, csr.target);
+  out.section(probabilities, abstraction, csr.probability);
 }
 
 }  // namespace
 
 std::string binary_catalog(const CatalogData& catalog) {
   const auto n = static_cast<std::uint32_t>(catalog.abstractions.size());
-  Builder out(rt::kCatalogGlobalArrays + n * rt::kCatalogArraysPerAbstraction);
+  Builder out;
   out.put_at<std::uint64_t>(0, rt::kCatalogMagic);
-  out.put_at<std::uint32_t>(8, rt::kCatalogFormat);
   out.put_at<std::uint64_t>(32, catalog.spec_hash);
   out.put_at<std::uint32_t>(40, catalog.num_states);
   out.put_at<std::uint32_t>(44, catalog.num_actions);
@@ -92,20 +114,23 @@ std::string binary_catalog(const CatalogData& catalog) {
   out.put_at<std::uint32_t>(52, static_cast<std::uint32_t>(catalog.observation));
   out.put_at<double>(56, catalog.p_correct);
   add_strings(catalog, out);
-  out.array(catalog.switching);
-  out.array(catalog.prior);
+  out.section(rt::Section::kSwitching, rt::kCatalogWide, catalog.switching);
+  out.section(rt::Section::kPrior, rt::kCatalogWide, catalog.prior);
   std::vector<std::uint32_t> blocks;
   for (const AbstractionData& abstraction : catalog.abstractions)
     blocks.push_back(abstraction.num_blocks);
-  out.array(blocks);
-  for (const AbstractionData& abstraction : catalog.abstractions) {
-    out.array(abstraction.block_of);
-    out.array(abstraction.block_reward);
-    add_csr(abstraction.quotient, out);
-    out.array(abstraction.reward);
-    out.array(abstraction.policy);
-    out.array(abstraction.value);
-    add_csr(abstraction.state_transitions, out);
+  out.section(rt::Section::kBlockCounts, rt::kCatalogWide, blocks);
+  for (std::uint32_t i = 0; i < n; ++i) {
+    const AbstractionData& abstraction = catalog.abstractions[i];
+    out.section(rt::Section::kBlockOf, i, abstraction.block_of);
+    out.section(rt::Section::kBlockReward, i, abstraction.block_reward);
+    add_csr(abstraction.quotient, i, rt::Section::kQuotientRows, rt::Section::kQuotientTargets,
+            rt::Section::kQuotientProbabilities, out);
+    out.section(rt::Section::kReward, i, abstraction.reward);
+    out.section(rt::Section::kPolicy, i, abstraction.policy);
+    out.section(rt::Section::kValue, i, abstraction.value);
+    add_csr(abstraction.state_transitions, i, rt::Section::kStateRows, rt::Section::kStateTargets,
+            rt::Section::kStateProbabilities, out);
   }
   return out.finish();
 }

@@ -172,6 +172,26 @@ void fix_checksum(std::string& bytes) {
   std::memcpy(bytes.data() + 24, &checksum, sizeof checksum);
 }
 
+// Where a section of a catalog file starts (catalog_sections.hpp, format 2); 0 if absent.
+std::uint64_t section_offset(const std::string& bytes, oasis::rt::Section tag,
+                             std::uint32_t abstraction) {
+  std::uint32_t entries = 0;
+  std::memcpy(&entries, bytes.data() + 12, sizeof entries);
+  for (std::uint32_t k = 0; k < entries; ++k) {
+    const char* entry = bytes.data() + oasis::rt::kCatalogHeaderBytes +
+                        std::size_t{k} * oasis::rt::kFormat2EntryBytes;
+    std::uint32_t entry_tag = 0;
+    std::uint32_t entry_abstraction = 0;
+    std::uint64_t offset = 0;
+    std::memcpy(&entry_tag, entry, sizeof entry_tag);
+    std::memcpy(&entry_abstraction, entry + 4, sizeof entry_abstraction);
+    std::memcpy(&offset, entry + 8, sizeof offset);
+    if (entry_tag == static_cast<std::uint32_t>(tag) && entry_abstraction == abstraction)
+      return offset;
+  }
+  return 0;
+}
+
 TEST(Cli, CompileThenVerifyTheCatalog) {
   const auto dir =
       std::filesystem::temp_directory_path() / ("oasis_cli_compile_" + std::to_string(::getpid()));
@@ -199,8 +219,8 @@ TEST(Cli, CompileThenVerifyTheCatalog) {
 
   // A well-formed file with the wrong partition (object_at_s1's in object_at_s3's place,
   // checksum recomputed): only the verifier can tell, and it does.
-  std::uint64_t offset = 0;
-  std::memcpy(&offset, bytes.data() + 64 + 5 * 16, sizeof offset);  // abstraction 0's block_of
+  const std::uint64_t offset = section_offset(bytes, oasis::rt::Section::kBlockOf, 0);
+  ASSERT_NE(offset, 0U);
   const std::uint32_t swapped[3] = {0, 1, 1};
   std::memcpy(bytes.data() + offset, swapped, sizeof swapped);
   fix_checksum(bytes);

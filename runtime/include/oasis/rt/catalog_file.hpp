@@ -1,28 +1,14 @@
 #pragma once
 /// @file
-/// The binary catalog file: its layout, and a loader that turns untrusted bytes into a
-/// CatalogView or refuses them with a reason. C++17, standard library only.
+/// The binary catalog file loader: turns untrusted bytes into a CatalogView or refuses them
+/// with a reason. The layout (a header, a table of tagged sections, the arrays) is in
+/// catalog_sections.hpp; files of format 1 and 2 load. C++17, standard library only.
 ///
-/// Layout (all integers little-endian, every array 8-byte aligned):
-///
-///     offset  size  field
-///          0     8  magic "OASISCAT"
-///          8     4  format version (kCatalogFormat)
-///         12     4  number of arrays in the table of contents (kCatalogArrayCount)
-///         16     8  file size in bytes
-///         24     8  checksum: FNV-1a 64 of every byte from offset 32 to the end
-///         32     8  spec hash
-///         40     4  num_states     44  4  num_actions
-///         48     4  num_abstractions   52  4  observation kind
-///         56     8  p_correct (IEEE-754 double)
-///         64        table of contents: per array, u64 offset and u64 element count
-///
-/// The arrays, in table-of-contents order: the name text (all strings, each ending in NUL)
-/// and the string offsets into it (catalog name, compiler version, actions, states,
-/// contexts); switching; prior; then per abstraction its num_blocks and the arrays of
-/// AbstractionView in declaration order. Element counts are checked against the sizes the
-/// header and the earlier arrays imply, so a file cannot make the loader read out of bounds.
+/// Every array's element count is checked against the sizes the header and the earlier
+/// arrays imply, and its place against the file's bounds and alignment, so a file cannot
+/// make the loader read out of bounds; validate() then checks the catalog's meaning.
 
+#include <algorithm>
 #include <cstdint>
 #include <cstring>
 #include <fstream>
@@ -30,22 +16,12 @@
 #include <string>
 #include <vector>
 
+#include "oasis/rt/catalog_sections.hpp"
 #include "oasis/rt/catalog_view.hpp"
 #include "oasis/rt/spec_hash.hpp"
 
 namespace oasis {
 namespace rt {
-
-/// "OASISCAT" read as a little-endian 64-bit integer.
-inline constexpr std::uint64_t kCatalogMagic = 0x5441435349534153ULL;
-inline constexpr std::size_t kCatalogHeaderBytes = 64;
-/// Catalog-wide arrays: name text, string offsets, switching, prior, block counts.
-inline constexpr std::uint32_t kCatalogGlobalArrays = 5;
-/// Per abstraction: block_of, block_reward, quotient (3), reward, policy, value, state
-/// transitions (3).
-inline constexpr std::uint32_t kCatalogArraysPerAbstraction = 11;
-/// Refuse files larger than this (1 GiB): a catalog is tables for a robot, not a dataset.
-inline constexpr std::uint64_t kMaxCatalogFileBytes = std::uint64_t{1} << 30;
 
 /// A catalog loaded from bytes: owns them (8-byte aligned) and exposes a CatalogView into
 /// them. Move-only, so the view's pointers stay valid.
@@ -92,7 +68,9 @@ class LoadedCatalog {
   }
 
  private:
-  struct Array {
+  struct Entry {
+    std::uint32_t tag;
+    std::uint32_t abstraction;
     std::uint64_t offset;
     std::uint64_t count;
   };
@@ -118,32 +96,67 @@ class LoadedCatalog {
     return false;
   }
 
-  // The table-of-contents entry `index`, checked to lie inside the file, aligned, and to
-  // hold exactly `expected` elements of `element_size` bytes. Returns its address or null.
+  static bool before(const Entry& a, const Entry& b) noexcept {
+    return a.tag != b.tag ? a.tag < b.tag : a.abstraction < b.abstraction;
+  }
+
+  // entries_ is sorted by (tag, abstraction) once read: a lookup is a binary search, so a
+  // hostile table of millions of entries costs O(n log n), not O(n^2).
+  const Entry* find(Section tag, std::uint32_t abstraction) const noexcept {
+    const Entry key{static_cast<std::uint32_t>(tag), abstraction, 0, 0};
+    const auto found = std::lower_bound(entries_.begin(), entries_.end(), key, before);
+    if (found == entries_.end() || found->tag != key.tag || found->abstraction != abstraction)
+      return nullptr;
+    return &*found;
+  }
+
+  bool sort_entries() {
+    std::sort(entries_.begin(), entries_.end(), before);
+    for (std::size_t k = 1; k < entries_.size(); ++k) {
+      if (!before(entries_[k - 1], entries_[k]))
+        return fail("a section appears twice (tag " + std::to_string(entries_[k].tag) + ")");
+    }
+    return true;
+  }
+
+  // The section (tag, abstraction), checked to lie inside the file, aligned, and to hold
+  // exactly `expected` elements of T. A missing optional section reads as empty (null).
   template <typename T>
-  const T* array(std::uint32_t index, std::uint64_t expected, const char* what) {
-    const std::size_t entry = kCatalogHeaderBytes + std::size_t{index} * 16;
-    const Array a{read_at<std::uint64_t>(entry), read_at<std::uint64_t>(entry + 8)};
-    if (a.count != expected) {
-      fail(std::string("array '") + what + "' has " + std::to_string(a.count) +
+  const T* array(Section tag, std::uint32_t abstraction, std::uint64_t expected, const char* what,
+                 bool optional = false) {
+    const Entry* entry = find(tag, abstraction);
+    if (entry == nullptr) {
+      if (!optional) fail(std::string("section '") + what + "' is missing");
+      return nullptr;
+    }
+    if (entry->count != expected) {
+      fail(std::string("array '") + what + "' has " + std::to_string(entry->count) +
            " elements, expected " + std::to_string(expected));
       return nullptr;
     }
-    if (a.offset % 8 != 0 || a.offset > size_ || a.count > (size_ - a.offset) / sizeof(T)) {
+    if (entry->offset % 8 != 0 || entry->offset > size_ ||
+        entry->count > (size_ - entry->offset) / sizeof(T)) {
       fail(std::string("array '") + what + "' lies outside the file or is misaligned");
       return nullptr;
     }
-    if (a.count == 0) return nullptr;
-    return reinterpret_cast<const T*>(bytes() + a.offset);
+    if (entry->count == 0) return nullptr;
+    return reinterpret_cast<const T*>(bytes() + entry->offset);
+  }
+
+  // The element count of a section, or 0 when absent (its size is checked by array()).
+  std::uint64_t count_of(Section tag, std::uint32_t abstraction) const noexcept {
+    const Entry* entry = find(tag, abstraction);
+    return entry == nullptr ? 0 : entry->count;
   }
 
   bool parse_header() {
     if (size_ < kCatalogHeaderBytes) return fail("file too short for a catalog header");
     if (read_at<std::uint64_t>(0) != kCatalogMagic) return fail("not an oasis catalog (bad magic)");
-    const auto version = read_at<std::uint32_t>(8);
-    if (version != kCatalogFormat) {
-      return fail("catalog format " + std::to_string(version) + ", this runtime reads format " +
-                  std::to_string(kCatalogFormat) + " (recompile the catalog with oasisc)");
+    format_ = read_at<std::uint32_t>(8);
+    if (format_ < kOldestCatalogFileFormat || format_ > kCatalogFileFormat) {
+      return fail("catalog format " + std::to_string(format_) + ", this runtime reads formats " +
+                  std::to_string(kOldestCatalogFileFormat) + " to " +
+                  std::to_string(kCatalogFileFormat) + " (recompile the catalog with oasisc)");
     }
     if (read_at<std::uint64_t>(16) != size_)
       return fail("file size does not match its header (truncated?)");
@@ -162,12 +175,60 @@ class LoadedCatalog {
     }
     view_.observation.kind = static_cast<ObservationKind>(kind);
     view_.observation.p_correct = read_at<double>(56);
-    const std::uint64_t arrays =
-        kCatalogGlobalArrays + std::uint64_t{view_.num_abstractions} * kCatalogArraysPerAbstraction;
-    if (read_at<std::uint32_t>(12) != arrays || arrays > (size_ - kCatalogHeaderBytes) / 16) {
+    return format_ == 1 ? read_format1_table() : read_format2_table();
+  }
+
+  // Format 1: a fixed order of (offset, count) pairs, given their tags here.
+  bool read_format1_table() {
+    constexpr std::uint64_t global = sizeof kFormat1CatalogOrder / sizeof *kFormat1CatalogOrder;
+    constexpr std::uint64_t per =
+        sizeof kFormat1AbstractionOrder / sizeof *kFormat1AbstractionOrder;
+    const std::uint64_t count = global + std::uint64_t{view_.num_abstractions} * per;
+    if (read_at<std::uint32_t>(12) != count ||
+        count > (size_ - kCatalogHeaderBytes) / kFormat1EntryBytes) {
       return fail("table of contents does not match the number of abstractions");
     }
-    return true;
+    entries_.reserve(count);
+    for (std::uint64_t k = 0; k < count; ++k) {
+      const std::size_t at = kCatalogHeaderBytes + k * kFormat1EntryBytes;
+      const bool wide = k < global;
+      const Section tag =
+          wide ? kFormat1CatalogOrder[k] : kFormat1AbstractionOrder[(k - global) % per];
+      const std::uint32_t abstraction =
+          wide ? kCatalogWide : static_cast<std::uint32_t>((k - global) / per);
+      entries_.push_back({static_cast<std::uint32_t>(tag), abstraction, read_at<std::uint64_t>(at),
+                          read_at<std::uint64_t>(at + 8)});
+    }
+    return sort_entries();
+  }
+
+  bool read_format2_table() {
+    const std::uint64_t count = read_at<std::uint32_t>(12);
+    if (count > (size_ - kCatalogHeaderBytes) / kFormat2EntryBytes)
+      return fail("section table runs past the end of the file");
+    entries_.reserve(count);
+    for (std::uint64_t k = 0; k < count; ++k) {
+      const std::size_t at = kCatalogHeaderBytes + k * kFormat2EntryBytes;
+      const Entry entry{read_at<std::uint32_t>(at), read_at<std::uint32_t>(at + 4),
+                        read_at<std::uint64_t>(at + 8), read_at<std::uint64_t>(at + 16)};
+      if ((entry.tag & kRequiredSection) != 0 && !known(entry.tag)) {
+        return fail("the catalog has a section this runtime does not know (tag " +
+                    std::to_string(entry.tag & ~kRequiredSection) + "); it needs a newer runtime");
+      }
+      if (entry.abstraction != kCatalogWide && entry.abstraction >= view_.num_abstractions)
+        return fail("a section belongs to abstraction " + std::to_string(entry.abstraction) +
+                    " of " + std::to_string(view_.num_abstractions));
+      entries_.push_back(entry);
+    }
+    return sort_entries();
+  }
+
+  static bool known(std::uint32_t tag) noexcept {
+    for (const Section section : kFormat1CatalogOrder)
+      if (static_cast<std::uint32_t>(section) == tag) return true;
+    for (const Section section : kFormat1AbstractionOrder)
+      if (static_cast<std::uint32_t>(section) == tag) return true;
+    return false;
   }
 
   // Strings: offsets into the NUL-terminated text; each must start inside it and end at a
@@ -175,9 +236,10 @@ class LoadedCatalog {
   bool parse_strings() {
     const std::uint64_t num_strings =
         2 + std::uint64_t{view_.num_actions} + view_.num_states + view_.num_abstractions;
-    const std::uint64_t text_size = read_at<std::uint64_t>(kCatalogHeaderBytes + 8);
-    const char* text = array<char>(0, text_size, "name text");
-    const std::uint32_t* offsets = array<std::uint32_t>(1, num_strings, "string offsets");
+    const std::uint64_t text_size = count_of(Section::kNameText, kCatalogWide);
+    const char* text = array<char>(Section::kNameText, kCatalogWide, text_size, "name text");
+    const std::uint32_t* offsets =
+        array<std::uint32_t>(Section::kStringOffsets, kCatalogWide, num_strings, "string offsets");
     if (!ok_ || text == nullptr || text[text_size - 1] != '\0') return fail("malformed name text");
     names_.resize(num_strings);
     for (std::uint64_t i = 0; i < num_strings; ++i) {
@@ -191,49 +253,56 @@ class LoadedCatalog {
     return true;
   }
 
-  bool parse_transitions(std::uint32_t first, std::uint64_t rows, TransitionsCsr& csr,
+  // A CSR relation: its rows, targets and probabilities. Absent (all three sections missing
+  // or empty) when `optional`; then the view's pointers stay null.
+  bool parse_transitions(Section rows_tag, Section targets_tag, Section probabilities_tag,
+                         std::uint32_t abstraction, std::uint64_t rows, TransitionsCsr& csr,
                          bool optional) {
-    const std::size_t entry = kCatalogHeaderBytes + std::size_t{first + 1} * 16 + 8;
-    const std::uint64_t edges = read_at<std::uint64_t>(entry);
-    if (optional && edges == 0) {
-      array<std::uint32_t>(first, 0, "state transition rows");
-      array<std::uint32_t>(first + 1, 0, "state transition targets");
-      array<double>(first + 2, 0, "state transition probabilities");
+    const std::uint64_t edges = count_of(targets_tag, abstraction);
+    if (optional && count_of(rows_tag, abstraction) == 0 && edges == 0 &&
+        count_of(probabilities_tag, abstraction) == 0)
       return ok_;
-    }
     if (edges > UINT32_MAX) return fail("too many edges");
-    csr.choice_begin = array<std::uint32_t>(first, rows + 1, "transition rows");
-    csr.target = array<std::uint32_t>(first + 1, edges, "transition targets");
-    csr.probability = array<double>(first + 2, edges, "transition probabilities");
+    csr.choice_begin = array<std::uint32_t>(rows_tag, abstraction, rows + 1, "transition rows");
+    csr.target = array<std::uint32_t>(targets_tag, abstraction, edges, "transition targets");
+    csr.probability =
+        array<double>(probabilities_tag, abstraction, edges, "transition probabilities");
     csr.num_edges = static_cast<std::uint32_t>(edges);
     return ok_;
+  }
+
+  void parse_abstraction(std::uint32_t i, const std::uint32_t* blocks) {
+    AbstractionView& a = abstractions_[i];
+    const std::uint64_t states = view_.num_states;
+    const std::uint64_t actions = view_.num_actions;
+    a.context = names_[2 + actions + states + i];
+    a.num_blocks = blocks[i];
+    const std::uint64_t cells = std::uint64_t{a.num_blocks} * actions;
+    a.block_of = array<std::uint32_t>(Section::kBlockOf, i, states, "block_of");
+    a.block_reward = array<double>(Section::kBlockReward, i, a.num_blocks, "block_reward");
+    if (!parse_transitions(Section::kQuotientRows, Section::kQuotientTargets,
+                           Section::kQuotientProbabilities, i, cells, a.quotient, true))
+      return;
+    a.reward = array<double>(Section::kReward, i, cells, "reward");
+    a.policy = array<std::uint32_t>(Section::kPolicy, i, a.num_blocks, "policy");
+    a.value = array<double>(Section::kValue, i, a.num_blocks, "value");
+    parse_transitions(Section::kStateRows, Section::kStateTargets, Section::kStateProbabilities, i,
+                      states * actions, a.state_transitions, true);
   }
 
   void parse() {
     ok_ = true;
     if (!parse_header() || !parse_strings()) return;
     const std::uint32_t n = view_.num_abstractions;
-    const std::uint64_t states = view_.num_states;
-    const std::uint64_t actions = view_.num_actions;
-    view_.switching = array<double>(2, std::uint64_t{n} * n, "switching");
-    view_.prior = array<double>(3, n, "prior");
-    const std::uint32_t* blocks = array<std::uint32_t>(4, n, "block counts");
+    view_.switching =
+        array<double>(Section::kSwitching, kCatalogWide, std::uint64_t{n} * n, "switching");
+    view_.prior = array<double>(Section::kPrior, kCatalogWide, n, "prior");
+    const std::uint32_t* blocks =
+        array<std::uint32_t>(Section::kBlockCounts, kCatalogWide, n, "block counts");
     if (!ok_) return;
     abstractions_.assign(n, AbstractionView{});
-    for (std::uint32_t i = 0; i < n && ok_; ++i) {
-      AbstractionView& a = abstractions_[i];
-      const std::uint32_t base = kCatalogGlobalArrays + i * kCatalogArraysPerAbstraction;
-      a.context = names_[2 + actions + states + i];
-      a.num_blocks = blocks[i];
-      a.block_of = array<std::uint32_t>(base, states, "block_of");
-      a.block_reward = array<double>(base + 1, a.num_blocks, "block_reward");
-      if (!parse_transitions(base + 2, std::uint64_t{a.num_blocks} * actions, a.quotient, false))
-        return;
-      a.reward = array<double>(base + 5, std::uint64_t{a.num_blocks} * actions, "reward");
-      a.policy = array<std::uint32_t>(base + 6, a.num_blocks, "policy");
-      a.value = array<double>(base + 7, a.num_blocks, "value");
-      parse_transitions(base + 8, states * actions, a.state_transitions, true);
-    }
+    for (std::uint32_t i = 0; i < n && ok_; ++i)
+      parse_abstraction(i, blocks);
     if (!ok_) return;
     view_.abstractions = abstractions_.data();
     std::string why;
@@ -244,6 +313,8 @@ class LoadedCatalog {
   std::size_t size_ = 0;
   std::vector<const char*> names_;
   std::vector<AbstractionView> abstractions_;
+  std::vector<Entry> entries_;  // the section table, as read
+  std::uint32_t format_ = 0;    // the file's format
   CatalogView view_;
   bool ok_ = false;
   std::string error_ = "not loaded";

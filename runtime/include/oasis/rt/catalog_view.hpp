@@ -82,6 +82,8 @@ struct AbstractionView {
   const double* block_reward = nullptr;
 
   /// The quotient's transitions P^Z(z' | z, a): num_blocks sources, targets are blocks.
+  /// Optional (an analysis product; the filter does not read it): all pointers null and
+  /// num_edges 0 when the catalog does not carry it.
   TransitionsCsr quotient;
 
   /// [num_blocks * num_actions] R^Z(z, a), the quotient's reward for taking a in z, row-major.
@@ -231,6 +233,176 @@ inline bool csr_is_empty(const TransitionsCsr& csr) noexcept {
 
 }  // namespace detail
 
+namespace detail {
+
+inline bool validate_names(const CatalogView& catalog, std::string* why) {
+  if (catalog.format != kCatalogFormat)
+    return fail(why, "format " + std::to_string(catalog.format) + " is not " +
+                         std::to_string(kCatalogFormat));
+  if (catalog.name == nullptr) return fail(why, "name is null");
+  if (catalog.compiler_version == nullptr) return fail(why, "compiler_version is null");
+  if (catalog.num_states == 0) return fail(why, "num_states is 0");
+  if (catalog.num_actions == 0) return fail(why, "num_actions is 0");
+  if (catalog.num_abstractions == 0) return fail(why, "num_abstractions is 0");
+  if (catalog.action_names == nullptr) return fail(why, "action_names is null");
+  for (std::uint32_t a = 0; a < catalog.num_actions; ++a)
+    if (catalog.action_names[a] == nullptr)
+      return fail(why, "action name " + std::to_string(a) + " is null");
+  if (catalog.state_names != nullptr)
+    for (std::uint32_t s = 0; s < catalog.num_states; ++s)
+      if (catalog.state_names[s] == nullptr)
+        return fail(why, "state name " + std::to_string(s) + " is null");
+  return true;
+}
+
+inline bool validate_switching(const CatalogView& catalog, std::string* why) {
+  const std::uint32_t n = catalog.num_abstractions;
+  if (catalog.switching == nullptr) return fail(why, "switching is null");
+  for (std::uint32_t i = 0; i < n; ++i) {
+    double sum = 0.0;
+    for (std::uint32_t j = 0; j < n; ++j) {
+      const double p = catalog.switching[static_cast<std::size_t>(i) * n + j];
+      if (!is_probability(p))
+        return fail(why, "switching[" + std::to_string(i) + "][" + std::to_string(j) +
+                             "] not a probability");
+      sum += p;
+    }
+    if (!sums_to_one(sum))
+      return fail(why, "switching row " + std::to_string(i) + " does not sum to 1");
+  }
+  if (catalog.prior == nullptr) return fail(why, "prior is null");
+  double prior_sum = 0.0;
+  for (std::uint32_t i = 0; i < n; ++i) {
+    if (!is_probability(catalog.prior[i]))
+      return fail(why, "prior[" + std::to_string(i) + "] not a probability");
+    prior_sum += catalog.prior[i];
+  }
+  if (!sums_to_one(prior_sum)) return fail(why, "prior does not sum to 1");
+  return true;
+}
+
+inline bool validate_observation(const CatalogView& catalog, std::string* why) {
+  const ObservationModel& obs = catalog.observation;
+  const std::uint32_t num_states = catalog.num_states;
+  switch (obs.kind) {
+    case ObservationKind::kNone:
+      if (obs.confusion != nullptr) return fail(why, "confusion given without kMatrix");
+      return true;
+    case ObservationKind::kSymmetric:
+      if (obs.confusion != nullptr) return fail(why, "confusion given without kMatrix");
+      if (!is_probability(obs.p_correct)) return fail(why, "p_correct not in [0, 1]");
+      if (num_states == 1 && obs.p_correct != 1.0)
+        return fail(why, "p_correct must be 1 with a single state");
+      return true;
+    case ObservationKind::kMatrix:
+      if (obs.confusion == nullptr) return fail(why, "kMatrix without confusion matrix");
+      for (std::uint32_t s = 0; s < num_states; ++s) {
+        double sum = 0.0;
+        for (std::uint32_t o = 0; o < num_states; ++o) {
+          const double p = obs.confusion[static_cast<std::size_t>(s) * num_states + o];
+          if (!is_probability(p))
+            return fail(why, "confusion[" + std::to_string(s) + "][" + std::to_string(o) +
+                                 "] not a probability");
+          sum += p;
+        }
+        if (!sums_to_one(sum))
+          return fail(why, "confusion row " + std::to_string(s) + " does not sum to 1");
+      }
+      return true;
+  }
+  return fail(why, "unknown observation kind");
+}
+
+// block_of in range and every block holding a state, counted with a byte map (a std::string,
+// the only allocation validate() makes besides the message). O(num_states).
+inline bool validate_blocks(const AbstractionView& abs, std::uint32_t num_states,
+                            const std::string& where, std::string* why) {
+  for (std::uint32_t s = 0; s < num_states; ++s)
+    if (abs.block_of[s] >= abs.num_blocks)
+      return fail(why, where + ": block_of[" + std::to_string(s) + "] out of range");
+  std::uint32_t first_occurrences = 0;
+  std::string seen(abs.num_blocks, '\0');
+  for (std::uint32_t s = 0; s < num_states; ++s) {
+    char& mark = seen[abs.block_of[s]];
+    if (mark == '\0') {
+      mark = '\1';
+      ++first_occurrences;
+    }
+  }
+  if (first_occurrences != abs.num_blocks) return fail(why, where + ": a block holds no state");
+  return true;
+}
+
+inline bool validate_numbers(const AbstractionView& abs, std::uint32_t num_actions,
+                             const std::string& where, std::string* why) {
+  for (std::uint32_t z = 0; z < abs.num_blocks; ++z) {
+    if (!std::isfinite(abs.block_reward[z]))
+      return fail(why, where + ": block_reward[" + std::to_string(z) + "] not finite");
+    if (!std::isfinite(abs.value[z]))
+      return fail(why, where + ": value[" + std::to_string(z) + "] not finite");
+    for (std::uint32_t a = 0; a < num_actions; ++a)
+      if (!std::isfinite(abs.reward[static_cast<std::size_t>(z) * num_actions + a]))
+        return fail(why, where + ": reward[" + std::to_string(z) + "][" + std::to_string(a) +
+                             "] not finite");
+  }
+  return true;
+}
+
+// Every policy entry names an action; with the quotient present, an enabled one (and
+// kNoAction exactly where none is enabled).
+inline bool validate_policy(const AbstractionView& abs, std::uint32_t num_actions,
+                            const std::string& where, std::string* why) {
+  const bool has_quotient = !csr_is_empty(abs.quotient);
+  for (std::uint32_t z = 0; z < abs.num_blocks; ++z) {
+    const std::uint32_t action = abs.policy[z];
+    if (!has_quotient) {
+      if (action != kNoAction && action >= num_actions)
+        return fail(why, where + ": policy[" + std::to_string(z) + "] not an action");
+      continue;
+    }
+    const std::size_t row0 = static_cast<std::size_t>(z) * num_actions;
+    const std::uint32_t* begin = abs.quotient.choice_begin;
+    bool any_enabled = false;
+    for (std::uint32_t a = 0; a < num_actions; ++a)
+      any_enabled = any_enabled || begin[row0 + a + 1] > begin[row0 + a];
+    if (action == kNoAction) {
+      if (any_enabled)
+        return fail(why, where + ": policy[" + std::to_string(z) +
+                             "] is kNoAction but an action is enabled");
+    } else if (action >= num_actions || begin[row0 + action + 1] == begin[row0 + action]) {
+      return fail(why, where + ": policy[" + std::to_string(z) + "] not an enabled action");
+    }
+  }
+  return true;
+}
+
+inline bool validate_abstraction(const CatalogView& catalog, std::uint32_t i, std::string* why) {
+  const AbstractionView& abs = catalog.abstractions[i];
+  const std::string where = "abstraction " + std::to_string(i);
+  if (abs.context == nullptr) return fail(why, where + ": context is null");
+  if (abs.num_blocks == 0) return fail(why, where + ": num_blocks is 0");
+  if (abs.num_blocks > catalog.num_states) return fail(why, where + ": more blocks than states");
+  if (abs.block_of == nullptr || abs.block_reward == nullptr || abs.reward == nullptr ||
+      abs.policy == nullptr || abs.value == nullptr)
+    return fail(why, where + ": a required array is null");
+  if (!validate_blocks(abs, catalog.num_states, where, why) ||
+      !validate_numbers(abs, catalog.num_actions, where, why))
+    return false;
+  if (!csr_is_empty(abs.quotient) &&
+      !validate_csr(abs.quotient, abs.num_blocks, catalog.num_actions, abs.num_blocks,
+                    where + " quotient", why))
+    return false;
+  if (!validate_policy(abs, catalog.num_actions, where, why)) return false;
+  if (catalog.has_robust_section())
+    return validate_csr(abs.state_transitions, catalog.num_states, catalog.num_actions,
+                        catalog.num_states, where + " state_transitions", why);
+  if (!csr_is_empty(abs.state_transitions))
+    return fail(why, where + ": state_transitions given without an observation model");
+  return true;
+}
+
+}  // namespace detail
+
 /// Checks every invariant stated in this header.
 ///
 /// Requires: every non-null pointer in `catalog` points to an array of at least the length
@@ -239,149 +411,19 @@ inline bool csr_is_empty(const TransitionsCsr& csr) noexcept {
 /// read; validate() then guarantees the rest.
 /// Guarantees: returns true iff all invariants hold (sizes at least 1, pointers non-null where
 /// required, every index in range, every block non-empty, every probability finite in [0, 1],
-/// every distribution summing to 1, every reward and value finite, every policy action
-/// enabled in its block, robust section complete or absent). On false, and if `why` is not
+/// every distribution summing to 1, every reward and value finite, every policy entry an
+/// action (an enabled one when the quotient's transitions are present: they are optional,
+/// an analysis product), robust section complete or absent). On false, and if `why` is not
 /// null, stores a one-line reason naming the first violated invariant. Never reads past the
 /// stated lengths. Allocates only the message and a num_blocks-byte map per abstraction, so
 /// call it at load time, not in a control loop. O(size of the catalog).
 inline bool validate(const CatalogView& catalog, std::string* why = nullptr) {
-  using detail::fail;
-  if (catalog.format != kCatalogFormat)
-    return fail(why, "format " + std::to_string(catalog.format) + " is not " +
-                         std::to_string(kCatalogFormat));
-  if (catalog.name == nullptr) return fail(why, "name is null");
-  if (catalog.compiler_version == nullptr) return fail(why, "compiler_version is null");
-  const std::uint32_t num_states = catalog.num_states;
-  const std::uint32_t num_actions = catalog.num_actions;
-  const std::uint32_t n = catalog.num_abstractions;
-  if (num_states == 0) return fail(why, "num_states is 0");
-  if (num_actions == 0) return fail(why, "num_actions is 0");
-  if (n == 0) return fail(why, "num_abstractions is 0");
-  if (catalog.action_names == nullptr) return fail(why, "action_names is null");
-  for (std::uint32_t a = 0; a < num_actions; ++a)
-    if (catalog.action_names[a] == nullptr)
-      return fail(why, "action name " + std::to_string(a) + " is null");
-  if (catalog.state_names != nullptr)
-    for (std::uint32_t s = 0; s < num_states; ++s)
-      if (catalog.state_names[s] == nullptr)
-        return fail(why, "state name " + std::to_string(s) + " is null");
-
-  if (catalog.switching == nullptr) return fail(why, "switching is null");
-  for (std::uint32_t i = 0; i < n; ++i) {
-    double sum = 0.0;
-    for (std::uint32_t j = 0; j < n; ++j) {
-      const double p = catalog.switching[static_cast<std::size_t>(i) * n + j];
-      if (!detail::is_probability(p))
-        return fail(why, "switching[" + std::to_string(i) + "][" + std::to_string(j) +
-                             "] not a probability");
-      sum += p;
-    }
-    if (!detail::sums_to_one(sum))
-      return fail(why, "switching row " + std::to_string(i) + " does not sum to 1");
-  }
-  if (catalog.prior == nullptr) return fail(why, "prior is null");
-  double prior_sum = 0.0;
-  for (std::uint32_t i = 0; i < n; ++i) {
-    if (!detail::is_probability(catalog.prior[i]))
-      return fail(why, "prior[" + std::to_string(i) + "] not a probability");
-    prior_sum += catalog.prior[i];
-  }
-  if (!detail::sums_to_one(prior_sum)) return fail(why, "prior does not sum to 1");
-
-  const ObservationModel& obs = catalog.observation;
-  switch (obs.kind) {
-    case ObservationKind::kNone:
-      if (obs.confusion != nullptr) return fail(why, "confusion given without kMatrix");
-      break;
-    case ObservationKind::kSymmetric:
-      if (obs.confusion != nullptr) return fail(why, "confusion given without kMatrix");
-      if (!detail::is_probability(obs.p_correct)) return fail(why, "p_correct not in [0, 1]");
-      if (num_states == 1 && obs.p_correct != 1.0)
-        return fail(why, "p_correct must be 1 with a single state");
-      break;
-    case ObservationKind::kMatrix:
-      if (obs.confusion == nullptr) return fail(why, "kMatrix without confusion matrix");
-      for (std::uint32_t s = 0; s < num_states; ++s) {
-        double sum = 0.0;
-        for (std::uint32_t o = 0; o < num_states; ++o) {
-          const double p = obs.confusion[static_cast<std::size_t>(s) * num_states + o];
-          if (!detail::is_probability(p))
-            return fail(why, "confusion[" + std::to_string(s) + "][" + std::to_string(o) +
-                                 "] not a probability");
-          sum += p;
-        }
-        if (!detail::sums_to_one(sum))
-          return fail(why, "confusion row " + std::to_string(s) + " does not sum to 1");
-      }
-      break;
-    default:
-      return fail(why, "unknown observation kind");
-  }
-
-  if (catalog.abstractions == nullptr) return fail(why, "abstractions is null");
-  for (std::uint32_t i = 0; i < n; ++i) {
-    const AbstractionView& abs = catalog.abstractions[i];
-    const std::string where = "abstraction " + std::to_string(i);
-    if (abs.context == nullptr) return fail(why, where + ": context is null");
-    const std::uint32_t blocks = abs.num_blocks;
-    if (blocks == 0) return fail(why, where + ": num_blocks is 0");
-    if (blocks > num_states) return fail(why, where + ": more blocks than states");
-    if (abs.block_of == nullptr || abs.block_reward == nullptr || abs.reward == nullptr ||
-        abs.policy == nullptr || abs.value == nullptr)
-      return fail(why, where + ": a required array is null");
-    for (std::uint32_t s = 0; s < num_states; ++s)
-      if (abs.block_of[s] >= blocks)
-        return fail(why, where + ": block_of[" + std::to_string(s) + "] out of range");
-    // Every block must hold a state: count distinct blocks with a byte map (a std::string,
-    // the only allocation validate() makes besides the message). O(num_states).
-    std::uint32_t first_occurrences = 0;
-    {
-      std::string seen(blocks, '\0');
-      for (std::uint32_t s = 0; s < num_states; ++s) {
-        char& mark = seen[abs.block_of[s]];
-        if (mark == '\0') {
-          mark = '\1';
-          ++first_occurrences;
-        }
-      }
-    }
-    if (first_occurrences != blocks) return fail(why, where + ": a block holds no state");
-    for (std::uint32_t z = 0; z < blocks; ++z) {
-      if (!std::isfinite(abs.block_reward[z]))
-        return fail(why, where + ": block_reward[" + std::to_string(z) + "] not finite");
-      if (!std::isfinite(abs.value[z]))
-        return fail(why, where + ": value[" + std::to_string(z) + "] not finite");
-      for (std::uint32_t a = 0; a < num_actions; ++a)
-        if (!std::isfinite(abs.reward[static_cast<std::size_t>(z) * num_actions + a]))
-          return fail(why, where + ": reward[" + std::to_string(z) + "][" + std::to_string(a) +
-                               "] not finite");
-    }
-    if (!detail::validate_csr(abs.quotient, blocks, num_actions, blocks, where + " quotient", why))
-      return false;
-    for (std::uint32_t z = 0; z < blocks; ++z) {
-      const std::size_t row0 = static_cast<std::size_t>(z) * num_actions;
-      bool any_enabled = false;
-      for (std::uint32_t a = 0; a < num_actions; ++a)
-        if (abs.quotient.choice_begin[row0 + a + 1] > abs.quotient.choice_begin[row0 + a])
-          any_enabled = true;
-      const std::uint32_t action = abs.policy[z];
-      if (action == kNoAction) {
-        if (any_enabled)
-          return fail(why, where + ": policy[" + std::to_string(z) +
-                               "] is kNoAction but an action is enabled");
-      } else if (action >= num_actions || abs.quotient.choice_begin[row0 + action + 1] ==
-                                              abs.quotient.choice_begin[row0 + action]) {
-        return fail(why, where + ": policy[" + std::to_string(z) + "] not an enabled action");
-      }
-    }
-    if (catalog.has_robust_section()) {
-      if (!detail::validate_csr(abs.state_transitions, num_states, num_actions, num_states,
-                                where + " state_transitions", why))
-        return false;
-    } else if (!detail::csr_is_empty(abs.state_transitions)) {
-      return fail(why, where + ": state_transitions given without an observation model");
-    }
-  }
+  if (!detail::validate_names(catalog, why) || !detail::validate_switching(catalog, why) ||
+      !detail::validate_observation(catalog, why))
+    return false;
+  if (catalog.abstractions == nullptr) return detail::fail(why, "abstractions is null");
+  for (std::uint32_t i = 0; i < catalog.num_abstractions; ++i)
+    if (!detail::validate_abstraction(catalog, i, why)) return false;
   if (why != nullptr) why->clear();
   return true;
 }

@@ -1,0 +1,94 @@
+// oasis/rt/catalog_sections.hpp: the layout of binary catalog files, shared by the compiler's
+// writer and the runtime's loader. C++17, standard library only.
+//
+// A file is a 64-byte header, a table of sections, and the sections' arrays (all integers
+// little-endian, every array 8-byte aligned):
+//
+//     offset  size  field
+//          0     8  magic "OASISCAT"
+//          8     4  file format (kCatalogFileFormat; the loader also reads format 1)
+//         12     4  number of entries in the section table
+//         16     8  file size in bytes
+//         24     8  checksum: FNV-1a 64 of every byte from offset 32 to the end
+//         32     8  spec hash
+//         40     4  num_states     44  4  num_actions
+//         48     4  num_abstractions   52  4  observation kind
+//         56     8  p_correct (IEEE-754 double)
+//         64        section table
+//
+// Format 2 (today's): each table entry is 24 bytes, u32 tag, u32 abstraction (the index of
+// the abstraction the section belongs to, or kCatalogWide), u64 offset, u64 element count.
+// Sections may come in any order; a reader looks them up by (tag, abstraction). A tag with
+// kRequiredSection set must be understood: a reader that does not know it refuses the file
+// ("needs a newer runtime"); any other unknown section is skipped. So a section added later
+// is either optional (old runtimes still load the file) or required (they refuse it plainly).
+//
+// Format 1 (the first files, still read): each entry is 16 bytes, u64 offset and u64 count,
+// in a fixed order: the five catalog-wide sections, then per abstraction the eleven of
+// kFormat1AbstractionOrder.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+
+namespace oasis {
+namespace rt {
+
+/// "OASISCAT" read as a little-endian 64-bit integer.
+inline constexpr std::uint64_t kCatalogMagic = 0x5441435349534153ULL;
+inline constexpr std::size_t kCatalogHeaderBytes = 64;
+/// The file format the compiler writes.
+inline constexpr std::uint32_t kCatalogFileFormat = 2;
+/// The oldest file format the loader reads.
+inline constexpr std::uint32_t kOldestCatalogFileFormat = 1;
+/// Bytes per section-table entry, by file format.
+inline constexpr std::size_t kFormat1EntryBytes = 16;
+inline constexpr std::size_t kFormat2EntryBytes = 24;
+/// Refuse files larger than this (1 GiB): a catalog is tables for a robot, not a dataset.
+inline constexpr std::uint64_t kMaxCatalogFileBytes = std::uint64_t{1} << 30;
+
+/// The abstraction field of a catalog-wide section.
+inline constexpr std::uint32_t kCatalogWide = 0xFFFFFFFFu;
+/// Set in a tag that a reader must understand to use the file.
+inline constexpr std::uint32_t kRequiredSection = 0x80000000u;
+
+/// Section tags. Required unless noted.
+enum class Section : std::uint32_t {
+  kNameText = kRequiredSection | 1,  ///< char: every string, each ending in NUL
+  kStringOffsets =
+      kRequiredSection | 2,              ///< u32: name, compiler version, actions, states, contexts
+  kSwitching = kRequiredSection | 3,     ///< f64 [N*N]
+  kPrior = kRequiredSection | 4,         ///< f64 [N]
+  kBlockCounts = kRequiredSection | 5,   ///< u32 [N]
+  kBlockOf = kRequiredSection | 16,      ///< u32 [num_states], per abstraction
+  kBlockReward = kRequiredSection | 17,  ///< f64 [blocks]
+  kQuotientRows = 18,                    ///< u32 [blocks*actions + 1]; optional (analysis)
+  kQuotientTargets = 19,                 ///< u32 [edges]; optional
+  kQuotientProbabilities = 20,           ///< f64 [edges]; optional
+  kReward = kRequiredSection | 21,       ///< f64 [blocks*actions]
+  kPolicy = kRequiredSection | 22,       ///< u32 [blocks]
+  kValue = kRequiredSection | 23,        ///< f64 [blocks]
+  kStateRows = kRequiredSection | 24,    ///< u32 [states*actions + 1]; robust section only
+  kStateTargets = kRequiredSection | 25,        ///< u32 [edges]; robust section only
+  kStateProbabilities = kRequiredSection | 26,  ///< f64 [edges]; robust section only
+};
+
+/// The catalog-wide sections of a format-1 file, in table order.
+inline constexpr Section kFormat1CatalogOrder[] = {Section::kNameText, Section::kStringOffsets,
+                                                   Section::kSwitching, Section::kPrior,
+                                                   Section::kBlockCounts};
+/// The per-abstraction sections of a format-1 file, in table order.
+inline constexpr Section kFormat1AbstractionOrder[] = {Section::kBlockOf,
+                                                       Section::kBlockReward,
+                                                       Section::kQuotientRows,
+                                                       Section::kQuotientTargets,
+                                                       Section::kQuotientProbabilities,
+                                                       Section::kReward,
+                                                       Section::kPolicy,
+                                                       Section::kValue,
+                                                       Section::kStateRows,
+                                                       Section::kStateTargets,
+                                                       Section::kStateProbabilities};
+
+}  // namespace rt
+}  // namespace oasis
