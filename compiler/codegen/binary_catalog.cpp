@@ -89,6 +89,8 @@ void add_strings(const CatalogData& catalog, Builder& out) {
     add(state);
   for (const AbstractionData& abstraction : catalog.abstractions)
     add(abstraction.context);
+  for (const std::string& variable : catalog.variable_names)
+    add(variable);
   out.section(rt::Section::kNameText, rt::kCatalogWide, text.data(), text.size());
   out.section(rt::Section::kStringOffsets, rt::kCatalogWide, offsets);
 }
@@ -99,6 +101,15 @@ void add_csr(const CsrData& csr, std::uint32_t abstraction, rt::Section rows, rt
   out.section(rows, abstraction, csr.choice_begin);
   out.section(targets, abstraction, csr.target);
   out.section(probabilities, abstraction, csr.probability);
+}
+
+void add_grid(const AbstractionData& abstraction, std::uint32_t i, Builder& out) {
+  out.section(rt::Section::kGridAxes, i, abstraction.grid_axes);
+  out.section(rt::Section::kGridBreakBegin, i, abstraction.grid_break_begin);
+  out.section(rt::Section::kGridBreaks, i, abstraction.grid_breaks);
+  out.section(rt::Section::kCellBlock, i, abstraction.cell_block);
+  out.section(rt::Section::kOutsideBlock, i, &abstraction.outside_block, 1);
+  out.section(rt::Section::kEpsilon, i, &abstraction.epsilon, 1);
 }
 
 }  // namespace
@@ -114,6 +125,10 @@ std::string binary_catalog(const CatalogData& catalog) {
   out.put_at<std::uint32_t>(52, static_cast<std::uint32_t>(catalog.observation));
   out.put_at<double>(56, catalog.p_correct);
   add_strings(catalog, out);
+  if (!catalog.variable_names.empty()) {
+    const auto dimension = static_cast<std::uint32_t>(catalog.variable_names.size());
+    out.section(rt::Section::kStateDimension, rt::kCatalogWide, &dimension, 1);
+  }
   out.section(rt::Section::kSwitching, rt::kCatalogWide, catalog.switching);
   out.section(rt::Section::kPrior, rt::kCatalogWide, catalog.prior);
   std::vector<std::uint32_t> blocks;
@@ -122,7 +137,11 @@ std::string binary_catalog(const CatalogData& catalog) {
   out.section(rt::Section::kBlockCounts, rt::kCatalogWide, blocks);
   for (std::uint32_t i = 0; i < n; ++i) {
     const AbstractionData& abstraction = catalog.abstractions[i];
-    out.section(rt::Section::kBlockOf, i, abstraction.block_of);
+    if (catalog.variable_names.empty()) {
+      out.section(rt::Section::kBlockOf, i, abstraction.block_of);
+    } else {
+      add_grid(abstraction, i, out);
+    }
     out.section(rt::Section::kBlockReward, i, abstraction.block_reward);
     add_csr(abstraction.quotient, i, rt::Section::kQuotientRows, rt::Section::kQuotientTargets,
             rt::Section::kQuotientProbabilities, out);

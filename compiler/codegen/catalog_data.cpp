@@ -3,8 +3,8 @@
 #include <cstdio>
 
 #include "bisim/quotient.hpp"
-#include "oasis/rt/spec_hash.hpp"
 #include "bisim/refinement.hpp"
+#include "oasis/rt/spec_hash.hpp"
 #include "policy/value_iteration.hpp"
 #include "support/mapped_file.hpp"
 
@@ -13,6 +13,8 @@ namespace {
 
 static_assert(policy::kNoAction == rt::kNoAction,
               "the compiler and the runtime mark dead ends alike");
+
+}  // namespace
 
 CsrData csr_of(const model::ExplicitModel& model, const model::TransitionMatrix& matrix) {
   CsrData csr;
@@ -23,6 +25,8 @@ CsrData csr_of(const model::ExplicitModel& model, const model::TransitionMatrix&
     csr.probability.push_back(to_double(model.values[id]));
   return csr;
 }
+
+namespace {
 
 // The detection model compares an observed reward with R(s) of the block: every member must
 // have the same state reward.
@@ -108,6 +112,14 @@ rt::CatalogView CatalogData::view() {
     view.policy = data.policy.data();
     view.value = data.value.data();
     view.state_transitions = data.state_transitions.view();
+    if (!data.grid_axes.empty()) {
+      view.block_of = nullptr;
+      view.grid = {static_cast<std::uint32_t>(data.grid_axes.size()), data.grid_axes.data(),
+                   data.grid_break_begin.data(), data.grid_breaks.data()};
+      view.cell_block = data.cell_block.data();
+      view.outside_block = data.outside_block;
+      view.epsilon = data.epsilon;
+    }
     abstraction_views_.push_back(view);
   }
   rt::CatalogView view;
@@ -124,6 +136,11 @@ rt::CatalogView CatalogData::view() {
   view.abstractions = abstraction_views_.data();
   view.observation.kind = observation;
   view.observation.p_correct = p_correct;
+  variable_name_pointers_.clear();
+  for (const std::string& variable : variable_names)
+    variable_name_pointers_.push_back(variable.c_str());
+  view.state_dimension = static_cast<std::uint32_t>(variable_names.size());
+  view.variable_names = variable_names.empty() ? nullptr : variable_name_pointers_.data();
   return view;
 }
 

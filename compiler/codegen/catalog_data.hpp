@@ -34,6 +34,14 @@ struct AbstractionData {
   std::vector<std::uint32_t> policy;    // [num_blocks] action, or rt::kNoAction
   std::vector<double> value;            // [num_blocks]
   CsrData state_transitions;            // over states; only with the robust section
+  // Continuous catalogs only (rt::AbstractionView's grid fields): the grid over the relevant
+  // variables, the block of every cell, the outside block and the error bound.
+  std::vector<std::uint32_t> grid_axes;         // [d] indices into the state vector
+  std::vector<std::uint32_t> grid_break_begin;  // [d + 1]
+  std::vector<double> grid_breaks;
+  std::vector<std::uint32_t> cell_block;  // [cells]
+  std::uint32_t outside_block = 0;
+  double epsilon = 0.0;
 };
 
 struct CatalogData {
@@ -49,6 +57,9 @@ struct CatalogData {
   std::vector<AbstractionData> abstractions;
   rt::ObservationKind observation = rt::ObservationKind::kNone;
   double p_correct = 1.0;
+  // Continuous catalogs: the state vector's variables (empty for a discrete catalog, which
+  // has num_states explicit states instead).
+  std::vector<std::string> variable_names;
 
   // A view into this object: valid until it is changed, moved or destroyed. Not const: the
   // view's name tables are kept here.
@@ -57,8 +68,12 @@ struct CatalogData {
  private:
   std::vector<const char*> action_name_pointers_;
   std::vector<const char*> state_name_pointers_;
+  std::vector<const char*> variable_name_pointers_;
   std::vector<rt::AbstractionView> abstraction_views_;
 };
+
+// A transition matrix of `model` as CSR arrays of doubles (nearest to each exact value).
+CsrData csr_of(const model::ExplicitModel& model, const model::TransitionMatrix& matrix);
 
 struct BuildOptions {
   // Add the robust filter's section: the full-state transitions of every context and a

@@ -70,6 +70,19 @@ std::string strings(std::string& out, const std::string& name,
   return name;
 }
 
+// The continuous fields of an AbstractionView, written out even when empty: every field by
+// position, so that the tables stay warning-free as the view grows.
+std::string grid(std::string& out, const std::string& p, const AbstractionData& data) {
+  if (data.grid_axes.empty()) return "{0u, nullptr, nullptr, nullptr}, nullptr, 0u, 0.0";
+  const std::string axes = array(out, "std::uint32_t", p + "_grid_axes", data.grid_axes);
+  const std::string begin =
+      array(out, "std::uint32_t", p + "_grid_break_begin", data.grid_break_begin);
+  const std::string breaks = array(out, "double", p + "_grid_breaks", data.grid_breaks);
+  const std::string cells = array(out, "std::uint32_t", p + "_cell_block", data.cell_block);
+  return "{" + std::to_string(data.grid_axes.size()) + "u, " + axes + ", " + begin + ", " + breaks +
+         "}, " + cells + ", " + std::to_string(data.outside_block) + "u, " + number(data.epsilon);
+}
+
 std::string abstraction(std::string& out, std::size_t index, const AbstractionData& data) {
   const std::string p = "k" + std::to_string(index);
   const std::string block_of = array(out, "std::uint32_t", p + "_block_of", data.block_of);
@@ -81,7 +94,7 @@ std::string abstraction(std::string& out, std::size_t index, const AbstractionDa
   const std::string state_transitions = csr(out, p + "_state_transitions", data.state_transitions);
   return "    {" + literal(data.context) + ", " + std::to_string(data.num_blocks) + "u, " +
          block_of + ", " + block_reward + ", " + quotient + ", " + reward + ", " + policy + ", " +
-         value + ", " + state_transitions + "},\n";
+         value + ", " + state_transitions + ",\n     " + grid(out, p, data) + "},\n";
 }
 
 std::string header(const CatalogData& catalog, std::string_view spec_file_name) {
@@ -118,7 +131,11 @@ CppSources cpp_catalog(const CatalogData& catalog, std::string_view basename,
   out += "#include \"" + std::string(basename) + ".hpp\"\n\nnamespace " + catalog.name +
          " {\nnamespace {\n\n";
   const std::string action_names = strings(out, "kActionNames", catalog.action_names);
-  const std::string state_names = strings(out, "kStateNames", catalog.state_names);
+  const std::string state_names =
+      catalog.state_names.empty() ? "nullptr" : strings(out, "kStateNames", catalog.state_names);
+  const std::string variable_names = catalog.variable_names.empty()
+                                         ? "nullptr"
+                                         : strings(out, "kVariableNames", catalog.variable_names);
   const std::string switching = array(out, "double", "kSwitching", catalog.switching);
   const std::string prior = array(out, "double", "kPrior", catalog.prior);
   std::string abstractions;
@@ -137,7 +154,9 @@ CppSources cpp_catalog(const CatalogData& catalog, std::string_view basename,
          ", kAbstractions,\n";
   out += "    {static_cast<oasis::rt::ObservationKind>(" +
          std::to_string(static_cast<std::uint32_t>(catalog.observation)) + "u), " +
-         number(catalog.p_correct) + ", nullptr},\n};\n\n";
+         number(catalog.p_correct) + ", nullptr},\n";
+  out +=
+      "    " + std::to_string(catalog.variable_names.size()) + "u, " + variable_names + ",\n};\n\n";
   out +=
       "}  // namespace\n\nconst oasis::rt::CatalogView& catalog() { return kCatalog; }\n\n}  // "
       "namespace " +

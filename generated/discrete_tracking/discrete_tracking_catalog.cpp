@@ -71,8 +71,10 @@ const double k1_value[] = {
     9.999999999950125, 8.181818181768307,
 };
 const oasis::rt::AbstractionView kAbstractions[] = {
-    {"object_at_s3", 2u, k0_block_of, k0_block_reward, {k0_quotient_rows, k0_quotient_targets, k0_quotient_probabilities, 5u}, k0_reward, k0_policy, k0_value, {nullptr, nullptr, nullptr, 0u}},
-    {"object_at_s1", 2u, k1_block_of, k1_block_reward, {k1_quotient_rows, k1_quotient_targets, k1_quotient_probabilities, 5u}, k1_reward, k1_policy, k1_value, {nullptr, nullptr, nullptr, 0u}},
+    {"object_at_s3", 2u, k0_block_of, k0_block_reward, {k0_quotient_rows, k0_quotient_targets, k0_quotient_probabilities, 5u}, k0_reward, k0_policy, k0_value, {nullptr, nullptr, nullptr, 0u},
+     {0u, nullptr, nullptr, nullptr}, nullptr, 0u, 0.0},
+    {"object_at_s1", 2u, k1_block_of, k1_block_reward, {k1_quotient_rows, k1_quotient_targets, k1_quotient_probabilities, 5u}, k1_reward, k1_policy, k1_value, {nullptr, nullptr, nullptr, 0u},
+     {0u, nullptr, nullptr, nullptr}, nullptr, 0u, 0.0},
 };
 
 const oasis::rt::CatalogView kCatalog = {
@@ -80,6 +82,7 @@ const oasis::rt::CatalogView kCatalog = {
     3u, 2u, kActionNames, kStateNames,
     2u, kSwitching, kPrior, kAbstractions,
     {static_cast<oasis::rt::ObservationKind>(0u), 1.0, nullptr},
+    0u, nullptr,
 };
 
 }  // namespace

@@ -8,7 +8,7 @@
 
 #include "oasis/rt/catalog_view.hpp"
 
-static_assert(oasis::rt::kCatalogFormat == 1, "this catalog was generated for another runtime format: regenerate it with oasisc");
+static_assert(oasis::rt::kCatalogFormat == 2, "this catalog was generated for another runtime format: regenerate it with oasisc");
 
 namespace discrete_tracking {
 

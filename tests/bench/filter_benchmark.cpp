@@ -139,7 +139,11 @@ void BM_RobustDiscrete(benchmark::State& state) {
                      a0_reward,
                      a0_policy,
                      value,
-                     {st_begin, st_target, st_prob, 10}};
+                     {st_begin, st_target, st_prob, 10},
+                     {0, nullptr, nullptr, nullptr},
+                     nullptr,
+                     0,
+                     0.0};
   abstractions[1] = {"object_at_s1",
                      2,
                      a1_block_of,
@@ -148,7 +152,11 @@ void BM_RobustDiscrete(benchmark::State& state) {
                      a1_reward,
                      a1_policy,
                      value,
-                     {st_begin, st_target, st_prob, 10}};
+                     {st_begin, st_target, st_prob, 10},
+                     {0, nullptr, nullptr, nullptr},
+                     nullptr,
+                     0,
+                     0.0};
   CatalogView view;
   view.name = "discrete_tracking";
   view.compiler_version = "bench";

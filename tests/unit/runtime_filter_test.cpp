@@ -152,7 +152,7 @@ TEST(RuntimeCatalog, RejectsBadSizes) {
   }
   {
     DiscreteExample ex;
-    ex.view.format = 2;
+    ex.view.format = oasis::rt::kCatalogFormat + 1;
     EXPECT_FALSE(validate(ex.view, &why));
     EXPECT_NE(why.find("format"), std::string::npos) << why;
   }

@@ -32,6 +32,7 @@
 #include <limits>
 
 #include "oasis/rt/catalog_view.hpp"
+#include "oasis/rt/grid_locator.hpp"
 
 namespace oasis::rt {
 
@@ -131,12 +132,14 @@ struct FixedWorkspace {
 class AttentionFilter {
  public:
   /// Number of doubles the workspace must hold for `catalog` under `options`:
-  /// 2N in paper mode, 2N + 2NS in robust mode (N abstractions, S states).
+  /// 2N in paper mode (3N on a continuous catalog), 2N + 2NS in robust mode (N abstractions,
+  /// S states).
   static std::size_t workspace_size(const CatalogView& catalog,
                                     const FilterOptions& options) noexcept {
     const std::size_t n = catalog.num_abstractions;
     if (options.mode == FilterMode::kRobust)
       return 2 * n + 2 * n * static_cast<std::size_t>(catalog.num_states);
+    if (catalog.is_continuous()) return 3 * n;  // and the block of the state in each
     return 2 * n;
   }
 
@@ -149,7 +152,8 @@ class AttentionFilter {
   AttentionFilter(const CatalogView& catalog, const FilterOptions& options, double* workspace,
                   std::size_t workspace_doubles) noexcept
       : catalog_(&catalog), options_(options) {
-    if (catalog.num_abstractions == 0 || catalog.num_states == 0 || catalog.num_actions == 0) {
+    if (catalog.num_abstractions == 0 || catalog.num_actions == 0 ||
+        (catalog.num_states == 0 && !catalog.is_continuous())) {
       error_ = FilterError::kEmptyCatalog;
     } else if (!(options.detection_epsilon >= 0.0 && options.detection_epsilon < 1.0) ||
                !(options.reward_tolerance >= 0.0) || !(options.tie_tolerance >= 0.0)) {
@@ -163,6 +167,7 @@ class AttentionFilter {
     const std::size_t n = catalog.num_abstractions;
     belief_ = workspace;
     scratch_ = workspace + n;
+    if (catalog.is_continuous()) located_ = workspace + 2 * n;
     if (options.mode == FilterMode::kRobust) {
       joint_ = workspace + 2 * n;
       joint_scratch_ = joint_ + n * catalog.num_states;
@@ -242,6 +247,38 @@ class AttentionFilter {
     return status;
   }
 
+  /// Continuous catalogs: start() with the initial state vector (`size` doubles, at least
+  /// state_dimension). Maps it to its block in every abstraction (rt::locate_cell; a state
+  /// outside an abstraction's domain is in its outside block). Returns kBadState on a
+  /// discrete catalog or a short vector, changing nothing. O(N sum_i log cells_i).
+  StepStatus start(const double* state, std::size_t size) noexcept {
+    if (!ok()) return StepStatus::kNotReady;
+    if (!catalog_->is_continuous() || state == nullptr || size < catalog_->state_dimension)
+      return StepStatus::kBadState;
+    reset();
+    locate(state, size);
+    has_state_ = true;
+    return StepStatus::kOk;
+  }
+
+  /// Continuous catalogs: one iteration of Algorithm 1 with the observed state vector. The
+  /// detection model compares the reward with block_reward of the state's block in each
+  /// abstraction. Inputs are checked as by the discrete step(); a NaN coordinate puts the
+  /// state outside. Cost O(N^2 + N sum_i log cells_i). No allocation.
+  StepStatus step(const double* state, std::size_t size, double observed_reward,
+                  std::uint32_t action_taken) noexcept {
+    if (!ok()) return StepStatus::kNotReady;
+    if (!catalog_->is_continuous() || state == nullptr || size < catalog_->state_dimension)
+      return StepStatus::kBadState;
+    if (action_taken >= catalog_->num_actions) return StepStatus::kBadAction;
+    locate(state, size);
+    const StepStatus status = paper_update(
+        [&](std::uint32_t i) { return detection_at(i, located_block(i), observed_reward); });
+    has_state_ = true;
+    select_ml();
+    return status;
+  }
+
   /// pi^i(z^i(s)) for the ML abstraction i and the current state s (the last observed state in
   /// paper mode; the most likely true state under i in robust mode). kNoAction before the
   /// first start()/step(), if construction failed, or if the block has no enabled action.
@@ -257,6 +294,7 @@ class AttentionFilter {
   /// The block z^i(s) the policy is evaluated at (see action()); 0 before any state.
   std::uint32_t abstract_state() const noexcept {
     if (!ok() || !has_state_) return 0;
+    if (catalog_->is_continuous()) return located_block(ml_);
     return catalog_->abstractions[ml_].block_of[policy_state()];
   }
 
@@ -295,8 +333,12 @@ class AttentionFilter {
 
   /// p(r | phi^i, s) under the deterministic or soft detection model.
   double detection(std::uint32_t i, std::uint32_t s, double reward) const noexcept {
-    const AbstractionView& abs = catalog_->abstractions[i];
-    const double expected = abs.block_reward[abs.block_of[s]];
+    return detection_at(i, catalog_->abstractions[i].block_of[s], reward);
+  }
+
+  /// The same for a state in block z of abstraction i.
+  double detection_at(std::uint32_t i, std::uint32_t z, double reward) const noexcept {
+    const double expected = catalog_->abstractions[i].block_reward[z];
     const bool match =
         std::isfinite(reward) && std::fabs(reward - expected) <= options_.reward_tolerance;
     return match ? 1.0 - options_.detection_epsilon : options_.detection_epsilon;
@@ -326,12 +368,31 @@ class AttentionFilter {
     }
   }
 
+  // Continuous catalogs: the block of the observed state in every abstraction, kept in the
+  // workspace (block indices are below 2^32, exact in a double).
+  void locate(const double* state, std::size_t size) noexcept {
+    for (std::uint32_t i = 0; i < catalog_->num_abstractions; ++i) {
+      const AbstractionView& abs = catalog_->abstractions[i];
+      const std::uint32_t cell = locate_cell(abs.grid, state, size);
+      located_[i] = cell == kOutsideCell ? abs.outside_block : abs.cell_block[cell];
+    }
+  }
+  std::uint32_t located_block(std::uint32_t i) const noexcept {
+    return static_cast<std::uint32_t>(located_[i]);
+  }
+
   StepStatus paper_step(std::uint32_t state, double reward) noexcept {
+    return paper_update([&](std::uint32_t i) { return detection(i, state, reward); });
+  }
+
+  // Algorithm 1's update with the likelihood p(r_t | phi^i, s_t) given per abstraction.
+  template <typename Likelihood>
+  StepStatus paper_update(Likelihood&& likelihood) noexcept {
     const std::uint32_t n = catalog_->num_abstractions;
     switch_predict(belief_, scratch_, 1);  // scratch_ = predicted belief
     double total = 0.0;
     for (std::uint32_t i = 0; i < n; ++i) {
-      const double weighted = detection(i, state, reward) * scratch_[i];
+      const double weighted = likelihood(i) * scratch_[i];
       belief_[i] = weighted;
       total += weighted;
     }
@@ -490,6 +551,7 @@ class AttentionFilter {
   double* scratch_ = nullptr;        // [N] predicted belief (paper mode)
   double* joint_ = nullptr;          // [N*S] robust joint belief, row i = abstraction
   double* joint_scratch_ = nullptr;  // [N*S] robust scratch
+  double* located_ = nullptr;        // [N] continuous catalogs: the state's block per abstraction
   std::uint64_t rng_state_ = 0;
   std::uint32_t ml_ = kNone_;
   std::uint32_t state_ = 0;

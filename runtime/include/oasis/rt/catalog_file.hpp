@@ -228,14 +228,21 @@ class LoadedCatalog {
       if (static_cast<std::uint32_t>(section) == tag) return true;
     for (const Section section : kFormat1AbstractionOrder)
       if (static_cast<std::uint32_t>(section) == tag) return true;
+    for (const Section section : kContinuousSections)
+      if (static_cast<std::uint32_t>(section) == tag) return true;
     return false;
   }
 
   // Strings: offsets into the NUL-terminated text; each must start inside it and end at a
   // NUL inside it.
   bool parse_strings() {
-    const std::uint64_t num_strings =
-        2 + std::uint64_t{view_.num_actions} + view_.num_states + view_.num_abstractions;
+    const std::uint32_t* dimension = array<std::uint32_t>(
+        Section::kStateDimension, kCatalogWide,
+        count_of(Section::kStateDimension, kCatalogWide) == 0 ? 0 : 1, "state dimension", true);
+    if (!ok_) return false;
+    view_.state_dimension = dimension == nullptr ? 0 : *dimension;
+    const std::uint64_t num_strings = 2 + std::uint64_t{view_.num_actions} + view_.num_states +
+                                      view_.num_abstractions + view_.state_dimension;
     const std::uint64_t text_size = count_of(Section::kNameText, kCatalogWide);
     const char* text = array<char>(Section::kNameText, kCatalogWide, text_size, "name text");
     const std::uint32_t* offsets =
@@ -249,8 +256,41 @@ class LoadedCatalog {
     view_.name = names_[0];
     view_.compiler_version = names_[1];
     view_.action_names = names_.data() + 2;
-    view_.state_names = names_.data() + 2 + view_.num_actions;
+    view_.state_names = view_.num_states == 0 ? nullptr : names_.data() + 2 + view_.num_actions;
+    if (view_.state_dimension > 0) {
+      view_.variable_names =
+          names_.data() + 2 + view_.num_actions + view_.num_states + view_.num_abstractions;
+    }
     return true;
+  }
+
+  // A continuous abstraction's grid and cell map, each count checked before it is used.
+  void parse_grid(std::uint32_t i, AbstractionView& a) {
+    const std::uint64_t d = count_of(Section::kGridAxes, i);
+    a.grid.axes = array<std::uint32_t>(Section::kGridAxes, i, d, "grid axes");
+    a.grid.break_begin =
+        array<std::uint32_t>(Section::kGridBreakBegin, i, d + 1, "grid break offsets");
+    if (!ok_ || d == 0 || d > UINT32_MAX - 1) {
+      if (ok_) fail("a continuous abstraction without a grid");
+      return;
+    }
+    a.grid.dimension = static_cast<std::uint32_t>(d);
+    for (std::uint64_t k = 0; k < d; ++k) {
+      if (a.grid.break_begin[k + 1] < a.grid.break_begin[k])
+        return static_cast<void>(fail("grid break offsets decrease"));
+    }
+    a.grid.breaks =
+        array<double>(Section::kGridBreaks, i, a.grid.break_begin[d], "grid breakpoints");
+    if (!ok_) return;
+    if (!validate_grid(a.grid, view_.state_dimension))
+      return static_cast<void>(fail("malformed grid in abstraction " + std::to_string(i)));
+    a.cell_block = array<std::uint32_t>(Section::kCellBlock, i, grid_cells(a.grid), "cell blocks");
+    const std::uint32_t* outside =
+        array<std::uint32_t>(Section::kOutsideBlock, i, 1, "outside block");
+    const double* epsilon = array<double>(Section::kEpsilon, i, 1, "epsilon", true);
+    if (!ok_) return;
+    a.outside_block = *outside;
+    a.epsilon = epsilon == nullptr ? 0.0 : *epsilon;
   }
 
   // A CSR relation: its rows, targets and probabilities. Absent (all three sections missing
@@ -278,7 +318,11 @@ class LoadedCatalog {
     a.context = names_[2 + actions + states + i];
     a.num_blocks = blocks[i];
     const std::uint64_t cells = std::uint64_t{a.num_blocks} * actions;
-    a.block_of = array<std::uint32_t>(Section::kBlockOf, i, states, "block_of");
+    if (view_.state_dimension > 0) {
+      parse_grid(i, a);
+    } else {
+      a.block_of = array<std::uint32_t>(Section::kBlockOf, i, states, "block_of");
+    }
     a.block_reward = array<double>(Section::kBlockReward, i, a.num_blocks, "block_reward");
     if (!parse_transitions(Section::kQuotientRows, Section::kQuotientTargets,
                            Section::kQuotientProbabilities, i, cells, a.quotient, true))

@@ -71,7 +71,22 @@ enum class Section : std::uint32_t {
   kStateRows = kRequiredSection | 24,    ///< u32 [states*actions + 1]; robust section only
   kStateTargets = kRequiredSection | 25,        ///< u32 [edges]; robust section only
   kStateProbabilities = kRequiredSection | 26,  ///< f64 [edges]; robust section only
+  // Continuous catalogs (format 2 and later); the variable names follow the contexts in the
+  // string table.
+  kStateDimension = kRequiredSection | 6,   ///< u32 [1]: the number of continuous variables
+  kGridAxes = kRequiredSection | 32,        ///< u32 [d], per abstraction
+  kGridBreakBegin = kRequiredSection | 33,  ///< u32 [d + 1]
+  kGridBreaks = kRequiredSection | 34,      ///< f64 [break_begin[d]]
+  kCellBlock = kRequiredSection | 35,       ///< u32 [cells]
+  kOutsideBlock = kRequiredSection | 36,    ///< u32 [1]
+  kEpsilon = 37,                            ///< f64 [1]; optional (informational)
 };
+
+/// Every section this runtime understands beyond the format-1 ones.
+inline constexpr Section kContinuousSections[] = {Section::kStateDimension, Section::kGridAxes,
+                                                  Section::kGridBreakBegin, Section::kGridBreaks,
+                                                  Section::kCellBlock,      Section::kOutsideBlock,
+                                                  Section::kEpsilon};
 
 /// The catalog-wide sections of a format-1 file, in table order.
 inline constexpr Section kFormat1CatalogOrder[] = {Section::kNameText, Section::kStringOffsets,

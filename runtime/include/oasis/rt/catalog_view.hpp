@@ -29,10 +29,13 @@
 #include <cstdint>
 #include <string>
 
+#include "oasis/rt/grid_locator.hpp"
+
 namespace oasis::rt {
 
 /// Version of the layout below. Emitters write it, loaders and validate() reject any other.
-inline constexpr std::uint32_t kCatalogFormat = 1;
+/// 2: continuous catalogs (grid fields at the end of AbstractionView and CatalogView).
+inline constexpr std::uint32_t kCatalogFormat = 2;
 
 /// Absolute tolerance for "a probability distribution sums to 1" in validate(). Generated
 /// tables round exact rationals to the nearest double, so their sums are off by a few ulp per
@@ -103,6 +106,22 @@ struct AbstractionView {
   /// catalog's observation model is present (CatalogView::observation.kind != kNone);
   /// otherwise all its pointers must be null and num_edges 0.
   TransitionsCsr state_transitions;
+
+  // ---- Continuous catalogs only (CatalogView::state_dimension > 0); null/0 otherwise. ----
+
+  /// The grid over the variables this abstraction attends to (grid_locator.hpp): its axes
+  /// index the continuous state vector.
+  GridView grid;
+
+  /// [cells of the grid] the block of every cell.
+  const std::uint32_t* cell_block = nullptr;
+
+  /// The block of every state outside the grid's domain (absorbing, reward 0).
+  std::uint32_t outside_block = 0;
+
+  /// The sound bound on the error of this abstraction's transition rows (0: an exact
+  /// bisimulation), as the compiler computed it; informational for the filter.
+  double epsilon = 0.0;
 };
 
 /// How an observed state relates to the true state, for the robust joint filter.
@@ -176,6 +195,20 @@ struct CatalogView {
 
   /// True if the robust joint filter can run on this catalog.
   bool has_robust_section() const noexcept { return observation.kind != ObservationKind::kNone; }
+
+  // ---- Continuous catalogs (fields added after format 1: null defaults, so tables generated
+  // for discrete catalogs fill them by position without naming them). ----
+
+  /// Number of continuous state variables; 0 for a discrete catalog. A continuous catalog has
+  /// num_states == 0, no state names, no block_of and no robust section: its abstractions
+  /// map a state vector of this many doubles to blocks through their grids.
+  std::uint32_t state_dimension = 0;
+
+  /// Optional: [state_dimension] names of the continuous variables.
+  const char* const* variable_names = nullptr;
+
+  /// True for a catalog over continuous states.
+  bool is_continuous() const noexcept { return state_dimension > 0; }
 };
 
 namespace detail {
@@ -241,7 +274,13 @@ inline bool validate_names(const CatalogView& catalog, std::string* why) {
                          std::to_string(kCatalogFormat));
   if (catalog.name == nullptr) return fail(why, "name is null");
   if (catalog.compiler_version == nullptr) return fail(why, "compiler_version is null");
-  if (catalog.num_states == 0) return fail(why, "num_states is 0");
+  if (catalog.is_continuous()) {
+    if (catalog.num_states != 0 || catalog.state_names != nullptr)
+      return fail(why, "a continuous catalog has explicit states");
+    if (catalog.has_robust_section()) return fail(why, "a continuous catalog has a robust section");
+  } else if (catalog.num_states == 0) {
+    return fail(why, "num_states is 0");
+  }
   if (catalog.num_actions == 0) return fail(why, "num_actions is 0");
   if (catalog.num_abstractions == 0) return fail(why, "num_abstractions is 0");
   if (catalog.action_names == nullptr) return fail(why, "action_names is null");
@@ -252,6 +291,10 @@ inline bool validate_names(const CatalogView& catalog, std::string* why) {
     for (std::uint32_t s = 0; s < catalog.num_states; ++s)
       if (catalog.state_names[s] == nullptr)
         return fail(why, "state name " + std::to_string(s) + " is null");
+  if (catalog.variable_names != nullptr)
+    for (std::uint32_t v = 0; v < catalog.state_dimension; ++v)
+      if (catalog.variable_names[v] == nullptr)
+        return fail(why, "variable name " + std::to_string(v) + " is null");
   return true;
 }
 
@@ -376,18 +419,48 @@ inline bool validate_policy(const AbstractionView& abs, std::uint32_t num_action
   return true;
 }
 
+// A continuous abstraction: a valid grid over the state vector, every cell's block in range,
+// every block holding a cell or being the outside block.
+inline bool validate_cells(const CatalogView& catalog, const AbstractionView& abs,
+                           const std::string& where, std::string* why) {
+  if (abs.block_of != nullptr) return fail(why, where + ": block_of in a continuous catalog");
+  if (!validate_grid(abs.grid, catalog.state_dimension))
+    return fail(why, where + ": malformed grid");
+  if (abs.cell_block == nullptr) return fail(why, where + ": cell_block is null");
+  if (abs.outside_block >= abs.num_blocks) return fail(why, where + ": outside_block out of range");
+  if (!std::isfinite(abs.epsilon) || abs.epsilon < 0)
+    return fail(why, where + ": epsilon not a finite bound");
+  const std::uint64_t cells = grid_cells(abs.grid);
+  if (abs.num_blocks > cells + 1) return fail(why, where + ": more blocks than cells");
+  std::string seen(abs.num_blocks, '\0');
+  seen[abs.outside_block] = '\1';
+  for (std::uint64_t c = 0; c < cells; ++c) {
+    if (abs.cell_block[c] >= abs.num_blocks)
+      return fail(why, where + ": cell_block[" + std::to_string(c) + "] out of range");
+    seen[abs.cell_block[c]] = '\1';
+  }
+  if (seen.find('\0') != std::string::npos) return fail(why, where + ": a block holds no cell");
+  return true;
+}
+
 inline bool validate_abstraction(const CatalogView& catalog, std::uint32_t i, std::string* why) {
   const AbstractionView& abs = catalog.abstractions[i];
   const std::string where = "abstraction " + std::to_string(i);
   if (abs.context == nullptr) return fail(why, where + ": context is null");
   if (abs.num_blocks == 0) return fail(why, where + ": num_blocks is 0");
-  if (abs.num_blocks > catalog.num_states) return fail(why, where + ": more blocks than states");
-  if (abs.block_of == nullptr || abs.block_reward == nullptr || abs.reward == nullptr ||
-      abs.policy == nullptr || abs.value == nullptr)
+  if (abs.block_reward == nullptr || abs.reward == nullptr || abs.policy == nullptr ||
+      abs.value == nullptr)
     return fail(why, where + ": a required array is null");
-  if (!validate_blocks(abs, catalog.num_states, where, why) ||
-      !validate_numbers(abs, catalog.num_actions, where, why))
-    return false;
+  if (catalog.is_continuous()) {
+    if (!validate_cells(catalog, abs, where, why)) return false;
+  } else {
+    if (abs.num_blocks > catalog.num_states) return fail(why, where + ": more blocks than states");
+    if (abs.block_of == nullptr) return fail(why, where + ": a required array is null");
+    if (!validate_blocks(abs, catalog.num_states, where, why)) return false;
+    if (abs.grid.dimension != 0 || abs.cell_block != nullptr)
+      return fail(why, where + ": a grid in a discrete catalog");
+  }
+  if (!validate_numbers(abs, catalog.num_actions, where, why)) return false;
   if (!csr_is_empty(abs.quotient) &&
       !validate_csr(abs.quotient, abs.num_blocks, catalog.num_actions, abs.num_blocks,
                     where + " quotient", why))

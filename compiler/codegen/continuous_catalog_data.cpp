@@ -1,0 +1,60 @@
+#include "codegen/continuous_catalog_data.hpp"
+
+#include <cmath>
+
+namespace oasis::codegen {
+namespace {
+
+AbstractionData abstraction_data(const pipeline::ContinuousAbstraction& abstraction,
+                                 std::uint32_t num_actions, bool with_transitions) {
+  AbstractionData data;
+  data.context = abstraction.context;
+  data.num_blocks = abstraction.num_blocks;
+  data.block_reward = abstraction.block_reward;
+  const model::ExplicitModel& quotient = abstraction.quotient;
+  if (with_transitions) data.quotient = csr_of(quotient, *quotient.contexts[0].transitions);
+  data.reward.resize(std::size_t{data.num_blocks} * num_actions);
+  for (model::StateIndex z = 0; z < data.num_blocks; ++z) {
+    for (model::ActionIndex a = 0; a < num_actions; ++a)
+      data.reward[std::size_t{z} * num_actions + a] = to_double(quotient.reward(0, z, a));
+  }
+  data.policy = abstraction.policy;
+  data.value = abstraction.value;
+  data.grid_axes = abstraction.relevance.relevant;
+  data.grid_break_begin.push_back(0);
+  for (std::size_t i = 0; i < abstraction.grid.dimension(); ++i) {
+    const std::vector<double>& breaks = abstraction.grid.breaks_double(i);
+    data.grid_breaks.insert(data.grid_breaks.end(), breaks.begin(), breaks.end());
+    data.grid_break_begin.push_back(static_cast<std::uint32_t>(data.grid_breaks.size()));
+  }
+  data.cell_block = abstraction.cell_block;
+  data.outside_block = abstraction.outside_block;
+  data.epsilon = bound_as_double(abstraction.epsilon);
+  return data;
+}
+
+}  // namespace
+
+double bound_as_double(const Rational& bound) {
+  const double nearest = to_double(bound);
+  return Rational(nearest) < bound ? std::nextafter(nearest, HUGE_VAL) : nearest;
+}
+
+CatalogData continuous_catalog_data(const pipeline::ContinuousCatalog& catalog,
+                                    bool with_transitions) {
+  CatalogData data;
+  data.name = catalog.name;
+  data.spec_hash = catalog.spec_hash;
+  data.compiler_version = catalog.compiler_version;
+  data.num_states = 0;
+  data.num_actions = static_cast<std::uint32_t>(catalog.action_names.size());
+  data.action_names = catalog.action_names;
+  data.switching = catalog.switching;
+  data.prior = catalog.prior;
+  data.variable_names = catalog.variable_names;
+  for (const pipeline::ContinuousAbstraction& abstraction : catalog.abstractions)
+    data.abstractions.push_back(abstraction_data(abstraction, data.num_actions, with_transitions));
+  return data;
+}
+
+}  // namespace oasis::codegen
