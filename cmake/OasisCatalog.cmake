@@ -18,7 +18,8 @@ function(oasis_add_catalog target spec)
   if(NOT ARG_BASENAME)
     set(ARG_BASENAME "${stem}_catalog")
   endif()
-  set(out_dir "${CMAKE_CURRENT_BINARY_DIR}/${target}")
+  # A directory of its own: compile replaces it as a whole (support/staged_directory.hpp).
+  set(out_dir "${CMAKE_CURRENT_BINARY_DIR}/${target}.catalog")
   set(outputs "${out_dir}/${ARG_BASENAME}.hpp" "${out_dir}/${ARG_BASENAME}.cpp")
   add_custom_command(
     OUTPUT ${outputs}

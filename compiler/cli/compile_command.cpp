@@ -1,103 +1,209 @@
-// `oasisc compile SPEC -o DIR`: the catalog of a spec, as files.
+// `oasisc compile SPEC -o DIR`: the catalog of a spec, as a directory of files that changes
+// as one unit (support/staged_directory.hpp).
 
+#include <chrono>
+#include <cstdio>
 #include <filesystem>
 #include <iostream>
 #include <memory>
-#include <sstream>
+#include <set>
 
 #include "cli/commands.hpp"
+#include "codegen/abstraction_svg.hpp"
 #include "codegen/binary_catalog.hpp"
 #include "codegen/catalog_data.hpp"
+#include "codegen/continuous_catalog_data.hpp"
+#include "codegen/continuous_json.hpp"
 #include "codegen/cpp_catalog.hpp"
 #include "codegen/dot_catalog.hpp"
 #include "codegen/json_catalog.hpp"
+#include "pipeline/continuous_catalog.hpp"
 #include "support/atomic_file.hpp"
+#include "support/staged_directory.hpp"
 
 namespace oasis::cli {
 namespace {
 
+namespace fs = std::filesystem;
+
 struct CompileOptions {
   std::string spec;
-  std::string output = ".";
-  std::vector<std::string> formats{"bin", "json", "dot"};
+  std::string output;  // default: the spec's file name without its extension
+  std::vector<std::string> formats;
   std::string basename;  // of the C++ files; default NAME_catalog
   std::optional<double> p_correct;
+  double epsilon = 0.1;
+  std::size_t max_cells = 200'000;
+  bool no_attention = false;
+  bool with_transitions = false;
+  unsigned jobs = 0;
   CommonOptions common;
 };
 
-bool write_text(const std::string& path, const std::string& text) {
-  AtomicFile file;
-  std::string error;
-  if (!file.open(path, error) || (file.append(text), !file.commit(error))) {
-    std::cerr << path << ": error: " << error << '\n';
-    return false;
+// The files of one compile, written into the staging directory, named relative to it.
+class OutputSet {
+ public:
+  explicit OutputSet(std::string directory) : directory_(std::move(directory)) {}
+
+  bool write(const std::string& name, const std::string& bytes, std::string& error) {
+    AtomicFile file;
+    if (!file.open((fs::path(directory_) / name).string(), error)) return false;
+    file.append(bytes);
+    if (!file.commit(error)) return false;
+    names_.insert(name);
+    return true;
   }
-  std::cout << "wrote " << path << '\n';
+  [[nodiscard]] const std::set<std::string>& names() const { return names_; }
+
+ private:
+  std::string directory_;
+  std::set<std::string> names_;
+};
+
+bool wants(const CompileOptions& options, const char* format) {
+  return std::find(options.formats.begin(), options.formats.end(), format) != options.formats.end();
+}
+
+bool write_common(const CompileOptions& options, codegen::CatalogData& data, OutputSet& out,
+                  std::string& error) {
+  if (wants(options, "bin") && !out.write(data.name + ".bin", codegen::binary_catalog(data), error))
+    return false;
+  if (wants(options, "cpp")) {
+    const std::string basename =
+        options.basename.empty() ? data.name + "_catalog" : options.basename;
+    const std::string spec_name = fs::path(options.spec).filename().string();
+    const codegen::CppSources sources = codegen::cpp_catalog(data, basename, spec_name);
+    if (!out.write(basename + ".hpp", sources.header, error) ||
+        !out.write(basename + ".cpp", sources.source, error))
+      return false;
+  }
   return true;
 }
 
-bool emit(codegen::CatalogData& catalog, const CompileOptions& options) {
-  const std::filesystem::path dir(options.output);
-  std::error_code ec;
-  std::filesystem::create_directories(dir, ec);
-  if (ec) {
-    std::cerr << options.output << ": error: cannot create directory: " << ec.message() << '\n';
+bool write_discrete(const CompileOptions& options, codegen::CatalogData& data, OutputSet& out,
+                    std::string& error) {
+  if (!write_common(options, data, out, error)) return false;
+  if (wants(options, "json") &&
+      !out.write(data.name + ".json", codegen::catalog_json(data).dump(2) + "\n", error))
     return false;
+  for (std::size_t i = 0; wants(options, "dot") && i < data.abstractions.size(); ++i) {
+    if (!out.write(data.name + "." + data.abstractions[i].context + ".dot",
+                   codegen::abstraction_dot(data, i), error))
+      return false;
   }
-  for (const std::string& format : options.formats) {
-    const std::string base = (dir / catalog.name).string();
-    if (format == "bin") {
-      std::string error;
-      if (!codegen::write_binary_catalog(catalog, base + ".bin", error)) {
-        std::cerr << base << ".bin: error: " << error << '\n';
-        return false;
-      }
-      std::cout << "wrote " << base << ".bin\n";
-    } else if (format == "json") {
-      if (!write_text(base + ".json", codegen::catalog_json(catalog).dump(2) + "\n")) return false;
-    } else if (format == "cpp") {
-      const std::string basename =
-          options.basename.empty() ? catalog.name + "_catalog" : options.basename;
-      const std::string spec_name = std::filesystem::path(options.spec).filename().string();
-      const codegen::CppSources sources = codegen::cpp_catalog(catalog, basename, spec_name);
-      if (!write_text((dir / (basename + ".hpp")).string(), sources.header) ||
-          !write_text((dir / (basename + ".cpp")).string(), sources.source)) {
-        return false;
-      }
-    } else if (format == "dot") {
-      for (std::size_t i = 0; i < catalog.abstractions.size(); ++i) {
-        if (!write_text(base + "." + catalog.abstractions[i].context + ".dot",
-                        codegen::abstraction_dot(catalog, i))) {
-          return false;
-        }
-      }
+  return true;
+}
+
+bool write_continuous(const CompileOptions& options, const pipeline::ContinuousCatalog& catalog,
+                      OutputSet& out, std::string& error) {
+  codegen::CatalogData data = codegen::continuous_catalog_data(catalog, options.with_transitions);
+  if (!write_common(options, data, out, error)) return false;
+  if (wants(options, "json")) {
+    const std::string json =
+        codegen::continuous_catalog_json(catalog, options.with_transitions).dump() + "\n";
+    if (!out.write(catalog.name + ".json", json, error)) return false;
+  }
+  for (std::size_t i = 0; wants(options, "svg") && i < catalog.abstractions.size(); ++i) {
+    if (!out.write(catalog.name + "." + catalog.abstractions[i].context + ".svg",
+                   codegen::abstraction_svg(catalog, i), error))
+      return false;
+  }
+  return true;
+}
+
+void print_continuous_summary(const pipeline::ContinuousCatalog& catalog) {
+  for (const pipeline::ContinuousAbstraction& a : catalog.abstractions) {
+    std::string attends;
+    for (const std::string& name : a.axis_names)
+      attends += (attends.empty() ? "" : ", ") + name;
+    const double seconds =
+        a.seconds.grid + a.seconds.finite_mdp + a.seconds.bisimulation + a.seconds.policy;
+    std::printf("context %s: attends to %s; %zu cells, %u blocks, epsilon %.4g%s (%.2f s)\n",
+                a.context.c_str(), attends.c_str(), a.grid.num_cells(), a.num_blocks,
+                codegen::bound_as_double(a.epsilon), a.exact() ? " (exact)" : "", seconds);
+    if (!a.met) {
+      std::printf(
+          "  note: the cell budget (--max-cells) stopped the refinement above the "
+          "target epsilon\n");
     }
   }
-  return true;
 }
 
-int run_compile(const CompileOptions& options) {
+// What goes in the marker file: enough to tell which spec and options made the set, and
+// nothing that changes between identical runs.
+std::string marker_text(const CompileOptions& options, std::uint64_t hash, const OutputSet& out) {
+  std::string text = "written by oasisc " + std::string(OASIS_VERSION) + " compile\n";
+  text += "spec " + fs::path(options.spec).filename().string() + " " + codegen::hash_text(hash) +
+          "\nfiles";
+  for (const std::string& name : out.names())
+    text += " " + name;
+  return text + "\n";
+}
+
+int run_compile(CompileOptions options) {
   SourceManager sources;
   DiagnosticEngine diagnostics(sources, std::cerr, options.common.max_errors);
   auto loaded =
       load_model(options.spec, sources, diagnostics, effective_load_options(options.common));
   if (!loaded || diagnostics.has_errors()) return 1;
-  if (!loaded->model) {
-    std::cerr << options.spec
-              << ": error: continuous models need the geometry layer, which this build does not "
-                 "have yet\n";
+  const bool continuous = !loaded->model;
+  if (options.formats.empty()) {
+    options.formats = continuous ? std::vector<std::string>{"bin", "json", "svg"}
+                                 : std::vector<std::string>{"bin", "json", "dot"};
+  }
+  const char* refused = continuous ? (wants(options, "dot") ? "dot" : nullptr)
+                                   : (wants(options, "svg") ? "svg" : nullptr);
+  if (refused != nullptr) {
+    std::cerr << options.spec << ": error: --format " << refused << " draws "
+              << (continuous ? "explicit quotients; use svg for a continuous spec"
+                             : "continuous abstractions; use dot for a discrete model")
+              << '\n';
     return 1;
   }
-  codegen::BuildOptions build;
-  build.p_correct = options.p_correct;
+  if (continuous && options.p_correct) {
+    std::cerr << options.spec << ": error: --robust needs explicit states (a discrete model)\n";
+    return 1;
+  }
+  const std::uint64_t hash = codegen::spec_hash_of_file(options.spec);
+  if (options.output.empty()) options.output = fs::path(options.spec).stem().string();
+  StagedDirectory directory;
   std::string error;
-  auto catalog = codegen::build_catalog(*loaded->model, codegen::spec_hash_of_file(options.spec),
-                                        build, error);
-  if (!catalog) {
-    std::cerr << options.spec << ": error: " << error << '\n';
+  if (!directory.open(options.output, error)) {
+    std::cerr << options.output << ": error: " << error << '\n';
     return 1;
   }
-  return emit(*catalog, options) ? 0 : 1;
+  OutputSet out(directory.staging_path());
+  bool written = false;
+  if (continuous) {
+    pipeline::ContinuousCatalogOptions build;
+    build.abstraction.epsilon = options.epsilon;
+    build.abstraction.max_cells = options.max_cells;
+    build.abstraction.attention = !options.no_attention;
+    build.jobs = options.jobs;
+    const auto catalog = pipeline::build_continuous_catalog(*loaded->ir, hash, build, error);
+    if (!catalog) {
+      std::cerr << options.spec << ": error: " << error << '\n';
+      return 1;
+    }
+    print_continuous_summary(*catalog);
+    written = write_continuous(options, *catalog, out, error);
+  } else {
+    codegen::BuildOptions build;
+    build.p_correct = options.p_correct;
+    auto catalog = codegen::build_catalog(*loaded->model, hash, build, error);
+    if (!catalog) {
+      std::cerr << options.spec << ": error: " << error << '\n';
+      return 1;
+    }
+    written = write_discrete(options, *catalog, out, error);
+  }
+  if (!written || !directory.commit(marker_text(options, hash, out), error)) {
+    std::cerr << options.output << ": error: " << error << '\n';
+    return 1;
+  }
+  for (const std::string& name : out.names())
+    std::cout << "wrote " << (fs::path(options.output) / name).string() << '\n';
+  return 0;
 }
 
 }  // namespace
@@ -105,34 +211,56 @@ int run_compile(const CompileOptions& options) {
 CommandRunner add_compile_command(CLI::App& app) {
   auto options = std::make_shared<CompileOptions>();
   CLI::App* command = app.add_subcommand(
-      "compile", "Compile a spec into a catalog: the quotient and policy of every context");
+      "compile", "Compile a spec into a catalog: the abstraction and policy of every context");
   command->footer(
-      "For every context: the coarsest bisimulation quotient (see 'oasisc quotient') and a\n"
-      "policy solved on it by value iteration (docs/policies.md). Writes into DIR:\n"
+      "Discrete specs and imported models: for every context the coarsest bisimulation\n"
+      "quotient (see 'oasisc quotient') and a policy solved on it (docs/policies.md).\n"
+      "Continuous specs: for every context the variables it attends to, a grid on them\n"
+      "refined until every transition row is within --epsilon of the truth (a sound bound,\n"
+      "docs/geometry.md), the quotient of that finite MDP and its policy.\n\n"
+      "DIR (default: the spec's name, e.g. ./discrete_tracking) is written as one unit: the\n"
+      "whole new set of files replaces the whole old one, also if compile is killed. DIR\n"
+      "must be new, empty, or written by an earlier compile (marked by .oasisc-output).\n"
       "  NAME.bin           the binary catalog the runtime loads (rt::LoadedCatalog)\n"
-      "  NAME.json          the same for people and tools\n"
-      "  NAME.CONTEXT.dot   each abstraction for Graphviz (bold: the policy's action)\n"
+      "  NAME.json          the same for people and tools (continuous: docs/geometry.md)\n"
+      "  NAME.CONTEXT.dot   each explicit abstraction for Graphviz (bold: the policy)\n"
+      "  NAME.CONTEXT.svg   each continuous abstraction as a picture\n"
       "  NAME_catalog.hpp/.cpp  (--format cpp) C++ tables to link: NAME::catalog()\n"
-      "Every file is written whole or not at all. --robust P adds what the runtime's robust\n"
-      "filter needs: the full-state transitions of every context and a sensor that reports\n"
-      "the true state with probability P.\n\n"
+      "Default formats: bin,json,dot (discrete), bin,json,svg (continuous). --robust P adds\n"
+      "what the runtime's robust filter needs (discrete only).\n\n"
       "Examples:\n"
       "  oasisc compile specs/discrete_tracking.oasis -o out\n"
-      "  oasisc verify specs/discrete_tracking.oasis out/discrete_tracking.bin");
+      "  oasisc verify specs/discrete_tracking.oasis out/discrete_tracking.bin\n"
+      "  oasisc compile specs/go1_treat.oasis -o go1 --format bin,json,cpp,svg --epsilon 0.1");
   command->add_option("spec", options->spec, "Spec (.oasis) or model (.aut, .tra) file")
       ->required();
-  command->add_option("-o,--output", options->output, "Output directory")->capture_default_str();
+  command->add_option("-o,--output", options->output,
+                      "Output directory (default: the spec's file name without extension)");
   command
       ->add_option("-f,--format", options->formats,
-                   "Formats: bin, json, dot, cpp (default: bin,json,dot)")
+                   "Formats: bin, json, dot, svg, cpp (default: bin,json,dot or bin,json,svg)")
       ->delimiter(',')
-      ->check(CLI::IsMember({"bin", "json", "dot", "cpp"}));
+      ->check(CLI::IsMember({"bin", "json", "dot", "svg", "cpp"}));
   command->add_option("--basename", options->basename,
                       "File name (without extension) of the C++ output");
   command
       ->add_option("--robust", options->p_correct,
-                   "Add the robust filter's section with this sensor accuracy")
+                   "Add the robust filter's section with this sensor accuracy (discrete)")
       ->check(CLI::Range(0.0, 1.0));
+  command
+      ->add_option("--epsilon", options->epsilon,
+                   "Continuous: the error bound every transition row must meet")
+      ->capture_default_str()
+      ->check(CLI::PositiveNumber);
+  command->add_option("--max-cells", options->max_cells, "Continuous: cells per context at most")
+      ->capture_default_str()
+      ->check(CLI::PositiveNumber);
+  command->add_flag("--no-attention", options->no_attention,
+                    "Continuous: partition every variable (the no-attention baseline)");
+  command->add_flag("--with-transitions", options->with_transitions,
+                    "Continuous: also write the quotient's transition rows (large)");
+  command->add_option("-j,--jobs", options->jobs, "Contexts abstracted in parallel (0: all cores)")
+      ->capture_default_str();
   add_common_options(*command, options->common);
   return [options] { return run_compile(*options); };
 }

@@ -1,0 +1,176 @@
+#include "support/staged_directory.hpp"
+
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <vector>
+
+#include <fcntl.h>
+#include <sys/file.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include "support/atomic_file.hpp"
+
+namespace oasis {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string reason_of(int code) {
+  std::string text = std::strerror(code);
+  if (!text.empty() && text[0] >= 'A' && text[0] <= 'Z') text[0] = static_cast<char>(text[0] + 32);
+  return text;
+}
+
+std::string staging_prefix(const fs::path& target) {
+  return "." + target.filename().string() + ".oasisc-staging.";
+}
+
+void sync_path(const fs::path& directory) {
+  const int fd = ::open(directory.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+  if (fd < 0) return;
+  ::fsync(fd);  // best effort: some file systems refuse fsync on directories
+  ::close(fd);
+}
+
+// Staging directories of killed writers: their flock is free. A live writer holds it.
+void remove_stale_siblings(const fs::path& target) {
+  const std::string prefix = staging_prefix(target);
+  std::error_code ec;
+  std::vector<fs::path> stale;
+  for (const auto& entry : fs::directory_iterator(target.parent_path(), ec)) {
+    const std::string name = entry.path().filename().string();
+    if (name.rfind(prefix, 0) != 0) continue;
+    const int fd = ::open(entry.path().c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC | O_NOFOLLOW);
+    if (fd < 0) continue;
+    if (::flock(fd, LOCK_EX | LOCK_NB) == 0) stale.push_back(entry.path());
+    ::close(fd);
+  }
+  for (const fs::path& path : stale)
+    fs::remove_all(path, ec);
+}
+
+bool owned_or_empty(const fs::path& target, std::string& error) {
+  std::error_code ec;
+  if (!fs::exists(target, ec)) return true;
+  if (!fs::is_directory(target, ec)) {
+    error = "'" + target.string() + "' exists and is not a directory";
+    return false;
+  }
+  if (fs::is_empty(target, ec) || fs::exists(target / StagedDirectory::kMarkerName, ec))
+    return true;
+  error = "'" + target.string() +
+          "' holds files that oasisc did not write; the output directory is replaced as a "
+          "whole, so give a new or empty directory (or one an earlier compile wrote)";
+  return false;
+}
+
+int exchange(const fs::path& from, const fs::path& to) {
+  return ::renameat2(AT_FDCWD, from.c_str(), AT_FDCWD, to.c_str(), RENAME_EXCHANGE);
+}
+
+}  // namespace
+
+StagedDirectory::~StagedDirectory() {
+  discard();
+}
+
+bool StagedDirectory::open(const std::string& target, std::string& error) {
+  discard();
+  std::error_code ec;
+  fs::path resolved = fs::weakly_canonical(fs::absolute(target, ec), ec);
+  if (ec || resolved.filename().empty() || resolved == resolved.root_path()) {
+    error = "'" + target + "' cannot be an output directory";
+    return false;
+  }
+  if (!owned_or_empty(resolved, error)) return false;
+  fs::create_directories(resolved.parent_path(), ec);
+  if (ec) {
+    error = "cannot create '" + resolved.parent_path().string() + "': " + ec.message();
+    return false;
+  }
+  // A writer killed between the two renames of the fallback swap left the old set aside and
+  // no target: put it back before anything else.
+  const fs::path aside = resolved.parent_path() / (staging_prefix(resolved) + "old");
+  if (!fs::exists(resolved, ec) && fs::exists(aside, ec)) fs::rename(aside, resolved, ec);
+  remove_stale_siblings(resolved);
+  std::string pattern = (resolved.parent_path() / (staging_prefix(resolved) + "XXXXXX")).string();
+  if (::mkdtemp(pattern.data()) == nullptr) {
+    error =
+        "cannot create a staging directory beside '" + resolved.string() + "': " + reason_of(errno);
+    return false;
+  }
+  // mkdtemp makes the directory private (0700); the output gets the permissions a plain
+  // mkdir would have given it.
+  const mode_t mask = ::umask(0);
+  ::umask(mask);
+  ::chmod(pattern.c_str(), 0777 & ~mask);
+  lock_fd_ = ::open(pattern.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+  if (lock_fd_ < 0 || ::flock(lock_fd_, LOCK_EX | LOCK_NB) != 0) {
+    error = "cannot lock the staging directory '" + pattern + "': " + reason_of(errno);
+    fs::remove_all(pattern, ec);
+    if (lock_fd_ >= 0) ::close(lock_fd_);
+    lock_fd_ = -1;
+    return false;
+  }
+  target_ = resolved.string();
+  staging_ = pattern;
+  return true;
+}
+
+bool StagedDirectory::commit(const std::string& marker_text, std::string& error) {
+  if (staging_.empty()) {
+    error = "no staging directory is open";
+    return false;
+  }
+  AtomicFile marker;
+  if (!marker.open((fs::path(staging_) / kMarkerName).string(), error)) return false;
+  marker.append(marker_text);
+  if (!marker.commit(error)) return false;
+  ::fsync(lock_fd_);
+  const fs::path target(target_);
+  const fs::path staging(staging_);
+  std::error_code ec;
+  if (!fs::exists(target, ec)) {
+    if (::rename(staging.c_str(), target.c_str()) != 0) {
+      error = "cannot rename '" + staging_ + "' to '" + target_ + "': " + reason_of(errno);
+      return false;
+    }
+  } else if (exchange(staging, target) != 0) {
+    if (errno != EINVAL && errno != ENOSYS) {
+      error = "cannot swap '" + staging_ + "' into '" + target_ + "': " + reason_of(errno);
+      return false;
+    }
+    // No RENAME_EXCHANGE here: move the old set aside under a staging name (removed by the
+    // next open() if we die now), then the new one in.
+    std::string aside = (target.parent_path() / (staging_prefix(target) + "old")).string();
+    fs::remove_all(aside, ec);
+    if (::rename(target.c_str(), aside.c_str()) != 0 ||
+        ::rename(staging.c_str(), target.c_str()) != 0) {
+      error = "cannot move '" + staging_ + "' into '" + target_ + "': " + reason_of(errno);
+      return false;
+    }
+    fs::remove_all(aside, ec);
+  }
+  // After an exchange the old content sits at the staging name: delete it.
+  fs::remove_all(staging, ec);
+  sync_path(target.parent_path());
+  staging_.clear();
+  ::close(lock_fd_);
+  lock_fd_ = -1;
+  return true;
+}
+
+void StagedDirectory::discard() {
+  if (!staging_.empty()) {
+    std::error_code ec;
+    fs::remove_all(staging_, ec);
+    staging_.clear();
+  }
+  if (lock_fd_ >= 0) ::close(lock_fd_);
+  lock_fd_ = -1;
+}
+
+}  // namespace oasis
