@@ -2,6 +2,8 @@
 // Test helpers: a spec (text or file) through the front end and exploration, failing the
 // current test with the diagnostics when it does not check.
 
+#include <fstream>
+#include <iterator>
 #include <sstream>
 #include <string>
 #include <utility>
@@ -27,6 +29,11 @@ model::ExplicitModel explore_loaded(Load load) {
   return model ? std::move(*model) : model::ExplicitModel{};
 }
 }  // namespace detail
+
+inline std::string read_text_file(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
 
 inline model::ExplicitModel explore_spec_text(const std::string& text,
                                               const std::string& name = "test.oasis") {

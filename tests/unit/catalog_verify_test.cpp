@@ -1,0 +1,187 @@
+// `oasisc verify` checks everything a catalog carries: a valid catalog with any one item
+// changed (and the file otherwise sound: it loads, its checksum is right) is rejected at the
+// right item, and an untouched one passes.
+
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "../support/run_oasisc.hpp"
+#include "../support/scratch_directory.hpp"
+#include "../support/spec_models.hpp"
+#include "codegen/binary_catalog.hpp"
+#include "codegen/catalog_data.hpp"
+#include "formats/model_file.hpp"
+#include "oasis/rt/catalog_file.hpp"
+#include "verify/catalog_check.hpp"
+
+namespace oasis {
+namespace {
+
+const std::string kSpec = std::string(OASIS_SOURCE_DIR) + "/specs/discrete_tracking.oasis";
+
+codegen::CatalogData compiled(const model::ExplicitModel& model,
+                              std::optional<double> p_correct = std::nullopt) {
+  codegen::BuildOptions options;
+  options.p_correct = p_correct;
+  std::string error;
+  auto catalog = codegen::build_catalog(model, 1, options, error);
+  EXPECT_TRUE(catalog) << error;
+  return std::move(*catalog);
+}
+
+// The verdicts for `catalog` after a round trip through the binary file (so the change is
+// one a file can carry: it must still load).
+std::vector<verify::CatalogCheck> verdicts(const model::ExplicitModel& model,
+                                           codegen::CatalogData& catalog) {
+  const std::string bytes = codegen::binary_catalog(catalog);
+  const rt::LoadedCatalog loaded = rt::LoadedCatalog::from_bytes(bytes.data(), bytes.size());
+  EXPECT_TRUE(loaded.ok()) << "the changed catalog must still be a sound file: " << loaded.error();
+  if (!loaded.ok()) return {};
+  return verify::check_catalog(model, loaded.view());
+}
+
+// The first failing item and its verdict, or "" when everything holds.
+std::string first_failure(const std::vector<verify::CatalogCheck>& checks) {
+  for (const verify::CatalogCheck& check : checks)
+    if (!check.ok) return check.item + ": " + check.verdict;
+  return "";
+}
+
+struct Change {
+  const char* name;
+  std::function<void(codegen::CatalogData&)> apply;
+  const char* expected;  // a piece of the failure message
+};
+
+class CatalogVerify : public ::testing::Test {
+ protected:
+  void expect_rejected(const model::ExplicitModel& model, const codegen::CatalogData& good,
+                       const Change& change) {
+    codegen::CatalogData bad = good;
+    change.apply(bad);
+    const std::string failure = first_failure(verdicts(model, bad));
+    EXPECT_NE(failure, "") << change.name << " was not caught";
+    EXPECT_NE(failure.find(change.expected), std::string::npos) << change.name << ": " << failure;
+  }
+
+  const model::ExplicitModel model_ = test::explore_spec_file(kSpec);
+};
+
+TEST_F(CatalogVerify, AnUntouchedCatalogPasses) {
+  for (const std::optional<double> p_correct : {std::optional<double>{}, std::optional(0.9)}) {
+    codegen::CatalogData catalog = compiled(model_, p_correct);
+    const auto checks = verdicts(model_, catalog);
+    ASSERT_EQ(checks.size(), 4U);
+    EXPECT_EQ(first_failure(checks), "");
+  }
+}
+
+TEST_F(CatalogVerify, EveryChangedItemIsCaught) {
+  const codegen::CatalogData good = compiled(model_, 0.9);
+  const std::vector<Change> changes = {
+      {"policy", [](auto& c) { c.abstractions[0].policy[0] ^= 1U; }, "not optimal"},
+      {"block reward", [](auto& c) { c.abstractions[0].block_reward[1] = 2.0; }, "has reward"},
+      {"R^Z", [](auto& c) { c.abstractions[1].reward[0] += 0.5; }, "R^Z"},
+      {"value", [](auto& c) { c.abstractions[1].value[0] += 0.01; }, "value[0]"},
+      {"transition probability",
+       [](auto& c) {  // move mass between the two targets of a row, keeping its sum
+         auto& q = c.abstractions[0].quotient;
+         for (std::size_t r = 0; r + 1 < q.choice_begin.size(); ++r) {
+           if (q.choice_begin[r + 1] - q.choice_begin[r] == 2) {
+             q.probability[q.choice_begin[r]] -= 0.25;
+             q.probability[q.choice_begin[r] + 1] += 0.25;
+             return;
+           }
+         }
+       },
+       "probability"},
+      {"transition target",
+       [](auto& c) {
+         auto& q = c.abstractions[1].quotient;
+         q.target[0] = 1 - q.target[0];
+       },
+       "block"},
+      {"switching",
+       [](auto& c) {
+         c.switching[0] = 0.7;
+         c.switching[1] = 0.3;
+       },
+       "switching[0][0]"},
+      {"prior",
+       [](auto& c) {
+         c.prior[0] = 0.6;
+         c.prior[1] = 0.4;
+       },
+       "prior[0]"},
+      {"action name", [](auto& c) { c.action_names[1] = "X"; }, "action 1"},
+      {"state name", [](auto& c) { c.state_names[2] = "s9"; }, "state 2"},
+      {"context name", [](auto& c) { c.abstractions[1].context = "elsewhere"; },
+       "context 'elsewhere'"},
+      {"catalog name", [](auto& c) { c.name = "other"; }, "named 'other'"},
+      {"robust section",
+       [](auto& c) {
+         auto& st = c.abstractions[0].state_transitions;
+         for (std::size_t r = 0; r + 1 < st.choice_begin.size(); ++r) {
+           if (st.choice_begin[r + 1] - st.choice_begin[r] == 2) {
+             st.probability[st.choice_begin[r]] -= 0.25;
+             st.probability[st.choice_begin[r] + 1] += 0.25;
+             return;
+           }
+         }
+       },
+       "robust section"},
+      {"partition",
+       [](auto& c) {
+         auto& abs = c.abstractions[0];
+         abs.block_of = {0, 1, 1};  // object_at_s1's partition in object_at_s3's place
+       },
+       "FAILED"},
+  };
+  for (const Change& change : changes)
+    expect_rejected(model_, good, change);
+}
+
+TEST_F(CatalogVerify, ImportedModelsAndHorizonsAreCheckedToo) {
+  SourceManager sources;
+  std::ostringstream messages;
+  DiagnosticEngine diagnostics(sources, messages);
+  const auto coin = formats::read_model_file(
+      std::string(OASIS_SOURCE_DIR) + "/tests/data/formats/coin.aut", sources, diagnostics, {});
+  ASSERT_TRUE(coin) << messages.str();
+  codegen::CatalogData catalog = compiled(*coin);
+  EXPECT_EQ(first_failure(verdicts(*coin, catalog)), "");
+  catalog.switching = {0.5};  // not a distribution: refused by the loader itself
+  const std::string bytes = codegen::binary_catalog(catalog);
+  EXPECT_FALSE(rt::LoadedCatalog::from_bytes(bytes.data(), bytes.size()).ok());
+
+  std::string text = test::read_text_file(kSpec);
+  text.replace(text.find("discount 0.9;"), 13, "horizon 4;");
+  const model::ExplicitModel horizon = test::explore_spec_text(text);
+  codegen::CatalogData planned = compiled(horizon);
+  EXPECT_EQ(first_failure(verdicts(horizon, planned)), "");
+  planned.abstractions[0].value[0] += 0.5;
+  EXPECT_NE(first_failure(verdicts(horizon, planned)).find("4-step value"), std::string::npos);
+}
+
+TEST_F(CatalogVerify, TheCommandLineRejectsAnEditedFile) {
+  const test::ScratchDirectory scratch("oasis_catalog_verify");
+  codegen::CatalogData catalog = compiled(model_);
+  catalog.spec_hash = rt::spec_hash(test::read_text_file(kSpec));
+  const auto good = scratch.path() / "good.bin";
+  const auto bad = scratch.path() / "bad.bin";
+  std::ofstream(good, std::ios::binary) << codegen::binary_catalog(catalog);
+  catalog.abstractions[1].policy[1] ^= 1U;
+  std::ofstream(bad, std::ios::binary) << codegen::binary_catalog(catalog);
+  const auto passed = test::run_oasisc("verify " + kSpec + " " + good.string());
+  EXPECT_EQ(passed.status, 0) << passed.output;
+  const auto failed = test::run_oasisc("verify " + kSpec + " " + bad.string());
+  EXPECT_EQ(failed.status, 1) << failed.output;
+  EXPECT_NE(failed.output.find("context object_at_s1: FAILED"), std::string::npos) << failed.output;
+}
+
+}  // namespace
+}  // namespace oasis
