@@ -1,6 +1,7 @@
 #include "codegen/continuous_json.hpp"
 
 #include "codegen/catalog_data.hpp"
+#include "codegen/json_catalog.hpp"
 #include "oasis/rt/catalog_view.hpp"
 
 namespace oasis::codegen {
@@ -88,14 +89,7 @@ nlohmann::json continuous_catalog_json(const pipeline::ContinuousCatalog& catalo
   out["compiler_version"] = catalog.compiler_version;
   out["variables"] = catalog.variable_names;
   out["actions"] = catalog.action_names;
-  const std::size_t n = catalog.abstractions.size();
-  nlohmann::json switching = nlohmann::json::array();
-  for (std::size_t i = 0; i < n; ++i) {
-    switching.push_back(
-        std::vector<double>(catalog.switching.begin() + static_cast<std::ptrdiff_t>(i * n),
-                            catalog.switching.begin() + static_cast<std::ptrdiff_t>((i + 1) * n)));
-  }
-  out["switching"] = std::move(switching);
+  out["switching"] = matrix_rows_json(catalog.switching, catalog.abstractions.size());
   out["prior"] = catalog.prior;
   nlohmann::json abstractions = nlohmann::json::array();
   for (const pipeline::ContinuousAbstraction& abstraction : catalog.abstractions)

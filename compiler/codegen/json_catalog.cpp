@@ -39,6 +39,15 @@ nlohmann::json abstraction_json(const CatalogData& catalog, const AbstractionDat
 
 }  // namespace
 
+nlohmann::json matrix_rows_json(const std::vector<double>& matrix, std::size_t n) {
+  nlohmann::json rows = nlohmann::json::array();
+  for (std::size_t i = 0; i < n; ++i) {
+    rows.push_back(std::vector<double>(matrix.begin() + static_cast<std::ptrdiff_t>(i * n),
+                                       matrix.begin() + static_cast<std::ptrdiff_t>((i + 1) * n)));
+  }
+  return rows;
+}
+
 nlohmann::json catalog_json(const CatalogData& catalog) {
   nlohmann::json out;
   out["format"] = rt::kCatalogFormat;
@@ -47,14 +56,7 @@ nlohmann::json catalog_json(const CatalogData& catalog) {
   out["compiler_version"] = catalog.compiler_version;
   out["states"] = catalog.state_names;
   out["actions"] = catalog.action_names;
-  const std::size_t n = catalog.abstractions.size();
-  nlohmann::json switching = nlohmann::json::array();
-  for (std::size_t i = 0; i < n; ++i) {
-    switching.push_back(
-        std::vector<double>(catalog.switching.begin() + static_cast<std::ptrdiff_t>(i * n),
-                            catalog.switching.begin() + static_cast<std::ptrdiff_t>((i + 1) * n)));
-  }
-  out["switching"] = std::move(switching);
+  out["switching"] = matrix_rows_json(catalog.switching, catalog.abstractions.size());
   out["prior"] = catalog.prior;
   out["observation"] =
       catalog.observation == rt::ObservationKind::kNone

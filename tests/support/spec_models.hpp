@@ -35,6 +35,44 @@ inline std::string read_text_file(const std::string& path) {
   return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
 }
 
+// A spec's text or file through the front end only (continuous specs stop there), failing the
+// current test with the diagnostics when it does not check.
+inline model::ModelIR check_spec_text_ir(const std::string& text) {
+  SourceManager sources;
+  std::ostringstream messages;
+  DiagnosticEngine diagnostics(sources, messages);
+  auto ir = spec::check_spec_text(sources.add("test.oasis", text), diagnostics);
+  EXPECT_TRUE(ir) << messages.str();
+  return ir ? std::move(*ir) : model::ModelIR{};
+}
+
+inline model::ModelIR load_spec_ir(const std::string& path) {
+  SourceManager sources;
+  std::ostringstream messages;
+  DiagnosticEngine diagnostics(sources, messages);
+  auto ir = spec::load_spec(path, sources, diagnostics);
+  EXPECT_TRUE(ir) << messages.str();
+  return ir ? std::move(*ir) : model::ModelIR{};
+}
+
+inline model::ModelIR shipped_go1_spec() {
+  return load_spec_ir(std::string(OASIS_SOURCE_DIR) + "/specs/go1_treat.oasis");
+}
+
+// A line with deterministic unit moves and a reward on [3, 4]: its coarsest bisimulation is
+// known (the ten unit intervals and outside), for the geometry tests.
+inline constexpr const char* kDeterministicLineSpec = R"(
+mdp line {
+  continuous x : [0 .. 10];
+  actions left, right;
+  discount 0.9;
+  dynamics [left] { x' = x - 1; }
+  dynamics [right] { x' = x + 1; }
+  region goal = x >= 3 & x <= 4;
+}
+catalog { context at_goal { reward goal : 1; } }
+)";
+
 inline model::ExplicitModel explore_spec_text(const std::string& text,
                                               const std::string& name = "test.oasis") {
   return detail::explore_loaded([&](SourceManager& sources, DiagnosticEngine& diagnostics) {

@@ -14,27 +14,15 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include "../support/run_oasisc.hpp"
 #include "oasis/rt/catalog_file.hpp"
 
 namespace {
 
-struct Result {
-  int status = -1;
-  std::string output;  // stdout and stderr together
-};
+using Result = oasis::test::CommandResult;
 
 Result run(const std::string& arguments) {
-  const std::string command = std::string(OASISC_PATH) + " " + arguments + " 2>&1";
-  Result result;
-  FILE* pipe = ::popen(command.c_str(), "r");
-  if (pipe == nullptr) return result;
-  std::array<char, 4096> buffer{};
-  std::size_t count = 0;
-  while ((count = std::fread(buffer.data(), 1, buffer.size(), pipe)) > 0)
-    result.output.append(buffer.data(), count);
-  const int status = ::pclose(pipe);
-  result.status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return result;
+  return oasis::test::run_oasisc(arguments);
 }
 
 std::string spec(const std::string& name) {

@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include "../support/spec_models.hpp"
 #include "codegen/abstraction_svg.hpp"
 #include "codegen/continuous_json.hpp"
 #include "pipeline/continuous_catalog.hpp"
@@ -17,36 +18,9 @@
 namespace oasis {
 namespace {
 
-model::ModelIR load(const std::string& path) {
-  SourceManager sources;
-  std::ostringstream messages;
-  DiagnosticEngine diagnostics(sources, messages);
-  auto ir = spec::load_spec(path, sources, diagnostics);
-  EXPECT_TRUE(ir) << messages.str();
-  return ir ? std::move(*ir) : model::ModelIR{};
-}
-
-model::ModelIR checked_text(const std::string& text) {
-  SourceManager sources;
-  std::ostringstream messages;
-  DiagnosticEngine diagnostics(sources, messages);
-  auto ir = spec::check_spec_text(sources.add("test.oasis", text), diagnostics);
-  EXPECT_TRUE(ir) << messages.str();
-  return ir ? std::move(*ir) : model::ModelIR{};
-}
-
 TEST(ContinuousAbstraction, DeterministicLineIsAnExactBisimulationWithTheObviousPolicy) {
-  const model::ModelIR ir = checked_text(R"(
-mdp line {
-  continuous x : [0 .. 10];
-  actions left, right;
-  discount 0.9;
-  dynamics [left] { x' = x - 1; }
-  dynamics [right] { x' = x + 1; }
-  region goal = x >= 3 & x <= 4;
-}
-catalog { context at_goal { reward goal : 1; } }
-)");
+  const model::ModelIR ir = test::check_spec_text_ir(test::kDeterministicLineSpec);
+
   std::string error;
   const auto abstraction = pipeline::abstract_context(ir, 0, {}, error);
   ASSERT_TRUE(abstraction) << error;
@@ -68,7 +42,7 @@ catalog { context at_goal { reward goal : 1; } }
 }
 
 TEST(ContinuousAbstraction, Go1ContextAttendsToItsHumanAndMeetsTheTarget) {
-  const model::ModelIR ir = load(std::string(OASIS_SOURCE_DIR) + "/specs/go1_treat.oasis");
+  const model::ModelIR ir = test::shipped_go1_spec();
   std::string error;
   pipeline::ContinuousOptions options;
   options.epsilon = 0.3;  // coarse, to keep the test quick
@@ -90,20 +64,8 @@ TEST(ContinuousAbstraction, Go1ContextAttendsToItsHumanAndMeetsTheTarget) {
   EXPECT_NEAR(abstraction->value[block], best, 0.2 * best);
 }
 
-constexpr const char* kLine = R"(
-mdp line {
-  continuous x : [0 .. 10];
-  actions left, right;
-  discount 0.9;
-  dynamics [left] { x' = x - 1; }
-  dynamics [right] { x' = x + 1; }
-  region goal = x >= 3 & x <= 4;
-}
-catalog { context at_goal { reward goal : 1; } }
-)";
-
 TEST(ContinuousCatalog, JsonFollowsTheContract) {
-  const model::ModelIR ir = checked_text(kLine);
+  const model::ModelIR ir = test::check_spec_text_ir(test::kDeterministicLineSpec);
   std::string error;
   const auto catalog = pipeline::build_continuous_catalog(ir, 7, {}, error);
   ASSERT_TRUE(catalog) << error;
@@ -144,7 +106,7 @@ TEST(ContinuousCatalog, JsonFollowsTheContract) {
 }
 
 TEST(ContinuousCatalog, SvgShowsTheCellsAndTheCaption) {
-  const model::ModelIR ir = checked_text(kLine);
+  const model::ModelIR ir = test::check_spec_text_ir(test::kDeterministicLineSpec);
   std::string error;
   const auto catalog = pipeline::build_continuous_catalog(ir, 7, {}, error);
   ASSERT_TRUE(catalog) << error;

@@ -11,11 +11,11 @@
 
 #include <gtest/gtest.h>
 
+#include "../support/spec_models.hpp"
 #include "codegen/binary_catalog.hpp"
 #include "codegen/continuous_catalog_data.hpp"
 #include "oasis/rt/attention_filter.hpp"
 #include "oasis/rt/catalog_file.hpp"
-#include "spec/frontend.hpp"
 
 namespace oasis {
 namespace {
@@ -23,16 +23,11 @@ namespace {
 // The Go1 spec's catalog at a coarse epsilon (quick), built once for all tests.
 const pipeline::ContinuousCatalog& go1_catalog() {
   static const pipeline::ContinuousCatalog catalog = [] {
-    SourceManager sources;
-    std::ostringstream messages;
-    DiagnosticEngine diagnostics(sources, messages);
-    auto ir = spec::load_spec(std::string(OASIS_SOURCE_DIR) + "/specs/go1_treat.oasis", sources,
-                              diagnostics);
-    EXPECT_TRUE(ir) << messages.str();
+    const model::ModelIR ir = test::shipped_go1_spec();
     pipeline::ContinuousCatalogOptions options;
     options.abstraction.epsilon = 0.3;
     std::string error;
-    auto built = pipeline::build_continuous_catalog(*ir, 99, options, error);
+    auto built = pipeline::build_continuous_catalog(ir, 99, options, error);
     EXPECT_TRUE(built) << error;
     return std::move(*built);
   }();

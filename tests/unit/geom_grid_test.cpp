@@ -4,12 +4,14 @@
 #include <chrono>
 #include <cmath>
 #include <iostream>
+#include <optional>
 #include <random>
 #include <sstream>
 #include <string>
 
 #include <gtest/gtest.h>
 
+#include "../support/spec_models.hpp"
 #include "bisim/refinement.hpp"
 #include "geom/context_geometry.hpp"
 #include "geom/finite_mdp.hpp"
@@ -20,25 +22,6 @@
 namespace oasis {
 namespace {
 
-model::ModelIR checked_text(const std::string& text) {
-  SourceManager sources;
-  std::ostringstream messages;
-  DiagnosticEngine diagnostics(sources, messages);
-  auto ir = spec::check_spec_text(sources.add("test.oasis", text), diagnostics);
-  EXPECT_TRUE(ir) << messages.str();
-  return ir ? std::move(*ir) : model::ModelIR{};
-}
-
-model::ModelIR go1_spec() {
-  SourceManager sources;
-  std::ostringstream messages;
-  DiagnosticEngine diagnostics(sources, messages);
-  auto ir = spec::load_spec(std::string(OASIS_SOURCE_DIR) + "/specs/go1_treat.oasis", sources,
-                            diagnostics);
-  EXPECT_TRUE(ir) << messages.str();
-  return ir ? std::move(*ir) : model::ModelIR{};
-}
-
 geom::ContextGeometry geometry_of(const model::ModelIR& ir, std::size_t context) {
   std::string error;
   auto geometry = geom::context_geometry(ir, context, geom::analyse_relevance(ir, context), error);
@@ -47,7 +30,7 @@ geom::ContextGeometry geometry_of(const model::ModelIR& ir, std::size_t context)
 }
 
 TEST(GeomGrid, Go1ContextMeetsTheTarget) {
-  const model::ModelIR ir = go1_spec();
+  const model::ModelIR ir = test::shipped_go1_spec();
   const geom::ContextGeometry geometry = geometry_of(ir, 0);
   ASSERT_EQ(geometry.dimension(), 2U);
   std::string error;
@@ -71,22 +54,11 @@ TEST(GeomGrid, Go1ContextMeetsTheTarget) {
             << " s, bisimulation " << seconds(built, quotiented) << " s\n";
 }
 
-constexpr const char* kLine = R"(
-mdp line {
-  continuous x : [0 .. 10];
-  actions left, right;
-  dynamics [left] { x' = x - 1; }
-  dynamics [right] { x' = x + 1; }
-  region goal = x >= 3 & x <= 4;
-}
-catalog { context at_goal { reward goal : 1; } }
-)";
-
 // Deterministic unit shifts of a line with a reward on [3, 4]: the pre-images of the reward's
 // and the domain's ends are the integers, so the cells are the ten unit intervals, every
 // row is exact (epsilon 0) and goes to the neighbouring cell or outside.
 TEST(GeomGrid, DeterministicShiftsGiveTheAnalyticCellsExactly) {
-  const model::ModelIR ir = checked_text(kLine);
+  const model::ModelIR ir = test::check_spec_text_ir(test::kDeterministicLineSpec);
   const geom::ContextGeometry geometry = geometry_of(ir, 0);
   std::string error;
   auto partition = geom::partition_grid(geometry, {.epsilon = 0.1, .max_cells = 1000}, error);
@@ -116,16 +88,16 @@ TEST(GeomGrid, DeterministicShiftsGiveTheAnalyticCellsExactly) {
 }
 
 TEST(GeomGrid, PreimagesThatDoNotCloseAreRefused) {
-  std::string text = kLine;
+  std::string text = test::kDeterministicLineSpec;
   text.replace(text.find("x' = x - 1;"), 11, "x' = 2 * x;");  // pre-images halve towards 0
-  const model::ModelIR ir = checked_text(text);
+  const model::ModelIR ir = test::check_spec_text_ir(text);
   std::string error;
   EXPECT_FALSE(geom::partition_grid(geometry_of(ir, 0), {.epsilon = 0.1, .max_cells = 500}, error));
   EXPECT_NE(error.find("more than 500 cells"), std::string::npos) << error;
 }
 
 TEST(GeomGrid, TheCellBudgetWinsOverTheTargetAndSaysSo) {
-  const model::ModelIR ir = go1_spec();
+  const model::ModelIR ir = test::shipped_go1_spec();
   std::string error;
   auto partition =
       geom::partition_grid(geometry_of(ir, 0), {.epsilon = 0.01, .max_cells = 2000}, error);
@@ -135,19 +107,30 @@ TEST(GeomGrid, TheCellBudgetWinsOverTheTargetAndSaysSo) {
   EXPECT_GT(to_double(partition->epsilon), 0.01);
 }
 
+// The Go1 spec's first context on a coarse grid (epsilon 0.3) and its finite MDP.
+struct GriddedGo1 {
+  model::ModelIR ir = test::shipped_go1_spec();
+  geom::ContextGeometry geometry = geometry_of(ir, 0);
+  std::string error;
+  std::optional<geom::GridPartition> partition =
+      geom::partition_grid(geometry, {.epsilon = 0.3, .max_cells = 100000}, error);
+  model::ExplicitModel mdp =
+      partition ? geom::finite_mdp(geometry, partition->grid, ir.actions, ir.objective)
+                : model::ExplicitModel{};
+};
+
 // The error bound holds for every point of a cell: from points sampled in a cell, the
 // successor's frequency in every target (and outside) stays within epsilon of the row, plus
 // sampling error.
 TEST(GeomGrid, MonteCarloSuccessorsAgreeWithTheRowsWithinEpsilon) {
-  const model::ModelIR ir = go1_spec();
-  const geom::ContextGeometry geometry = geometry_of(ir, 0);
-  std::string error;
-  auto partition = geom::partition_grid(geometry, {.epsilon = 0.3, .max_cells = 100000}, error);
-  ASSERT_TRUE(partition) << error;
-  const geom::Grid& grid = partition->grid;
-  const model::ExplicitModel mdp = geom::finite_mdp(geometry, grid, ir.actions, ir.objective);
-  const model::TransitionMatrix& matrix = *mdp.contexts[0].transitions;
-  const double epsilon = to_double(partition->epsilon);
+  const GriddedGo1 go1;
+  ASSERT_TRUE(go1.partition);
+  const model::ModelIR& ir = go1.ir;
+  const geom::ContextGeometry& geometry = go1.geometry;
+  const geom::Grid& grid = go1.partition->grid;
+  const model::TransitionMatrix& matrix = *go1.mdp.contexts[0].transitions;
+  const model::ExplicitModel& mdp = go1.mdp;
+  const double epsilon = to_double(go1.partition->epsilon);
   std::mt19937_64 random(20261124);
   constexpr int kSamples = 10000;
   const double sampling = 5 * std::sqrt(0.25 / kSamples);  // 5 sigma of any frequency
@@ -194,15 +177,14 @@ TEST(GeomGrid, MonteCarloSuccessorsAgreeWithTheRowsWithinEpsilon) {
 // of the centre's row in total variation, and the bound is not vacuous: somewhere it is
 // nearly reached.
 TEST(GeomGrid, VerticesStayWithinTheBoundWhichIsNearlyReached) {
-  const model::ModelIR ir = go1_spec();
-  const geom::ContextGeometry geometry = geometry_of(ir, 0);
-  std::string error;
-  auto partition = geom::partition_grid(geometry, {.epsilon = 0.3, .max_cells = 100000}, error);
-  ASSERT_TRUE(partition) << error;
-  const geom::Grid& grid = partition->grid;
-  const model::ExplicitModel mdp = geom::finite_mdp(geometry, grid, ir.actions, ir.objective);
-  const model::TransitionMatrix& matrix = *mdp.contexts[0].transitions;
-  const double epsilon = to_double(partition->epsilon);
+  const GriddedGo1 go1;
+  ASSERT_TRUE(go1.partition);
+  const model::ModelIR& ir = go1.ir;
+  const geom::ContextGeometry& geometry = go1.geometry;
+  const geom::Grid& grid = go1.partition->grid;
+  const model::TransitionMatrix& matrix = *go1.mdp.contexts[0].transitions;
+  const model::ExplicitModel& mdp = go1.mdp;
+  const double epsilon = to_double(go1.partition->epsilon);
   std::mt19937_64 random(7);
   std::vector<std::uint32_t> index(2);
   double closest = 0;  // the largest total variation seen, as a fraction of epsilon

@@ -11,19 +11,11 @@
 #include <nlohmann/json.hpp>
 
 #include "../support/run_oasisc.hpp"
+#include "../support/spec_models.hpp"
 #include "spec/frontend.hpp"
 
 namespace oasis {
 namespace {
-
-model::ModelIR checked(const std::string& text) {
-  SourceManager sources;
-  std::ostringstream messages;
-  DiagnosticEngine diagnostics(sources, messages);
-  auto ir = spec::check_spec_text(sources.add("test.oasis", text), diagnostics);
-  EXPECT_TRUE(ir) << messages.str();
-  return ir ? std::move(*ir) : model::ModelIR{};
-}
 
 std::vector<std::string> names(const model::ModelIR& ir,
                                const std::vector<std::uint32_t>& indices) {
@@ -36,12 +28,8 @@ std::vector<std::string> names(const model::ModelIR& ir,
 using Names = std::vector<std::string>;
 
 TEST(Relevance, Go1TreatAttendsToTheTreatHolderOnly) {
-  SourceManager sources;
-  std::ostringstream messages;
-  DiagnosticEngine diagnostics(sources, messages);
-  const auto ir = spec::load_spec(std::string(OASIS_SOURCE_DIR) + "/specs/go1_treat.oasis", sources,
-                                  diagnostics);
-  ASSERT_TRUE(ir) << messages.str();
+  const model::ModelIR ir_value = test::shipped_go1_spec();
+  const model::ModelIR* ir = &ir_value;
   ASSERT_EQ(ir->contexts.size(), 2U);
   const geom::Relevance first = geom::analyse_relevance(*ir, 0);
   EXPECT_EQ(names(*ir, first.relevant), (Names{"x1", "y1"}));
@@ -74,7 +62,7 @@ catalog {
 )";
 
 TEST(Relevance, ClosesOverTheDynamicsOfRelevantVariables) {
-  const model::ModelIR ir = checked(kChain);
+  const model::ModelIR ir = test::check_spec_text_ir(kChain);
   ASSERT_EQ(ir.contexts.size(), 2U);
   const geom::Relevance x = geom::analyse_relevance(ir, 0);
   EXPECT_EQ(names(ir, x.relevant), (Names{"x", "y", "z"}));
@@ -88,14 +76,14 @@ TEST(Relevance, ClosesOverTheDynamicsOfRelevantVariables) {
 
 TEST(Relevance, ReadingARelevantVariableDoesNotMakeAVariableRelevant) {
   // w' reads x, but the reward on w makes w relevant and, through its dynamics, x, y and z.
-  const model::ModelIR ir = checked(kChain);
+  const model::ModelIR ir = test::check_spec_text_ir(kChain);
   const geom::Relevance w = geom::analyse_relevance(ir, 1);
   EXPECT_EQ(names(ir, w.relevant), (Names{"x", "y", "z", "w"}));
   EXPECT_TRUE(w.ignored.empty());
 }
 
 TEST(Relevance, FullStateKeepsEveryVariable) {
-  const model::ModelIR ir = checked(kChain);
+  const model::ModelIR ir = test::check_spec_text_ir(kChain);
   const geom::Relevance all = geom::full_state(ir);
   EXPECT_EQ(names(ir, all.relevant), (Names{"x", "y", "z", "w"}));
   EXPECT_TRUE(all.ignored.empty());
@@ -103,7 +91,7 @@ TEST(Relevance, FullStateKeepsEveryVariable) {
 }
 
 TEST(Relevance, AContextsOwnDynamicsDecide) {
-  const model::ModelIR ir = checked(R"(
+  const model::ModelIR ir = test::check_spec_text_ir(R"(
 mdp own {
   continuous x : [0 .. 1];
   continuous y : [0 .. 1];
