@@ -64,25 +64,25 @@ bool wants(const CompileOptions& options, const char* format) {
   return std::find(options.formats.begin(), options.formats.end(), format) != options.formats.end();
 }
 
-bool write_common(const CompileOptions& options, codegen::CatalogData& data, OutputSet& out,
-                  std::string& error) {
+// The binary file from `data`; the C++ tables from `linked`, which is `data` for discrete
+// catalogs and the catalog without its transition rows for continuous ones (a robot links
+// the partition, rewards and policies, not the analysis product).
+bool write_common(const CompileOptions& options, const codegen::CatalogData& data,
+                  const codegen::CatalogData& linked, OutputSet& out, std::string& error) {
   if (wants(options, "bin") && !out.write(data.name + ".bin", codegen::binary_catalog(data), error))
     return false;
-  if (wants(options, "cpp")) {
-    const std::string basename =
-        options.basename.empty() ? data.name + "_catalog" : options.basename;
-    const std::string spec_name = fs::path(options.spec).filename().string();
-    const codegen::CppSources sources = codegen::cpp_catalog(data, basename, spec_name);
-    if (!out.write(basename + ".hpp", sources.header, error) ||
-        !out.write(basename + ".cpp", sources.source, error))
-      return false;
-  }
-  return true;
+  if (!wants(options, "cpp")) return true;
+  const std::string basename =
+      options.basename.empty() ? linked.name + "_catalog" : options.basename;
+  const std::string spec_name = fs::path(options.spec).filename().string();
+  const codegen::CppSources sources = codegen::cpp_catalog(linked, basename, spec_name);
+  return out.write(basename + ".hpp", sources.header, error) &&
+         out.write(basename + ".cpp", sources.source, error);
 }
 
 bool write_discrete(const CompileOptions& options, codegen::CatalogData& data, OutputSet& out,
                     std::string& error) {
-  if (!write_common(options, data, out, error)) return false;
+  if (!write_common(options, data, data, out, error)) return false;
   if (wants(options, "json") &&
       !out.write(data.name + ".json", codegen::catalog_json(data).dump(2) + "\n", error))
     return false;
@@ -97,7 +97,11 @@ bool write_discrete(const CompileOptions& options, codegen::CatalogData& data, O
 bool write_continuous(const CompileOptions& options, const pipeline::ContinuousCatalog& catalog,
                       OutputSet& out, std::string& error) {
   codegen::CatalogData data = codegen::continuous_catalog_data(catalog, options.with_transitions);
-  if (!write_common(options, data, out, error)) return false;
+  codegen::CatalogData linked = options.with_transitions && wants(options, "cpp")
+                                    ? codegen::continuous_catalog_data(catalog, false)
+                                    : codegen::CatalogData{};
+  if (!write_common(options, data, options.with_transitions ? linked : data, out, error))
+    return false;
   if (wants(options, "json")) {
     const std::string json =
         codegen::continuous_catalog_json(catalog, options.with_transitions).dump() + "\n";
