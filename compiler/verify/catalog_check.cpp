@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <optional>
 
+#include "verify/policy_check.hpp"
 #include "verify/verifier.hpp"
 
 namespace oasis::verify {
@@ -201,150 +202,31 @@ std::optional<Failure> check_state_transitions(const model::ExplicitModel& model
   return std::nullopt;
 }
 
-// ---- the policy, by evaluation ------------------------------------------------------------
-
-struct NumericQuotient {
-  std::uint32_t blocks = 0;
-  std::uint32_t actions = 0;
-  std::vector<QuotientRow> const* rows = nullptr;
-  std::vector<double> reward;  // [blocks * actions] R^Z as doubles, from the model
-  std::vector<double> state_reward;
-
-  [[nodiscard]] double q(const std::vector<double>& value, std::uint32_t z, std::uint32_t a,
-                         double gamma) const {
-    double expected = 0;
-    for (const auto& [block, p] : (*rows)[std::size_t{z} * actions + a].to)
-      expected += to_double(p) * value[block];
-    return reward[std::size_t{z} * actions + a] + gamma * expected;
-  }
-  [[nodiscard]] bool dead(std::uint32_t z) const {
-    for (std::uint32_t a = 0; a < actions; ++a)
-      if ((*rows)[std::size_t{z} * actions + a].enabled) return false;
-    return true;
-  }
-  // The value of following `policy` for one more step after `value`.
-  [[nodiscard]] double step(const std::vector<double>& value, const std::uint32_t* policy,
-                            std::uint32_t z, double gamma) const {
-    return dead(z) ? state_reward[z] + gamma * value[z] : q(value, z, policy[z], gamma);
-  }
-};
-
-std::optional<Failure> check_policy_discounted(const NumericQuotient& quotient,
-                                               const rt::AbstractionView& abs, double gamma,
-                                               double& tolerance) {
-  double scale = 1;
-  for (std::uint32_t z = 0; z < quotient.blocks; ++z)
-    scale = std::max(scale, std::fabs(abs.value[z]));
-  tolerance = 1e-6 * scale;
-  // V^pi by iteration from 0 to within delta: stop when a sweep changes V by at most
-  // delta (1 - gamma) / gamma.
-  const double delta = tolerance * (1 - gamma) / 8;
-  std::vector<double> value(quotient.blocks, 0);
-  std::vector<double> next(quotient.blocks, 0);
-  for (long sweep = 0;; ++sweep) {
-    double change = 0;
-    for (std::uint32_t z = 0; z < quotient.blocks; ++z) {
-      next[z] = quotient.step(value, abs.policy, z, gamma);
-      change = std::max(change, std::fabs(next[z] - value[z]));
-    }
-    value.swap(next);
-    if (change <= delta * (1 - gamma) / gamma) break;
-    if (sweep > 10'000'000) return Failure{"policy evaluation did not converge"};
-  }
-  // The Bellman residual bounds V* - V^pi by residual / (1 - gamma): first the policy, then
-  // the values it is said to have.
-  for (std::uint32_t z = 0; z < quotient.blocks; ++z) {
-    if (quotient.dead(z)) continue;
-    for (std::uint32_t a = 0; a < quotient.actions; ++a) {
-      if (!(*quotient.rows)[std::size_t{z} * quotient.actions + a].enabled) continue;
-      if (quotient.q(value, z, a, gamma) - value[z] > tolerance * (1 - gamma) / 2)
-        return Failure{"the policy is not optimal: in block " + std::to_string(z) + " action " +
-                       std::to_string(a) + " gains " +
-                       number(quotient.q(value, z, a, gamma) - value[z]) + " over action " +
-                       std::to_string(abs.policy[z])};
-    }
-  }
-  for (std::uint32_t z = 0; z < quotient.blocks; ++z) {
-    if (std::fabs(abs.value[z] - value[z]) > tolerance)
-      return Failure{"value[" + std::to_string(z) + "] is " + number(abs.value[z]) +
-                     ", the policy's value is " + number(value[z])};
-  }
-  return std::nullopt;
-}
-
-std::optional<Failure> check_policy_horizon(const NumericQuotient& quotient,
-                                            const rt::AbstractionView& abs, double gamma,
-                                            std::uint32_t horizon, double& tolerance) {
-  std::vector<double> value(quotient.blocks, 0);
-  std::vector<double> next(quotient.blocks, 0);
-  std::vector<double> before_last;
-  for (std::uint32_t k = 1; k <= horizon; ++k) {
-    if (k == horizon) before_last = value;
-    for (std::uint32_t z = 0; z < quotient.blocks; ++z) {
-      double best = quotient.state_reward[z] + gamma * value[z];  // dead ends stay
-      bool first = true;
-      for (std::uint32_t a = 0; a < quotient.actions; ++a) {
-        if (!(*quotient.rows)[std::size_t{z} * quotient.actions + a].enabled) continue;
-        const double q = quotient.q(value, z, a, gamma);
-        best = first ? q : std::max(best, q);
-        first = false;
-      }
-      next[z] = best;
-    }
-    value.swap(next);
-  }
-  double scale = 1;
-  for (const double v : value)
-    scale = std::max(scale, std::fabs(v));
-  tolerance = 1e-6 * scale;
-  for (std::uint32_t z = 0; z < quotient.blocks; ++z) {
-    if (std::fabs(abs.value[z] - value[z]) > tolerance)
-      return Failure{"value[" + std::to_string(z) + "] is " + number(abs.value[z]) +
-                     ", the optimal " + std::to_string(horizon) + "-step value is " +
-                     number(value[z])};
-    if (quotient.dead(z)) continue;
-    if (quotient.q(before_last, z, abs.policy[z], gamma) < value[z] - tolerance)
-      return Failure{"the policy's first step in block " + std::to_string(z) +
-                     " is not optimal for the horizon"};
-  }
-  return std::nullopt;
-}
-
 std::optional<Failure> check_policy(const model::ExplicitModel& model, std::size_t context,
                                     const rt::AbstractionView& abs,
                                     const std::vector<model::StateIndex>& representative,
                                     const std::vector<QuotientRow>& rows, std::string& summary) {
-  NumericQuotient quotient{abs.num_blocks, model.num_actions(), &rows, {}, {}};
+  NumericQuotient quotient;
+  quotient.blocks = abs.num_blocks;
+  quotient.actions = model.num_actions();
   for (std::uint32_t z = 0; z < abs.num_blocks; ++z) {
     const model::StateIndex s = representative[z];
     quotient.state_reward.push_back(
         to_double(model.values[model.contexts[context].rewards.state[s]]));
-    for (model::ActionIndex a = 0; a < model.num_actions(); ++a)
+    for (model::ActionIndex a = 0; a < model.num_actions(); ++a) {
+      const QuotientRow& row = rows[std::size_t{z} * model.num_actions() + a];
       quotient.reward.push_back(to_double(model.reward(context, s, a)));
+      quotient.enabled.push_back(row.enabled ? 1 : 0);
+      std::vector<std::pair<std::uint32_t, double>> to;
+      for (const auto& [block, p] : row.to)
+        to.emplace_back(block, to_double(p));
+      quotient.to.push_back(std::move(to));
+    }
   }
-  for (std::uint32_t z = 0; z < abs.num_blocks; ++z) {
-    const bool dead = quotient.dead(z);
-    const std::uint32_t action = abs.policy[z];
-    if (dead != (action == rt::kNoAction) ||
-        (!dead && (action >= model.num_actions() ||
-                   !rows[std::size_t{z} * model.num_actions() + action].enabled)))
-      return Failure{"policy[" + std::to_string(z) + "] is not an action enabled in block " +
-                     std::to_string(z)};
-  }
-  const auto& objective = model.objective;
-  double tolerance = 0;
-  std::optional<Failure> failure;
-  if (objective.horizon) {
-    const double gamma = objective.discount ? to_double(*objective.discount) : 1.0;
-    failure = check_policy_horizon(quotient, abs, gamma, *objective.horizon, tolerance);
-    summary = "optimal for horizon " + std::to_string(*objective.horizon);
-  } else {
-    const double gamma =
-        objective.discount ? to_double(*objective.discount) : kDefaultDiscountForCheck;
-    failure = check_policy_discounted(quotient, abs, gamma, tolerance);
-    summary = "optimal within " + number(tolerance) + " (discount " + number(gamma) + ")";
-  }
-  return failure;
+  if (auto problem = check_policy_and_values(quotient, abs.policy, abs.value,
+                                             objective_of(model.objective), summary))
+    return Failure{*problem};
+  return std::nullopt;
 }
 
 CatalogCheck check_abstraction(const model::ExplicitModel& model, std::size_t context,

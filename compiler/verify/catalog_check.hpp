@@ -30,8 +30,4 @@ struct CatalogCheck {
 std::vector<CatalogCheck> check_catalog(const model::ExplicitModel& model,
                                         const rt::CatalogView& catalog);
 
-// The objective the compiler solves when a caller gives none (docs/policies.md), restated
-// here so that the check does not read the compiler's policy code.
-inline constexpr double kDefaultDiscountForCheck = 0.95;
-
 }  // namespace oasis::verify

@@ -1,0 +1,126 @@
+// `oasisc verify` on continuous catalogs: an untouched Go1 catalog passes; a wrong cell, a
+// wrong probability, an understated epsilon, a wrong reward, policy or grid is caught, in a
+// file that is otherwise sound (it loads).
+
+#include <functional>
+#include <string>
+#include <utility>
+
+#include <gtest/gtest.h>
+
+#include "../support/run_oasisc.hpp"
+#include "../support/scratch_directory.hpp"
+#include "../support/spec_models.hpp"
+#include "codegen/binary_catalog.hpp"
+#include "codegen/continuous_catalog_data.hpp"
+#include "oasis/rt/catalog_file.hpp"
+#include "pipeline/continuous_catalog.hpp"
+#include "verify/continuous_check.hpp"
+
+namespace oasis {
+namespace {
+
+const model::ModelIR& go1_ir() {
+  static const model::ModelIR ir = test::shipped_go1_spec();
+  return ir;
+}
+
+// The Go1 catalog at a coarse epsilon with its transition rows, built once.
+const codegen::CatalogData& go1_catalog() {
+  static const codegen::CatalogData data = [] {
+    pipeline::ContinuousCatalogOptions options;
+    options.abstraction.epsilon = 0.3;
+    std::string error;
+    const auto catalog = pipeline::build_continuous_catalog(go1_ir(), 3, options, error);
+    EXPECT_TRUE(catalog) << error;
+    return codegen::continuous_catalog_data(*catalog, true);
+  }();
+  return data;
+}
+
+std::string first_failure(codegen::CatalogData& catalog) {
+  const std::string bytes = codegen::binary_catalog(catalog);
+  const rt::LoadedCatalog loaded = rt::LoadedCatalog::from_bytes(bytes.data(), bytes.size());
+  if (!loaded.ok()) return "the changed catalog no longer loads: " + loaded.error();
+  for (const verify::CatalogCheck& check :
+       verify::check_continuous_catalog(go1_ir(), loaded.view()))
+    if (!check.ok) return check.item + ": " + check.verdict;
+  return "";
+}
+
+TEST(ContinuousVerify, AnUntouchedCatalogPasses) {
+  codegen::CatalogData catalog = go1_catalog();
+  EXPECT_EQ(first_failure(catalog), "");
+}
+
+TEST(ContinuousVerify, EveryChangedItemIsCaught) {
+  struct Change {
+    const char* name;
+    std::function<void(codegen::CatalogData&)> apply;
+    const char* expected;
+  };
+  const std::vector<Change> changes = {
+      {"a cell in another block",
+       [](auto& c) {  // two far-apart cells swap blocks: every block still holds a cell
+         auto& cells = c.abstractions[0].cell_block;
+         std::swap(cells[0], cells[cells.size() / 2]);
+       },
+       "cell 0"},
+      {"a row's probabilities",
+       [](auto& c) {  // the first row's mass sent to blocks half the grid away
+         auto& abstraction = c.abstractions[0];
+         auto& q = abstraction.quotient;
+         for (auto e = q.choice_begin[0]; e < q.choice_begin[1]; ++e)
+           q.target[e] = (q.target[e] + abstraction.num_blocks / 2) % abstraction.num_blocks;
+       },
+       "total variation"},
+      {"an understated epsilon", [](auto& c) { c.abstractions[1].epsilon = 0.01; },
+       "more than epsilon"},
+      {"a block reward",
+       [](auto& c) {
+         auto& r = c.abstractions[0].block_reward;
+         r[c.abstractions[0].cell_block[0]] = 1.0;
+       },
+       "has reward"},
+      {"the policy",
+       [](auto& c) { c.abstractions[1].policy[5] = (c.abstractions[1].policy[5] + 3) % 6; },
+       "not optimal"},
+      {"a value", [](auto& c) { c.abstractions[1].value[7] += 0.5; }, "value[7]"},
+      {"a grid breakpoint",
+       [](auto& c) { c.abstractions[0].grid_breaks[0] = -0.5; },  // x1's domain starts at 0
+       "domain"},
+      {"the grid's variables",
+       [](auto& c) {
+         c.abstractions[1].grid_axes = {0, 1};
+       },
+       "attends to"},
+      {"the switching model",
+       [](auto& c) {
+         c.switching[0] = 0.7;
+         c.switching[1] = 0.3;
+       },
+       "switching"},
+  };
+  for (const Change& change : changes) {
+    codegen::CatalogData bad = go1_catalog();
+    change.apply(bad);
+    const std::string failure = first_failure(bad);
+    EXPECT_NE(failure, "") << change.name << " was not caught";
+    EXPECT_NE(failure.find(change.expected), std::string::npos) << change.name << ": " << failure;
+  }
+}
+
+TEST(ContinuousVerify, TheCommandLineVerifiesACompiledCatalog) {
+  const test::ScratchDirectory scratch("oasis_continuous_verify");
+  const std::string spec = std::string(OASIS_SOURCE_DIR) + "/specs/go1_treat.oasis";
+  const auto out = scratch.path() / "go1";
+  const auto compiled = test::run_oasisc("compile " + spec + " -o " + out.string() +
+                                         " --format bin --epsilon 0.3 --with-transitions");
+  ASSERT_EQ(compiled.status, 0) << compiled.output;
+  const auto verified = test::run_oasisc("verify " + spec + " " + (out / "go1_treat.bin").string());
+  EXPECT_EQ(verified.status, 0) << verified.output;
+  EXPECT_NE(verified.output.find("rows within epsilon"), std::string::npos) << verified.output;
+}
+
+}  // namespace
+}  // namespace oasis
