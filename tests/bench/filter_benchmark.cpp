@@ -14,6 +14,7 @@
 
 #include "oasis/rt/attention_filter.hpp"
 #include "oasis/rt/catalog_view.hpp"
+#include "oasis/rt/grid_locator.hpp"
 
 namespace {
 
@@ -192,6 +193,38 @@ void BM_RobustDiscrete(benchmark::State& state) {
   state.SetItemsProcessed(state.iterations());
 }
 BENCHMARK(BM_RobustDiscrete);
+
+// Point location in a gridded continuous abstraction (grid_locator.hpp): the Go1 catalog's
+// grid at epsilon 0.1 has 84 x 101 intervals over (x, y); the argument is the number of
+// intervals per axis, over `dimension` axes, at random points of the domain.
+void BM_LocateCell(benchmark::State& state) {
+  const auto intervals = static_cast<std::uint32_t>(state.range(0));
+  const auto dimension = static_cast<std::uint32_t>(state.range(1));
+  std::vector<std::uint32_t> axes;
+  std::vector<std::uint32_t> begin{0};
+  std::vector<double> breaks;
+  for (std::uint32_t i = 0; i < dimension; ++i) {
+    axes.push_back(i);
+    for (std::uint32_t k = 0; k <= intervals; ++k)
+      breaks.push_back(5.0 * k / intervals);
+    begin.push_back(static_cast<std::uint32_t>(breaks.size()));
+  }
+  const oasis::rt::GridView grid{dimension, axes.data(), begin.data(), breaks.data()};
+  std::vector<double> points(4096 * dimension);
+  std::uint64_t seed = 88172645463325252ULL;
+  for (double& x : points) {  // xorshift: no <random> needed in the runtime's benchmark
+    seed ^= seed << 13;
+    seed ^= seed >> 7;
+    seed ^= seed << 17;
+    x = 5.0 * static_cast<double>(seed % 1000000) / 1000000.0;
+  }
+  std::size_t next = 0;
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(oasis::rt::locate_cell(grid, points.data() + next, dimension));
+    next = (next + dimension) % points.size();
+  }
+}
+BENCHMARK(BM_LocateCell)->Args({84, 2})->Args({101, 2})->Args({1000, 2})->Args({15, 4});
 
 }  // namespace
 
