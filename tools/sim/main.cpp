@@ -12,8 +12,8 @@
 #include <CLI/CLI.hpp>
 
 #include "codegen/catalog_data.hpp"
-#include "oasis/rt/spec_hash.hpp"
 #include "model/explorer.hpp"
+#include "oasis/rt/spec_hash.hpp"
 #include "sim/report.hpp"
 #include "sim/table1.hpp"
 #include "spec/frontend.hpp"
