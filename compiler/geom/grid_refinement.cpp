@@ -42,13 +42,17 @@ double narrowest_width(const ContextGeometry& geometry, std::size_t axis) {
   return narrowest;
 }
 
-// Cuts every segment between consecutive breaks of `axis` into pieces of at most `step`.
-std::set<Rational> subdivided(const std::set<Rational>& breaks, double step) {
+// Cuts every segment between consecutive breaks of `axis` into pieces of at most `step`, but
+// never into more than `max_pieces` (a target that no grid meets must not ask for 10^12
+// breakpoints: the cell budget refuses such grids anyway).
+std::set<Rational> subdivided(const std::set<Rational>& breaks, double step,
+                              std::size_t max_pieces) {
   std::set<Rational> out = breaks;
   for (auto it = breaks.begin(); std::next(it) != breaks.end(); ++it) {
     const Rational low = *it;
     const Rational length = *std::next(it) - low;
-    const double pieces = std::ceil(to_double(length) / step);
+    const double pieces =
+        std::min(std::ceil(to_double(length) / step), static_cast<double>(max_pieces));
     const long count = static_cast<long>(std::max(1.0, pieces));
     for (long k = 1; k < count; ++k)
       out.insert(low + length * Rational(k, count));
@@ -82,11 +86,12 @@ Rational partition_error(const ContextGeometry& geometry, const Breaks& breaks) 
 }
 
 // Breaks of the stochastic axes for cells of `scale` times each axis's narrowest disturbance.
-Breaks with_scale(const ContextGeometry& geometry, const Breaks& mandatory, double scale) {
+Breaks with_scale(const ContextGeometry& geometry, const Breaks& mandatory, double scale,
+                  std::size_t max_pieces) {
   Breaks breaks = mandatory;
   for (std::size_t i = 0; i < geometry.dimension(); ++i) {
     if (stochastic_somewhere(geometry, i))
-      breaks[i] = subdivided(mandatory[i], scale * narrowest_width(geometry, i));
+      breaks[i] = subdivided(mandatory[i], scale * narrowest_width(geometry, i), max_pieces);
   }
   return breaks;
 }
@@ -148,11 +153,12 @@ std::optional<GridPartition> partition_grid(const ContextGeometry& geometry,
   // that meets the target, or, when that needs too many cells, the finest that fits the
   // budget. Bisection on doubles chooses the grid; its ε is then computed exactly.
   auto meets = [&](double scale) {
-    return to_double(partition_error(geometry, with_scale(geometry, mandatory, scale))) <=
-           target.epsilon;
+    return to_double(partition_error(geometry, with_scale(geometry, mandatory, scale,
+                                                          target.max_cells + 1))) <= target.epsilon;
   };
   auto fits = [&](double scale) {
-    return cell_count(with_scale(geometry, mandatory, scale)) <= target.max_cells;
+    return cell_count(with_scale(geometry, mandatory, scale, target.max_cells + 1)) <=
+           target.max_cells;
   };
   double fine = 0;  // meets the target (a scale of 0 would, with infinitely many cells)
   double coarse = 1;
@@ -174,7 +180,7 @@ std::optional<GridPartition> partition_grid(const ContextGeometry& geometry,
     }
     scale = sparse;
   }
-  Breaks breaks = with_scale(geometry, mandatory, scale);
+  Breaks breaks = with_scale(geometry, mandatory, scale, target.max_cells + 1);
   GridPartition result;
   if (!close_under_preimages(geometry, breaks, target.max_cells + 1, result.preimage_rounds) ||
       cell_count(breaks) > target.max_cells) {

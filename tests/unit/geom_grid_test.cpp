@@ -235,5 +235,29 @@ TEST(GeomGrid, VerticesStayWithinTheBoundWhichIsNearlyReached) {
   EXPECT_GT(closest, 0.5) << "the bound is far looser than the worst vertex";
 }
 
+// A target no grid can meet (x reads y, which moves without a disturbance and so keeps its
+// pre-image cells, here the whole [0, 4]): the refinement stops at the budget, says the
+// target was not met, and does not try to build an unbounded number of breakpoints.
+TEST(GeomGrid, AnUnreachableTargetStopsAtTheBudget) {
+  const model::ModelIR ir = test::check_spec_text_ir(R"(
+mdp mixed {
+  continuous x : [0 .. 10];
+  continuous y : [0 .. 4];
+  actions go;
+  disturbance x in [-1 .. 1];
+  dynamics [go] { x' = x + y; }
+  region goal = x >= 3 & x <= 4;
+}
+catalog { context at_goal { reward goal : 1; } }
+)");
+  std::string error;
+  auto partition =
+      geom::partition_grid(geometry_of(ir, 0), {.epsilon = 0.1, .max_cells = 1000}, error);
+  ASSERT_TRUE(partition) << error;
+  EXPECT_FALSE(partition->met);
+  EXPECT_LE(partition->grid.num_cells(), 1000U);
+  EXPECT_GE(to_double(partition->epsilon), 1.0);  // y's half-width 2 over x's width 2
+}
+
 }  // namespace
 }  // namespace oasis
