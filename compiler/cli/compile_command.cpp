@@ -11,13 +11,14 @@
 #include "cli/commands.hpp"
 #include "codegen/abstraction_svg.hpp"
 #include "codegen/binary_catalog.hpp"
-#include "codegen/catalog_data.hpp"
-#include "codegen/continuous_catalog_data.hpp"
 #include "codegen/continuous_json.hpp"
 #include "codegen/cpp_catalog.hpp"
 #include "codegen/dot_catalog.hpp"
 #include "codegen/json_catalog.hpp"
+#include "pipeline/catalog_data.hpp"
 #include "pipeline/continuous_catalog.hpp"
+#include "pipeline/continuous_catalog_data.hpp"
+#include "pipeline/discrete_catalog.hpp"
 #include "support/atomic_file.hpp"
 #include "support/staged_directory.hpp"
 
@@ -26,13 +27,16 @@ namespace {
 
 namespace fs = std::filesystem;
 
+// The error bound a continuous compile aims at when --epsilon is not given.
+constexpr double kDefaultEpsilon = 0.1;
+
 struct CompileOptions {
   std::string spec;
   std::string output;  // default: the spec's file name without its extension
   std::vector<std::string> formats;
   std::string basename;  // of the C++ files; default NAME_catalog
   std::optional<double> p_correct;
-  double epsilon = 0.1;
+  std::optional<double> epsilon;  // continuous: default kDefaultEpsilon
   std::size_t max_cells = 200'000;
   bool no_attention = false;
   bool with_transitions = false;
@@ -67,8 +71,8 @@ bool wants(const CompileOptions& options, const char* format) {
 // The binary file from `data`; the C++ tables from `linked`, which is `data` for discrete
 // catalogs and the catalog without its transition rows for continuous ones (a robot links
 // the partition, rewards and policies, not the analysis product).
-bool write_common(const CompileOptions& options, const codegen::CatalogData& data,
-                  const codegen::CatalogData& linked, OutputSet& out, std::string& error) {
+bool write_common(const CompileOptions& options, const pipeline::CatalogData& data,
+                  const pipeline::CatalogData& linked, OutputSet& out, std::string& error) {
   if (wants(options, "bin") && !out.write(data.name + ".bin", codegen::binary_catalog(data), error))
     return false;
   if (!wants(options, "cpp")) return true;
@@ -80,7 +84,7 @@ bool write_common(const CompileOptions& options, const codegen::CatalogData& dat
          out.write(basename + ".cpp", sources.source, error);
 }
 
-bool write_discrete(const CompileOptions& options, codegen::CatalogData& data, OutputSet& out,
+bool write_discrete(const CompileOptions& options, pipeline::CatalogData& data, OutputSet& out,
                     std::string& error) {
   if (!write_common(options, data, data, out, error)) return false;
   if (wants(options, "json") &&
@@ -96,10 +100,10 @@ bool write_discrete(const CompileOptions& options, codegen::CatalogData& data, O
 
 bool write_continuous(const CompileOptions& options, const pipeline::ContinuousCatalog& catalog,
                       OutputSet& out, std::string& error) {
-  codegen::CatalogData data = codegen::continuous_catalog_data(catalog, options.with_transitions);
-  codegen::CatalogData linked = options.with_transitions && wants(options, "cpp")
-                                    ? codegen::continuous_catalog_data(catalog, false)
-                                    : codegen::CatalogData{};
+  pipeline::CatalogData data = pipeline::continuous_catalog_data(catalog, options.with_transitions);
+  pipeline::CatalogData linked = options.with_transitions && wants(options, "cpp")
+                                     ? pipeline::continuous_catalog_data(catalog, false)
+                                     : pipeline::CatalogData{};
   if (!write_common(options, data, options.with_transitions ? linked : data, out, error))
     return false;
   if (wants(options, "json")) {
@@ -124,7 +128,7 @@ void print_continuous_summary(const pipeline::ContinuousCatalog& catalog) {
         a.seconds.grid + a.seconds.finite_mdp + a.seconds.bisimulation + a.seconds.policy;
     std::printf("context %s: attends to %s; %zu cells, %u blocks, epsilon %.4g%s (%.2f s)\n",
                 a.context.c_str(), attends.c_str(), a.grid.num_cells(), a.num_blocks,
-                codegen::bound_as_double(a.epsilon), a.exact() ? " (exact)" : "", seconds);
+                pipeline::bound_as_double(a.epsilon), a.exact() ? " (exact)" : "", seconds);
     if (!a.met) {
       std::printf(
           "  note: the cell budget (--max-cells) stopped the refinement above the "
@@ -137,7 +141,7 @@ void print_continuous_summary(const pipeline::ContinuousCatalog& catalog) {
 // nothing that changes between identical runs.
 std::string marker_text(const CompileOptions& options, std::uint64_t hash, const OutputSet& out) {
   std::string text = "written by oasisc " + std::string(OASIS_VERSION) + " compile\n";
-  text += "spec " + fs::path(options.spec).filename().string() + " " + codegen::hash_text(hash) +
+  text += "spec " + fs::path(options.spec).filename().string() + " " + pipeline::hash_text(hash) +
           "\nfiles";
   for (const std::string& name : out.names())
     text += " " + name;
@@ -168,7 +172,16 @@ int run_compile(CompileOptions options) {
     std::cerr << options.spec << ": error: --robust needs explicit states (a discrete model)\n";
     return 1;
   }
-  const std::uint64_t hash = codegen::spec_hash_of_file(options.spec);
+  if (!continuous && options.epsilon) {
+    // A catalog claims an exact bisimulation, which `verify` checks exactly; a rounded
+    // quotient of a noisy model would be refused by it, so compile never makes one.
+    std::cerr << options.spec
+              << ": warning: --epsilon is the error bound of continuous specs and is ignored "
+                 "here: a discrete catalog is an exact bisimulation ('oasisc quotient "
+                 "--epsilon E' explores a rounded quotient of a model with noisy "
+                 "probabilities)\n";
+  }
+  const std::uint64_t hash = pipeline::spec_hash_of_file(options.spec);
   if (options.output.empty()) options.output = fs::path(options.spec).stem().string();
   StagedDirectory directory;
   std::string error;
@@ -180,7 +193,7 @@ int run_compile(CompileOptions options) {
   bool written = false;
   if (continuous) {
     pipeline::ContinuousCatalogOptions build;
-    build.abstraction.epsilon = options.epsilon;
+    build.abstraction.epsilon = options.epsilon.value_or(kDefaultEpsilon);
     build.abstraction.max_cells = options.max_cells;
     build.abstraction.attention = !options.no_attention;
     build.jobs = options.jobs;
@@ -192,9 +205,10 @@ int run_compile(CompileOptions options) {
     print_continuous_summary(*catalog);
     written = write_continuous(options, *catalog, out, error);
   } else {
-    codegen::BuildOptions build;
-    build.p_correct = options.p_correct;
-    auto catalog = codegen::build_catalog(*loaded->model, hash, build, error);
+    pipeline::BuildOptions build;
+    build.catalog.p_correct = options.p_correct;
+    build.abstraction.jobs = options.jobs;
+    auto catalog = pipeline::build_catalog(*loaded->model, hash, build, error);
     if (!catalog) {
       std::cerr << options.spec << ": error: " << error << '\n';
       return 1;
@@ -253,8 +267,7 @@ CommandRunner add_compile_command(CLI::App& app) {
       ->check(CLI::Range(0.0, 1.0));
   command
       ->add_option("--epsilon", options->epsilon,
-                   "Continuous: the error bound every transition row must meet")
-      ->capture_default_str()
+                   "Continuous: the error bound every transition row must meet (default 0.1)")
       ->check(CLI::PositiveNumber);
   command->add_option("--max-cells", options->max_cells, "Continuous: cells per context at most")
       ->capture_default_str()

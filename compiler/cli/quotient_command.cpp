@@ -1,22 +1,20 @@
 // `oasisc quotient FILE`: the coarsest bisimulation quotient of every context.
 
-#include <atomic>
 #include <chrono>
 #include <iomanip>
 #include <iostream>
 #include <memory>
 #include <mutex>
-#include <thread>
 
 #include <nlohmann/json.hpp>
 #include <sys/resource.h>
 #include <unistd.h>
 
 #include "bisim/quotient.hpp"
-#include "bisim/refinement.hpp"
 #include "cli/commands.hpp"
 #include "cli/quotient_output.hpp"
 #include "formats/aut_writer.hpp"
+#include "pipeline/discrete_catalog.hpp"
 #include "support/atomic_file.hpp"
 
 namespace oasis::cli {
@@ -64,49 +62,32 @@ std::optional<std::vector<std::size_t>> select_contexts(const model::ExplicitMod
   return selected;
 }
 
-// Quotients the selected contexts on up to `jobs` threads: contexts are independent and
-// share the model read-only.
-std::vector<ContextResult> run_contexts(const model::ExplicitModel& model,
-                                        const std::vector<std::size_t>& selected,
-                                        const QuotientOptions& options, bool progress) {
-  std::vector<ContextResult> results(selected.size());
-  std::atomic<std::size_t> next{0};
+// Refines the selected contexts in parallel, through the compiler's pipeline (partitions only).
+std::vector<pipeline::DiscreteAbstraction> run_contexts(const model::ExplicitModel& model,
+                                                        const std::vector<std::size_t>& selected,
+                                                        const QuotientOptions& options,
+                                                        bool progress) {
+  pipeline::DiscreteOptions refinement;
+  refinement.epsilon = options.epsilon;
+  refinement.solve = false;
+  refinement.jobs = options.jobs;
   std::mutex output;
-  auto worker = [&] {
-    for (std::size_t i = next++; i < selected.size(); i = next++) {
-      const std::size_t c = selected[i];
-      bisim::RefinementOptions refinement;
-      refinement.epsilon = options.epsilon;
-      if (progress) {
-        refinement.progress = [&, c](const bisim::RefinementProgress& p) {
-          const std::lock_guard lock(output);
-          std::cerr << "\rrefining " << model.contexts[c].name << ": " << p.blocks << " blocks, "
-                    << p.splitters_processed << " splitters done, " << p.splitters_queued
-                    << " queued\033[K" << std::flush;
-        };
-      }
-      const auto start = std::chrono::steady_clock::now();
-      ContextResult& result = results[i];
-      result.context = c;
-      result.partition = bisim::coarsest_bisimulation(model, c, refinement, &result.statistics);
-      result.seconds =
-          std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    }
-  };
-  const unsigned hardware = std::max(1U, std::thread::hardware_concurrency());
-  const unsigned jobs =
-      std::min<std::size_t>(options.jobs == 0 ? hardware : options.jobs, selected.size());
-  std::vector<std::thread> threads;
-  for (unsigned j = 1; j < jobs; ++j)
-    threads.emplace_back(worker);
-  worker();
-  for (std::thread& thread : threads)
-    thread.join();
+  if (progress) {
+    refinement.progress = [&](std::size_t c, const bisim::RefinementProgress& p) {
+      const std::lock_guard lock(output);
+      std::cerr << "\rrefining " << model.contexts[c].name << ": " << p.blocks << " blocks, "
+                << p.splitters_processed << " splitters done, " << p.splitters_queued
+                << " queued\033[K" << std::flush;
+    };
+  }
+  std::string error;  // only a policy can fail, and none is solved here
+  auto results = pipeline::abstract_contexts(model, selected, refinement, error);
   if (progress) std::cerr << "\r\033[K" << std::flush;
-  return results;
+  return std::move(*results);
 }
 
-int write_output(const LoadedModel& loaded, const std::vector<ContextResult>& results,
+int write_output(const LoadedModel& loaded,
+                 const std::vector<pipeline::DiscreteAbstraction>& results,
                  const QuotientOptions& options, double load_seconds) {
   const model::ExplicitModel& model = *loaded.model;
   const bool to_stdout = options.output.empty() || options.output == "-";

@@ -19,8 +19,8 @@ nlohmann::json state_label(const model::StateSpace& states, model::StateIndex s)
 }  // namespace
 
 void print_summary(std::ostream& out, const model::ExplicitModel& model,
-                   const std::vector<ContextResult>& results, double load_seconds, double peak_mib,
-                   std::optional<double> epsilon) {
+                   const std::vector<pipeline::DiscreteAbstraction>& results, double load_seconds,
+                   double peak_mib, std::optional<double> epsilon) {
   out << model.name << ": " << model.num_states()
       << (model.num_states() == 1 ? " state, " : " states, ") << model.num_actions()
       << (model.num_actions() == 1 ? " action" : " actions") << "; read in " << std::fixed
@@ -28,12 +28,12 @@ void print_summary(std::ostream& out, const model::ExplicitModel& model,
   out << "  " << std::left << std::setw(24) << "context" << std::right << std::setw(12) << "states"
       << std::setw(14) << "transitions" << std::setw(10) << "blocks" << std::setw(10) << "seconds"
       << '\n';
-  for (const ContextResult& result : results) {
+  for (const pipeline::DiscreteAbstraction& result : results) {
     const model::Context& context = model.contexts[result.context];
     out << "  " << std::left << std::setw(24) << context.name << std::right << std::setw(12)
         << model.num_states() << std::setw(14) << context.transitions->num_edges() << std::setw(10)
-        << result.partition.num_blocks << std::setw(10) << std::setprecision(3) << result.seconds
-        << '\n';
+        << result.partition.num_blocks << std::setw(10) << std::setprecision(3)
+        << result.refinement_seconds << '\n';
   }
   out << "  peak memory " << std::setprecision(1) << peak_mib << " MiB";
   if (epsilon)
@@ -42,7 +42,8 @@ void print_summary(std::ostream& out, const model::ExplicitModel& model,
   out << '\n' << std::defaultfloat;
 }
 
-nlohmann::json quotient_json(const LoadedModel& loaded, const std::vector<ContextResult>& results,
+nlohmann::json quotient_json(const LoadedModel& loaded,
+                             const std::vector<pipeline::DiscreteAbstraction>& results,
                              double load_seconds, double peak_mib, bool with_partition,
                              std::optional<double> epsilon) {
   const model::ExplicitModel& model = *loaded.model;
@@ -54,13 +55,13 @@ nlohmann::json quotient_json(const LoadedModel& loaded, const std::vector<Contex
   out["load_seconds"] = load_seconds;
   out["peak_memory_mib"] = peak_mib;
   nlohmann::json contexts = nlohmann::json::array();
-  for (const ContextResult& result : results) {
+  for (const pipeline::DiscreteAbstraction& result : results) {
     const model::Context& context = model.contexts[result.context];
     nlohmann::json entry{{"name", context.name},
                          {"states", model.num_states()},
                          {"transitions", context.transitions->num_edges()},
                          {"blocks", result.partition.num_blocks},
-                         {"seconds", result.seconds},
+                         {"seconds", result.refinement_seconds},
                          {"splitters", result.statistics.splitters},
                          {"edge_visits", result.statistics.edge_visits},
                          {"exact_integer_sums", result.statistics.exact_integer_sums},
@@ -84,7 +85,8 @@ nlohmann::json quotient_json(const LoadedModel& loaded, const std::vector<Contex
   return out;
 }
 
-std::string quotient_dot(const model::ExplicitModel& model, const ContextResult& result,
+std::string quotient_dot(const model::ExplicitModel& model,
+                         const pipeline::DiscreteAbstraction& result,
                          const model::ExplicitModel& quotient) {
   constexpr std::size_t kShownMembers = 4;
   std::ostringstream out;

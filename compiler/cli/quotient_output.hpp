@@ -8,33 +8,27 @@
 
 #include <nlohmann/json.hpp>
 
-#include "bisim/partition.hpp"
-#include "bisim/refinement.hpp"
 #include "cli/model_loader.hpp"
+#include "pipeline/discrete_catalog.hpp"
 
 namespace oasis::cli {
 
-struct ContextResult {
-  std::size_t context = 0;
-  bisim::Partition partition;
-  bisim::RefinementStatistics statistics;
-  double seconds = 0;
-};
-
 void print_summary(std::ostream& out, const model::ExplicitModel& model,
-                   const std::vector<ContextResult>& results, double load_seconds, double peak_mib,
-                   std::optional<double> epsilon);
+                   const std::vector<pipeline::DiscreteAbstraction>& results, double load_seconds,
+                   double peak_mib, std::optional<double> epsilon);
 
 // Keys: file, model, exact, epsilon, load_seconds, peak_memory_mib, contexts[] with name,
 // states, transitions, blocks, seconds, splitters, edge_visits (and partition when asked:
 // blocks as lists of state names, or of indices for unnamed imported states).
-nlohmann::json quotient_json(const LoadedModel& loaded, const std::vector<ContextResult>& results,
+nlohmann::json quotient_json(const LoadedModel& loaded,
+                             const std::vector<pipeline::DiscreteAbstraction>& results,
                              double load_seconds, double peak_mib, bool with_partition,
                              std::optional<double> epsilon);
 
 // Graphviz: a node per block (its first members and rewards), a point per enabled
 // (block, action) and edges labelled with exact probabilities.
-std::string quotient_dot(const model::ExplicitModel& model, const ContextResult& result,
+std::string quotient_dot(const model::ExplicitModel& model,
+                         const pipeline::DiscreteAbstraction& result,
                          const model::ExplicitModel& quotient);
 
 // `output` itself, or with ".CONTEXT" inserted before the extension when several contexts

@@ -7,8 +7,8 @@
 
 #include "cli/commands.hpp"
 #include "cli/partition_result_reader.hpp"
-#include "codegen/catalog_data.hpp"
 #include "oasis/rt/catalog_file.hpp"
+#include "pipeline/catalog_data.hpp"
 #include "verify/catalog_check.hpp"
 #include "verify/continuous_check.hpp"
 #include "verify/verifier.hpp"
@@ -33,11 +33,11 @@ int verify_catalog(const VerifyOptions& options, const model::ExplicitModel& mod
     return 1;
   }
   const rt::CatalogView& view = catalog.view();
-  const std::uint64_t hash = codegen::spec_hash_of_file(options.model);
+  const std::uint64_t hash = pipeline::spec_hash_of_file(options.model);
   if (view.spec_hash != hash) {
     std::cerr << options.result << ": error: the catalog was compiled from another spec (hash "
-              << codegen::hash_text(view.spec_hash) << ", this one has " << codegen::hash_text(hash)
-              << "); recompile it\n";
+              << pipeline::hash_text(view.spec_hash) << ", this one has "
+              << pipeline::hash_text(hash) << "); recompile it\n";
     return 1;
   }
   if (view.is_continuous()) {
@@ -59,11 +59,11 @@ int verify_continuous(const VerifyOptions& options, const model::ModelIR& ir) {
     std::cerr << catalog.error() << '\n';
     return 1;
   }
-  const std::uint64_t hash = codegen::spec_hash_of_file(options.model);
+  const std::uint64_t hash = pipeline::spec_hash_of_file(options.model);
   if (catalog.view().spec_hash != hash || !catalog.view().is_continuous()) {
     std::cerr << options.result << ": error: the catalog was not compiled from this spec "
-              << "(hash " << codegen::hash_text(catalog.view().spec_hash) << ", this one has "
-              << codegen::hash_text(hash) << "); recompile it\n";
+              << "(hash " << pipeline::hash_text(catalog.view().spec_hash) << ", this one has "
+              << pipeline::hash_text(hash) << "); recompile it\n";
     return 1;
   }
   return print_checks(verify::check_continuous_catalog(ir, catalog.view()));

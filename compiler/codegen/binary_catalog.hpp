@@ -5,13 +5,14 @@
 
 #include <string>
 
-#include "codegen/catalog_data.hpp"
+#include "pipeline/catalog_data.hpp"
 
 namespace oasis::codegen {
 
-std::string binary_catalog(const CatalogData& catalog);
+std::string binary_catalog(const pipeline::CatalogData& catalog);
 
 // Writes atomically (temporary file, then rename): the file appears whole or not at all.
-bool write_binary_catalog(const CatalogData& catalog, const std::string& path, std::string& error);
+bool write_binary_catalog(const pipeline::CatalogData& catalog, const std::string& path,
+                          std::string& error);
 
 }  // namespace oasis::codegen

@@ -1,8 +1,8 @@
 #include "codegen/continuous_json.hpp"
 
-#include "codegen/catalog_data.hpp"
 #include "codegen/json_catalog.hpp"
 #include "oasis/rt/catalog_view.hpp"
+#include "pipeline/catalog_data.hpp"
 
 namespace oasis::codegen {
 namespace {
@@ -85,7 +85,7 @@ nlohmann::json continuous_catalog_json(const pipeline::ContinuousCatalog& catalo
   nlohmann::json out;
   out["format"] = rt::kCatalogFormat;
   out["name"] = catalog.name;
-  out["spec_hash"] = hash_text(catalog.spec_hash);
+  out["spec_hash"] = pipeline::hash_text(catalog.spec_hash);
   out["compiler_version"] = catalog.compiler_version;
   out["variables"] = catalog.variable_names;
   out["actions"] = catalog.action_names;

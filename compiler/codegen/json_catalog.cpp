@@ -5,7 +5,8 @@
 namespace oasis::codegen {
 namespace {
 
-nlohmann::json abstraction_json(const CatalogData& catalog, const AbstractionData& data) {
+nlohmann::json abstraction_json(const pipeline::CatalogData& catalog,
+                                const pipeline::AbstractionData& data) {
   std::vector<nlohmann::json> blocks(data.num_blocks);
   for (std::uint32_t z = 0; z < data.num_blocks; ++z) {
     const std::uint32_t action = data.policy[z];
@@ -48,11 +49,11 @@ nlohmann::json matrix_rows_json(const std::vector<double>& matrix, std::size_t n
   return rows;
 }
 
-nlohmann::json catalog_json(const CatalogData& catalog) {
+nlohmann::json catalog_json(const pipeline::CatalogData& catalog) {
   nlohmann::json out;
   out["format"] = rt::kCatalogFormat;
   out["name"] = catalog.name;
-  out["spec_hash"] = hash_text(catalog.spec_hash);
+  out["spec_hash"] = pipeline::hash_text(catalog.spec_hash);
   out["compiler_version"] = catalog.compiler_version;
   out["states"] = catalog.state_names;
   out["actions"] = catalog.action_names;
@@ -63,7 +64,7 @@ nlohmann::json catalog_json(const CatalogData& catalog) {
           ? nlohmann::json()
           : nlohmann::json({{"kind", "symmetric"}, {"p_correct", catalog.p_correct}});
   nlohmann::json abstractions = nlohmann::json::array();
-  for (const AbstractionData& data : catalog.abstractions)
+  for (const pipeline::AbstractionData& data : catalog.abstractions)
     abstractions.push_back(abstraction_json(catalog, data));
   out["abstractions"] = std::move(abstractions);
   return out;

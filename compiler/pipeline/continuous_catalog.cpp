@@ -1,8 +1,6 @@
 #include "pipeline/continuous_catalog.hpp"
 
-#include <algorithm>
-#include <atomic>
-#include <thread>
+#include "support/parallel.hpp"
 
 namespace oasis::pipeline {
 
@@ -22,23 +20,13 @@ std::optional<ContinuousCatalog> build_continuous_catalog(const model::ModelIR& 
   for (const Rational& p : ir.switching.prior)
     catalog.prior.push_back(to_double(p));
 
-  // Contexts are independent and read the IR only: one per thread.
+  // Contexts are independent and read the IR only.
   const std::size_t n = ir.contexts.size();
   std::vector<std::optional<ContinuousAbstraction>> results(n);
   std::vector<std::string> errors(n);
-  std::atomic<std::size_t> next{0};
-  auto worker = [&] {
-    for (std::size_t c = next++; c < n; c = next++)
-      results[c] = abstract_context(ir, c, options.abstraction, errors[c]);
-  };
-  const unsigned hardware = std::max(1U, std::thread::hardware_concurrency());
-  const std::size_t jobs = std::min<std::size_t>(options.jobs == 0 ? hardware : options.jobs, n);
-  std::vector<std::thread> threads;
-  for (std::size_t j = 1; j < jobs; ++j)
-    threads.emplace_back(worker);
-  worker();
-  for (std::thread& thread : threads)
-    thread.join();
+  parallel_for(n, options.jobs, [&](std::size_t c) {
+    results[c] = abstract_context(ir, c, options.abstraction, errors[c]);
+  });
   for (std::size_t c = 0; c < n; ++c) {
     if (!results[c]) {
       error = errors[c];

@@ -12,9 +12,9 @@
 
 #include "../support/spec_models.hpp"
 #include "codegen/binary_catalog.hpp"
-#include "codegen/catalog_data.hpp"
 #include "oasis/rt/attention_filter.hpp"
 #include "oasis/rt/catalog_file.hpp"
+#include "pipeline/discrete_catalog.hpp"
 
 namespace oasis {
 namespace {
@@ -24,11 +24,11 @@ std::string read_all(const std::string& path) {
   return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
 }
 
-codegen::CatalogData todays_catalog() {
+pipeline::CatalogData todays_catalog() {
   const std::string spec = std::string(OASIS_SOURCE_DIR) + "/specs/discrete_tracking.oasis";
   std::string error;
-  auto catalog = codegen::build_catalog(test::explore_spec_file(spec),
-                                        codegen::spec_hash_of_file(spec), {}, error);
+  auto catalog = pipeline::build_catalog(test::explore_spec_file(spec),
+                                         pipeline::spec_hash_of_file(spec), {}, error);
   EXPECT_TRUE(catalog) << error;
   return std::move(*catalog);
 }
@@ -57,7 +57,7 @@ TEST(CatalogCompat, AFormat1FileStillLoadsAndDecidesAsToday) {
   ASSERT_EQ(format, 1U) << "the compat file must stay a format-1 file";
   const rt::LoadedCatalog old_catalog = load(old_bytes);
   ASSERT_TRUE(old_catalog.ok()) << old_catalog.error();
-  codegen::CatalogData today = todays_catalog();
+  pipeline::CatalogData today = todays_catalog();
   const rt::CatalogView now = today.view();
   const rt::CatalogView& then = old_catalog.view();
   EXPECT_EQ(then.spec_hash, now.spec_hash);
@@ -154,8 +154,8 @@ TEST(CatalogCompat, DuplicateAndMissingSectionsAreRefused) {
 }
 
 TEST(CatalogCompat, AQuotientlessCatalogValidatesWithPlainActionChecks) {
-  codegen::CatalogData catalog = todays_catalog();
-  for (codegen::AbstractionData& abstraction : catalog.abstractions)
+  pipeline::CatalogData catalog = todays_catalog();
+  for (pipeline::AbstractionData& abstraction : catalog.abstractions)
     abstraction.quotient = {};
   std::string why;
   EXPECT_TRUE(rt::validate(catalog.view(), &why)) << why;

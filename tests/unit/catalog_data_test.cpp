@@ -2,8 +2,6 @@
 // must pass the runtime's own validation, carry the two abstractions and their policies, and
 // drive the attention filter to the context that explains the rewards.
 
-#include "codegen/catalog_data.hpp"
-
 #include <fstream>
 #include <iterator>
 #include <string>
@@ -14,6 +12,7 @@
 #include "oasis/rt/attention_filter.hpp"
 #include "oasis/rt/catalog_view.hpp"
 #include "oasis/rt/spec_hash.hpp"
+#include "pipeline/discrete_catalog.hpp"
 
 namespace oasis {
 namespace {
@@ -22,15 +21,16 @@ model::ExplicitModel discrete_tracking() {
   return test::explore_spec_file(std::string(OASIS_SOURCE_DIR) + "/specs/discrete_tracking.oasis");
 }
 
-codegen::CatalogData build(const model::ExplicitModel& model, codegen::BuildOptions options = {}) {
+pipeline::CatalogData build(const model::ExplicitModel& model,
+                            pipeline::BuildOptions options = {}) {
   std::string error;
-  auto catalog = codegen::build_catalog(model, 42, options, error);
+  auto catalog = pipeline::build_catalog(model, 42, options, error);
   EXPECT_TRUE(catalog) << error;
-  return catalog ? std::move(*catalog) : codegen::CatalogData{};
+  return catalog ? std::move(*catalog) : pipeline::CatalogData{};
 }
 
 TEST(CatalogData, PaperExampleIsAValidCatalog) {
-  codegen::CatalogData catalog = build(discrete_tracking());
+  pipeline::CatalogData catalog = build(discrete_tracking());
   const rt::CatalogView view = catalog.view();
   std::string why;
   ASSERT_TRUE(rt::validate(view, &why)) << why;
@@ -60,9 +60,9 @@ TEST(CatalogData, PaperExampleIsAValidCatalog) {
 }
 
 TEST(CatalogData, RobustSectionValidates) {
-  codegen::BuildOptions options;
-  options.p_correct = 0.3;
-  codegen::CatalogData catalog = build(discrete_tracking(), options);
+  pipeline::BuildOptions options;
+  options.catalog.p_correct = 0.3;
+  pipeline::CatalogData catalog = build(discrete_tracking(), options);
   const rt::CatalogView view = catalog.view();
   std::string why;
   ASSERT_TRUE(rt::validate(view, &why)) << why;
@@ -71,7 +71,7 @@ TEST(CatalogData, RobustSectionValidates) {
 }
 
 TEST(CatalogData, FilterFollowsTheRewards) {
-  codegen::CatalogData catalog = build(discrete_tracking());
+  pipeline::CatalogData catalog = build(discrete_tracking());
   const rt::CatalogView view = catalog.view();
   rt::FixedWorkspace<2> workspace;
   rt::AttentionFilter filter(view, {}, workspace);
@@ -100,7 +100,7 @@ mdp m {
 }
 )");
   std::string error;
-  EXPECT_FALSE(codegen::build_catalog(model, 0, {}, error));
+  EXPECT_FALSE(pipeline::build_catalog(model, 0, {}, error));
   EXPECT_NE(error.find("one reward R(s) per abstract state"), std::string::npos) << error;
 }
 
@@ -120,7 +120,7 @@ TEST(CatalogData, SpecHashOfAFileHashesItsBytes) {
   const std::string path = std::string(OASIS_SOURCE_DIR) + "/specs/discrete_tracking.oasis";
   std::ifstream in(path, std::ios::binary);
   const std::string text{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-  EXPECT_EQ(codegen::spec_hash_of_file(path), rt::spec_hash(text));
+  EXPECT_EQ(pipeline::spec_hash_of_file(path), rt::spec_hash(text));
 }
 
 }  // namespace

@@ -12,19 +12,19 @@
 
 #include "../support/spec_models.hpp"
 #include "codegen/binary_catalog.hpp"
-#include "codegen/catalog_data.hpp"
 #include "oasis/rt/attention_filter.hpp"
+#include "pipeline/discrete_catalog.hpp"
 
 namespace oasis {
 namespace {
 
-codegen::CatalogData paper_catalog(std::optional<double> p_correct = std::nullopt) {
+pipeline::CatalogData paper_catalog(std::optional<double> p_correct = std::nullopt) {
   const auto model =
       test::explore_spec_file(std::string(OASIS_SOURCE_DIR) + "/specs/discrete_tracking.oasis");
-  codegen::BuildOptions options;
-  options.p_correct = p_correct;
+  pipeline::BuildOptions options;
+  options.catalog.p_correct = p_correct;
   std::string error;
-  auto catalog = codegen::build_catalog(model, rt::spec_hash("spec"), options, error);
+  auto catalog = pipeline::build_catalog(model, rt::spec_hash("spec"), options, error);
   EXPECT_TRUE(catalog) << error;
   return std::move(*catalog);
 }
@@ -61,7 +61,7 @@ void expect_same_decisions(const rt::CatalogView& a, const rt::CatalogView& b,
 }
 
 TEST(CatalogFile, RoundTripKeepsEverything) {
-  codegen::CatalogData catalog = paper_catalog();
+  pipeline::CatalogData catalog = paper_catalog();
   const std::string bytes = codegen::binary_catalog(catalog);
   EXPECT_EQ(bytes.size() % 8, 0U);
   EXPECT_EQ(bytes, codegen::binary_catalog(catalog)) << "output must be deterministic";
@@ -79,7 +79,7 @@ TEST(CatalogFile, RoundTripKeepsEverything) {
 }
 
 TEST(CatalogFile, RobustSectionRoundTrips) {
-  codegen::CatalogData catalog = paper_catalog(0.3);
+  pipeline::CatalogData catalog = paper_catalog(0.3);
   const rt::LoadedCatalog loaded = load(codegen::binary_catalog(catalog));
   ASSERT_TRUE(loaded.ok()) << loaded.error();
   EXPECT_TRUE(loaded.view().has_robust_section());

@@ -13,9 +13,9 @@
 #include "../support/scratch_directory.hpp"
 #include "../support/spec_models.hpp"
 #include "codegen/binary_catalog.hpp"
-#include "codegen/catalog_data.hpp"
 #include "formats/model_file.hpp"
 #include "oasis/rt/catalog_file.hpp"
+#include "pipeline/discrete_catalog.hpp"
 #include "verify/catalog_check.hpp"
 
 namespace oasis {
@@ -23,12 +23,12 @@ namespace {
 
 const std::string kSpec = std::string(OASIS_SOURCE_DIR) + "/specs/discrete_tracking.oasis";
 
-codegen::CatalogData compiled(const model::ExplicitModel& model,
-                              std::optional<double> p_correct = std::nullopt) {
-  codegen::BuildOptions options;
-  options.p_correct = p_correct;
+pipeline::CatalogData compiled(const model::ExplicitModel& model,
+                               std::optional<double> p_correct = std::nullopt) {
+  pipeline::BuildOptions options;
+  options.catalog.p_correct = p_correct;
   std::string error;
-  auto catalog = codegen::build_catalog(model, 1, options, error);
+  auto catalog = pipeline::build_catalog(model, 1, options, error);
   EXPECT_TRUE(catalog) << error;
   return std::move(*catalog);
 }
@@ -36,7 +36,7 @@ codegen::CatalogData compiled(const model::ExplicitModel& model,
 // The verdicts for `catalog` after a round trip through the binary file (so the change is
 // one a file can carry: it must still load).
 std::vector<verify::CatalogCheck> verdicts(const model::ExplicitModel& model,
-                                           codegen::CatalogData& catalog) {
+                                           pipeline::CatalogData& catalog) {
   const std::string bytes = codegen::binary_catalog(catalog);
   const rt::LoadedCatalog loaded = rt::LoadedCatalog::from_bytes(bytes.data(), bytes.size());
   EXPECT_TRUE(loaded.ok()) << "the changed catalog must still be a sound file: " << loaded.error();
@@ -53,15 +53,15 @@ std::string first_failure(const std::vector<verify::CatalogCheck>& checks) {
 
 struct Change {
   const char* name;
-  std::function<void(codegen::CatalogData&)> apply;
+  std::function<void(pipeline::CatalogData&)> apply;
   const char* expected;  // a piece of the failure message
 };
 
 class CatalogVerify : public ::testing::Test {
  protected:
-  void expect_rejected(const model::ExplicitModel& model, const codegen::CatalogData& good,
+  void expect_rejected(const model::ExplicitModel& model, const pipeline::CatalogData& good,
                        const Change& change) {
-    codegen::CatalogData bad = good;
+    pipeline::CatalogData bad = good;
     change.apply(bad);
     const std::string failure = first_failure(verdicts(model, bad));
     EXPECT_NE(failure, "") << change.name << " was not caught";
@@ -73,7 +73,7 @@ class CatalogVerify : public ::testing::Test {
 
 TEST_F(CatalogVerify, AnUntouchedCatalogPasses) {
   for (const std::optional<double> p_correct : {std::optional<double>{}, std::optional(0.9)}) {
-    codegen::CatalogData catalog = compiled(model_, p_correct);
+    pipeline::CatalogData catalog = compiled(model_, p_correct);
     const auto checks = verdicts(model_, catalog);
     ASSERT_EQ(checks.size(), 4U);
     EXPECT_EQ(first_failure(checks), "");
@@ -81,7 +81,7 @@ TEST_F(CatalogVerify, AnUntouchedCatalogPasses) {
 }
 
 TEST_F(CatalogVerify, EveryChangedItemIsCaught) {
-  const codegen::CatalogData good = compiled(model_, 0.9);
+  const pipeline::CatalogData good = compiled(model_, 0.9);
   const std::vector<Change> changes = {
       {"policy", [](auto& c) { c.abstractions[0].policy[0] ^= 1U; }, "not optimal"},
       {"block reward", [](auto& c) { c.abstractions[0].block_reward[1] = 2.0; }, "has reward"},
@@ -152,7 +152,7 @@ TEST_F(CatalogVerify, ImportedModelsAndHorizonsAreCheckedToo) {
   const auto coin = formats::read_model_file(
       std::string(OASIS_SOURCE_DIR) + "/tests/data/formats/coin.aut", sources, diagnostics, {});
   ASSERT_TRUE(coin) << messages.str();
-  codegen::CatalogData catalog = compiled(*coin);
+  pipeline::CatalogData catalog = compiled(*coin);
   EXPECT_EQ(first_failure(verdicts(*coin, catalog)), "");
   catalog.switching = {0.5};  // not a distribution: refused by the loader itself
   const std::string bytes = codegen::binary_catalog(catalog);
@@ -161,7 +161,7 @@ TEST_F(CatalogVerify, ImportedModelsAndHorizonsAreCheckedToo) {
   std::string text = test::read_text_file(kSpec);
   text.replace(text.find("discount 0.9;"), 13, "horizon 4;");
   const model::ExplicitModel horizon = test::explore_spec_text(text);
-  codegen::CatalogData planned = compiled(horizon);
+  pipeline::CatalogData planned = compiled(horizon);
   EXPECT_EQ(first_failure(verdicts(horizon, planned)), "");
   planned.abstractions[0].value[0] += 0.5;
   EXPECT_NE(first_failure(verdicts(horizon, planned)).find("4-step value"), std::string::npos);
@@ -169,7 +169,7 @@ TEST_F(CatalogVerify, ImportedModelsAndHorizonsAreCheckedToo) {
 
 TEST_F(CatalogVerify, TheCommandLineRejectsAnEditedFile) {
   const test::ScratchDirectory scratch("oasis_catalog_verify");
-  codegen::CatalogData catalog = compiled(model_);
+  pipeline::CatalogData catalog = compiled(model_);
   catalog.spec_hash = rt::spec_hash(test::read_text_file(kSpec));
   const auto good = scratch.path() / "good.bin";
   const auto bad = scratch.path() / "bad.bin";

@@ -220,3 +220,29 @@ TEST(Cli, CompileThenVerifyTheCatalog) {
 }
 
 }  // namespace
+
+namespace {
+
+// The compile of a discrete spec runs the shared pipeline with the refinement options of
+// `quotient`: -j gives the same catalog as one thread, and --epsilon (a continuous option)
+// is named as ignored rather than making a rounded catalog that verify would refuse.
+TEST(Cli, DiscreteCompileTakesJobsAndExplainsEpsilon) {
+  const auto base =
+      std::filesystem::temp_directory_path() / ("oasis_cli_jobs_" + std::to_string(::getpid()));
+  const std::string input = spec("discrete_tracking.oasis");
+  Result one = run("compile " + input + " --format bin -j 1 -o " + (base / "one").string());
+  ASSERT_EQ(one.status, 0) << one.output;
+  Result two =
+      run("compile " + input + " --format bin -j 2 --epsilon 0.25 -o " + (base / "two").string());
+  ASSERT_EQ(two.status, 0) << two.output;
+  EXPECT_NE(two.output.find("warning: --epsilon is the error bound of continuous specs"),
+            std::string::npos)
+      << two.output;
+  EXPECT_EQ(read_all(base / "one" / "discrete_tracking.bin"),
+            read_all(base / "two" / "discrete_tracking.bin"));
+  EXPECT_EQ(run("verify " + input + " " + (base / "two" / "discrete_tracking.bin").string()).status,
+            0);
+  std::filesystem::remove_all(base);
+}
+
+}  // namespace

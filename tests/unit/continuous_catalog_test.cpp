@@ -13,7 +13,7 @@
 
 #include "../support/spec_models.hpp"
 #include "codegen/binary_catalog.hpp"
-#include "codegen/continuous_catalog_data.hpp"
+#include "pipeline/continuous_catalog_data.hpp"
 #include "oasis/rt/attention_filter.hpp"
 #include "oasis/rt/catalog_file.hpp"
 
@@ -40,7 +40,7 @@ rt::LoadedCatalog load(const std::string& bytes) {
 
 TEST(ContinuousCatalogData, ValidatesWithAndWithoutTransitions) {
   for (const bool transitions : {false, true}) {
-    codegen::CatalogData data = codegen::continuous_catalog_data(go1_catalog(), transitions);
+    pipeline::CatalogData data = pipeline::continuous_catalog_data(go1_catalog(), transitions);
     const rt::CatalogView view = data.view();
     std::string why;
     EXPECT_TRUE(rt::validate(view, &why)) << why;
@@ -52,14 +52,14 @@ TEST(ContinuousCatalogData, ValidatesWithAndWithoutTransitions) {
     EXPECT_EQ(view.abstractions[1].grid.axes[0], 2U);  // x2
     EXPECT_EQ(view.abstractions[0].quotient.choice_begin != nullptr, transitions);
     EXPECT_GE(view.abstractions[0].epsilon,
-              codegen::bound_as_double(go1_catalog().abstractions[0].epsilon));
+              pipeline::bound_as_double(go1_catalog().abstractions[0].epsilon));
   }
 }
 
 // Human 1 holds the treat in reach for a while, then human 2 takes it and comes into reach
 // while human 1 walks away: the ML abstraction follows.
 TEST(ContinuousCatalogData, TheFilterFollowsTheTreatAndTheLoadedFileDecidesTheSame) {
-  codegen::CatalogData data = codegen::continuous_catalog_data(go1_catalog(), false);
+  pipeline::CatalogData data = pipeline::continuous_catalog_data(go1_catalog(), false);
   const rt::CatalogView memory = data.view();
   const rt::LoadedCatalog file = load(codegen::binary_catalog(data));
   ASSERT_TRUE(file.ok()) << file.error();
@@ -94,7 +94,7 @@ TEST(ContinuousCatalogData, TheFilterFollowsTheTreatAndTheLoadedFileDecidesTheSa
 }
 
 TEST(ContinuousCatalogData, AStateOutsideTheDomainIsInTheOutsideBlock) {
-  codegen::CatalogData data = codegen::continuous_catalog_data(go1_catalog(), false);
+  pipeline::CatalogData data = pipeline::continuous_catalog_data(go1_catalog(), false);
   const rt::CatalogView view = data.view();
   std::vector<double> work(rt::AttentionFilter::workspace_size(view, {}));
   rt::AttentionFilter filter(view, {}, work.data(), work.size());
@@ -104,7 +104,7 @@ TEST(ContinuousCatalogData, AStateOutsideTheDomainIsInTheOutsideBlock) {
 }
 
 TEST(ContinuousCatalogData, DamagedFilesNeverBreakTheLoader) {
-  codegen::CatalogData data = codegen::continuous_catalog_data(go1_catalog(), false);
+  pipeline::CatalogData data = pipeline::continuous_catalog_data(go1_catalog(), false);
   const std::string good = codegen::binary_catalog(data);
   ASSERT_TRUE(load(good).ok()) << load(good).error();
   std::mt19937 random(5);

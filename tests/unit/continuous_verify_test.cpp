@@ -12,7 +12,7 @@
 #include "../support/scratch_directory.hpp"
 #include "../support/spec_models.hpp"
 #include "codegen/binary_catalog.hpp"
-#include "codegen/continuous_catalog_data.hpp"
+#include "pipeline/continuous_catalog_data.hpp"
 #include "oasis/rt/catalog_file.hpp"
 #include "pipeline/continuous_catalog.hpp"
 #include "verify/continuous_check.hpp"
@@ -26,19 +26,19 @@ const model::ModelIR& go1_ir() {
 }
 
 // The Go1 catalog at a coarse epsilon with its transition rows, built once.
-const codegen::CatalogData& go1_catalog() {
-  static const codegen::CatalogData data = [] {
+const pipeline::CatalogData& go1_catalog() {
+  static const pipeline::CatalogData data = [] {
     pipeline::ContinuousCatalogOptions options;
     options.abstraction.epsilon = 0.3;
     std::string error;
     const auto catalog = pipeline::build_continuous_catalog(go1_ir(), 3, options, error);
     EXPECT_TRUE(catalog) << error;
-    return codegen::continuous_catalog_data(*catalog, true);
+    return pipeline::continuous_catalog_data(*catalog, true);
   }();
   return data;
 }
 
-std::string first_failure(codegen::CatalogData& catalog) {
+std::string first_failure(pipeline::CatalogData& catalog) {
   const std::string bytes = codegen::binary_catalog(catalog);
   const rt::LoadedCatalog loaded = rt::LoadedCatalog::from_bytes(bytes.data(), bytes.size());
   if (!loaded.ok()) return "the changed catalog no longer loads: " + loaded.error();
@@ -49,14 +49,14 @@ std::string first_failure(codegen::CatalogData& catalog) {
 }
 
 TEST(ContinuousVerify, AnUntouchedCatalogPasses) {
-  codegen::CatalogData catalog = go1_catalog();
+  pipeline::CatalogData catalog = go1_catalog();
   EXPECT_EQ(first_failure(catalog), "");
 }
 
 TEST(ContinuousVerify, EveryChangedItemIsCaught) {
   struct Change {
     const char* name;
-    std::function<void(codegen::CatalogData&)> apply;
+    std::function<void(pipeline::CatalogData&)> apply;
     const char* expected;
   };
   const std::vector<Change> changes = {
@@ -102,7 +102,7 @@ TEST(ContinuousVerify, EveryChangedItemIsCaught) {
        "switching"},
   };
   for (const Change& change : changes) {
-    codegen::CatalogData bad = go1_catalog();
+    pipeline::CatalogData bad = go1_catalog();
     change.apply(bad);
     const std::string failure = first_failure(bad);
     EXPECT_NE(failure, "") << change.name << " was not caught";

@@ -9,7 +9,7 @@
 #include <gtest/gtest.h>
 
 #include "../support/spec_models.hpp"
-#include "codegen/catalog_data.hpp"
+#include "pipeline/catalog_data.hpp"
 #include "sim/metrics.hpp"
 #include "sim/noise.hpp"
 #include "sim/patterns.hpp"

@@ -11,9 +11,9 @@
 
 #include <CLI/CLI.hpp>
 
-#include "codegen/catalog_data.hpp"
 #include "model/explorer.hpp"
 #include "oasis/rt/spec_hash.hpp"
+#include "pipeline/catalog_data.hpp"
 #include "sim/report.hpp"
 #include "sim/table1.hpp"
 #include "spec/frontend.hpp"

@@ -109,14 +109,21 @@ const std::vector<TransitionModel>& table1_models() {
 }
 
 Table1Experiment::Table1Experiment(model::ExplicitModel model, std::uint64_t spec_hash)
-    : model_(std::move(model)), spec_hash_(spec_hash) {}
+    : model_(std::move(model)), spec_hash_(spec_hash) {
+  abstractions_ =
+      pipeline::abstract_contexts(model_, pipeline::all_contexts(model_), {}, abstraction_error_);
+}
 
-std::optional<codegen::CatalogData> Table1Experiment::catalog_for(const TrialSpec& spec,
-                                                                  std::string& error) const {
-  codegen::BuildOptions options;
+std::optional<pipeline::CatalogData> Table1Experiment::catalog_for(const TrialSpec& spec,
+                                                                   std::string& error) const {
+  if (!abstractions_) {
+    error = abstraction_error_;
+    return std::nullopt;
+  }
+  pipeline::CatalogOptions options;
   options.p_correct = spec.noise == NoiseReading::kNone ? 1.0 : 1.0 - spec.sigma;
-  std::optional<codegen::CatalogData> catalog =
-      codegen::build_catalog(model_, spec_hash_, options, error);
+  std::optional<pipeline::CatalogData> catalog =
+      pipeline::catalog_data(model_, *abstractions_, spec_hash_, options, error);
   if (!catalog) return std::nullopt;
   const std::size_t n = catalog->abstractions.size();
   if (n < 2) {
@@ -130,7 +137,7 @@ std::optional<codegen::CatalogData> Table1Experiment::catalog_for(const TrialSpe
 }
 
 std::optional<Trace> Table1Experiment::run_trial(const TrialSpec& spec, std::string& error) const {
-  std::optional<codegen::CatalogData> data = catalog_for(spec, error);
+  std::optional<pipeline::CatalogData> data = catalog_for(spec, error);
   if (!data) return std::nullopt;
   const rt::CatalogView catalog = data->view();
   std::string why;

@@ -1,6 +1,6 @@
 #pragma once
 // The experiment of Table I (the paper's discrete-space tracking example), run on the catalog
-// that codegen::build_catalog compiles from the spec and on the runtime's AttentionFilter.
+// that pipeline/discrete_catalog.hpp compiles from the spec and on the runtime's AttentionFilter.
 //
 // One trial (seed, transition model, pattern, noise reading, filter):
 //  1. the catalog is built from the model with p_correct = 1 - sigma (the robust section; 1
@@ -25,8 +25,8 @@
 #include <string_view>
 #include <vector>
 
-#include "codegen/catalog_data.hpp"
 #include "model/explicit_model.hpp"
+#include "pipeline/discrete_catalog.hpp"
 #include "sim/metrics.hpp"
 #include "sim/noise.hpp"
 #include "sim/patterns.hpp"
@@ -80,20 +80,24 @@ struct Trace {
 
 class Table1Experiment {
  public:
-  // Keeps a copy of the explored model. The model must have at least two contexts.
+  // Keeps a copy of the explored model and abstracts every context once: trials differ only
+  // in the catalog's switching model and observation section, not in its abstractions. The
+  // model must have at least two contexts.
   Table1Experiment(model::ExplicitModel model, std::uint64_t spec_hash);
 
   // One trial; nullopt with `error` set if the catalog cannot be built or the filter refuses it.
   std::optional<Trace> run_trial(const TrialSpec& spec, std::string& error) const;
 
   // The catalog a trial runs on (exposed for the report and the tests).
-  std::optional<codegen::CatalogData> catalog_for(const TrialSpec& spec, std::string& error) const;
+  std::optional<pipeline::CatalogData> catalog_for(const TrialSpec& spec, std::string& error) const;
 
   const model::ExplicitModel& model() const { return model_; }
 
  private:
   model::ExplicitModel model_;
   std::uint64_t spec_hash_ = 0;
+  std::optional<std::vector<pipeline::DiscreteAbstraction>> abstractions_;
+  std::string abstraction_error_;  // why abstractions_ is empty
 };
 
 // One row of the results: a configuration summarised over seeds.

@@ -1,8 +1,8 @@
-#include "codegen/continuous_catalog_data.hpp"
+#include "pipeline/continuous_catalog_data.hpp"
 
 #include <cmath>
 
-namespace oasis::codegen {
+namespace oasis::pipeline {
 namespace {
 
 AbstractionData abstraction_data(const pipeline::ContinuousAbstraction& abstraction,
@@ -57,4 +57,4 @@ CatalogData continuous_catalog_data(const pipeline::ContinuousCatalog& catalog,
   return data;
 }
 
-}  // namespace oasis::codegen
+}  // namespace oasis::pipeline

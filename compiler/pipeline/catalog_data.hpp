@@ -1,6 +1,6 @@
 #pragma once
-// A catalog in memory: for every context of a model, its coarsest bisimulation quotient and
-// the policy solved on it, in the runtime's schema (runtime/include/oasis/rt/catalog_view.hpp).
+// A catalog in memory: for every context of a model, its abstraction and the policy solved
+// on it, in the runtime's schema (runtime/include/oasis/rt/catalog_view.hpp).
 // The data is owned here and read through rt::CatalogView, the same view the generated
 // tables and the binary file give, so the emitters serialise exactly what a program built
 // on this runs.
@@ -12,9 +12,8 @@
 
 #include "model/explicit_model.hpp"
 #include "oasis/rt/catalog_view.hpp"
-#include "policy/objective.hpp"
 
-namespace oasis::codegen {
+namespace oasis::pipeline {
 
 struct CsrData {
   std::vector<std::uint32_t> choice_begin;
@@ -75,20 +74,6 @@ struct CatalogData {
 // A transition matrix of `model` as CSR arrays of doubles (nearest to each exact value).
 CsrData csr_of(const model::ExplicitModel& model, const model::TransitionMatrix& matrix);
 
-struct BuildOptions {
-  // Add the robust filter's section: the full-state transitions of every context and a
-  // symmetric observation model that reports the true state with this probability.
-  std::optional<double> p_correct;
-  policy::PolicyOptions policy;
-};
-
-// Quotients every context, solves its policy and fills the catalog. nullopt with `error`
-// set when the model cannot be a catalog: no states, or states of one block with different
-// state rewards R(s) (their R(s, a) agree only through action rewards), which the detection
-// model cannot represent.
-std::optional<CatalogData> build_catalog(const model::ExplicitModel& model, std::uint64_t spec_hash,
-                                         const BuildOptions& options, std::string& error);
-
 // rt::spec_hash (FNV-1a 64, oasis/rt/spec_hash.hpp) over a file's bytes: the catalog
 // remembers which spec it was compiled from. 0 when the file cannot be read (the caller has
 // read it already).
@@ -96,4 +81,4 @@ std::uint64_t spec_hash_of_file(const std::string& path);
 // A hash as 16 hexadecimal digits, as JSON and messages show it.
 std::string hash_text(std::uint64_t hash);
 
-}  // namespace oasis::codegen
+}  // namespace oasis::pipeline

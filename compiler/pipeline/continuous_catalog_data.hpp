@@ -4,10 +4,10 @@
 // block, the error bound, block rewards, R^Z, the policy and values; the quotient's
 // transition rows only on request (an analysis product the robot does not need).
 
-#include "codegen/catalog_data.hpp"
+#include "pipeline/catalog_data.hpp"
 #include "pipeline/continuous_catalog.hpp"
 
-namespace oasis::codegen {
+namespace oasis::pipeline {
 
 CatalogData continuous_catalog_data(const pipeline::ContinuousCatalog& catalog,
                                     bool with_transitions);
@@ -15,4 +15,4 @@ CatalogData continuous_catalog_data(const pipeline::ContinuousCatalog& catalog,
 // The nearest double at or above an exact bound, so that a bound is never understated.
 double bound_as_double(const Rational& bound);
 
-}  // namespace oasis::codegen
+}  // namespace oasis::pipeline

@@ -1,0 +1,89 @@
+#include "pipeline/catalog_data.hpp"
+
+#include <cstdio>
+
+#include "oasis/rt/spec_hash.hpp"
+#include "support/mapped_file.hpp"
+
+namespace oasis::pipeline {
+CsrData csr_of(const model::ExplicitModel& model, const model::TransitionMatrix& matrix) {
+  CsrData csr;
+  csr.choice_begin.assign(matrix.choice_begin.begin(), matrix.choice_begin.end());
+  csr.target.assign(matrix.edge_target.begin(), matrix.edge_target.end());
+  csr.probability.reserve(matrix.num_edges());
+  for (ValueId id : matrix.edge_probability)
+    csr.probability.push_back(to_double(model.values[id]));
+  return csr;
+}
+
+rt::TransitionsCsr CsrData::view() const {
+  return {choice_begin.empty() ? nullptr : choice_begin.data(),
+          target.empty() ? nullptr : target.data(),
+          probability.empty() ? nullptr : probability.data(),
+          static_cast<std::uint32_t>(target.size())};
+}
+
+rt::CatalogView CatalogData::view() {
+  action_name_pointers_.clear();
+  for (const std::string& action : action_names)
+    action_name_pointers_.push_back(action.c_str());
+  state_name_pointers_.clear();
+  for (const std::string& state : state_names)
+    state_name_pointers_.push_back(state.c_str());
+  abstraction_views_.clear();
+  for (const AbstractionData& data : abstractions) {
+    rt::AbstractionView view;
+    view.context = data.context.c_str();
+    view.num_blocks = data.num_blocks;
+    view.block_of = data.block_of.data();
+    view.block_reward = data.block_reward.data();
+    view.quotient = data.quotient.view();
+    view.reward = data.reward.data();
+    view.policy = data.policy.data();
+    view.value = data.value.data();
+    view.state_transitions = data.state_transitions.view();
+    if (!data.grid_axes.empty()) {
+      view.block_of = nullptr;
+      view.grid = {static_cast<std::uint32_t>(data.grid_axes.size()), data.grid_axes.data(),
+                   data.grid_break_begin.data(), data.grid_breaks.data()};
+      view.cell_block = data.cell_block.data();
+      view.outside_block = data.outside_block;
+      view.epsilon = data.epsilon;
+    }
+    abstraction_views_.push_back(view);
+  }
+  rt::CatalogView view;
+  view.name = name.c_str();
+  view.spec_hash = spec_hash;
+  view.compiler_version = compiler_version.c_str();
+  view.num_states = num_states;
+  view.num_actions = num_actions;
+  view.action_names = action_name_pointers_.data();
+  view.state_names = state_names.empty() ? nullptr : state_name_pointers_.data();
+  view.num_abstractions = static_cast<std::uint32_t>(abstractions.size());
+  view.switching = switching.data();
+  view.prior = prior.data();
+  view.abstractions = abstraction_views_.data();
+  view.observation.kind = observation;
+  view.observation.p_correct = p_correct;
+  variable_name_pointers_.clear();
+  for (const std::string& variable : variable_names)
+    variable_name_pointers_.push_back(variable.c_str());
+  view.state_dimension = static_cast<std::uint32_t>(variable_names.size());
+  view.variable_names = variable_names.empty() ? nullptr : variable_name_pointers_.data();
+  return view;
+}
+
+std::uint64_t spec_hash_of_file(const std::string& path) {
+  MappedFile file;
+  std::string error;
+  return file.open(path, std::size_t{1} << 34, error) ? rt::spec_hash(file.text()) : 0;
+}
+
+std::string hash_text(std::uint64_t hash) {
+  char text[19];
+  std::snprintf(text, sizeof text, "%016llx", static_cast<unsigned long long>(hash));
+  return text;
+}
+
+}  // namespace oasis::pipeline
