@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
+#include <functional>
 #include <iostream>
 #include <memory>
 #include <set>
@@ -50,9 +51,15 @@ class OutputSet {
   explicit OutputSet(std::string directory) : directory_(std::move(directory)) {}
 
   bool write(const std::string& name, const std::string& bytes, std::string& error) {
+    return write_with(
+        name, [&bytes](AtomicFile& file) { file.append(bytes); }, error);
+  }
+  // `fill` appends the file's text piece by piece (large files never exist whole in memory).
+  bool write_with(const std::string& name, const std::function<void(AtomicFile&)>& fill,
+                  std::string& error) {
     AtomicFile file;
     if (!file.open((fs::path(directory_) / name).string(), error)) return false;
-    file.append(bytes);
+    fill(file);
     if (!file.commit(error)) return false;
     names_.insert(name);
     return true;
@@ -106,11 +113,13 @@ bool write_continuous(const CompileOptions& options, const pipeline::ContinuousC
                                      : pipeline::CatalogData{};
   if (!write_common(options, data, options.with_transitions ? linked : data, out, error))
     return false;
-  if (wants(options, "json")) {
-    const std::string json =
-        codegen::continuous_catalog_json(catalog, options.with_transitions).dump() + "\n";
-    if (!out.write(catalog.name + ".json", json, error)) return false;
-  }
+  const auto stream_json = [&](AtomicFile& file) {
+    codegen::JsonWriter writer([&file](std::string_view piece) { file.append(piece); });
+    codegen::write_continuous_catalog_json(writer, catalog, options.with_transitions);
+    writer.finish();
+  };
+  if (wants(options, "json") && !out.write_with(catalog.name + ".json", stream_json, error))
+    return false;
   for (std::size_t i = 0; wants(options, "svg") && i < catalog.abstractions.size(); ++i) {
     if (!out.write(catalog.name + "." + catalog.abstractions[i].context + ".svg",
                    codegen::abstraction_svg(catalog, i), error))

@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <sstream>
 
+#include "pipeline/continuous_catalog_data.hpp"
 #include "support/text.hpp"
 
 namespace oasis::codegen {
@@ -134,7 +135,7 @@ std::string abstraction_svg(const pipeline::ContinuousCatalog& catalog, std::siz
   out << "<text x=\"" << number(kMargin) << "\" y=\"20\">" << catalog.name << " / "
       << abstraction.context << ": attends to " << attends << "</text>\n";
   out << "<text x=\"" << number(kMargin) << "\" y=\"38\">epsilon "
-      << number(to_double(abstraction.epsilon))
+      << number(pipeline::bound_as_double(abstraction.epsilon))
       << (abstraction.exact() ? " (exact bisimulation)" : " (approximation)") << "; "
       << grid.num_cells() << " cells, " << abstraction.num_blocks << " blocks"
       << (grid.dimension() > 2 ? "; slice through the centre of the other variables" : "")

@@ -8,15 +8,21 @@
 //          variables in the listed order (each cell a box: two rows per variable),
 //   blocks: [{"reward": r, "policy": "action", "value": v, "next": {...}}]
 // where `next` (only with transitions) maps each action name to [[block, probability], ...]
-// with zero entries omitted. Written compactly (no indentation): it can be large.
+// with zero entries omitted. Written compactly (no indentation) and streamed: it can be large (327
+// MB for the Go1 catalog with transitions).
 
-#include <nlohmann/json.hpp>
+#include <string>
 
+#include "codegen/json_writer.hpp"
 #include "pipeline/continuous_catalog.hpp"
 
 namespace oasis::codegen {
 
-nlohmann::json continuous_catalog_json(const pipeline::ContinuousCatalog& catalog,
-                                       bool with_transitions);
+// Streams the document into `out` (the caller ends it with out.finish()).
+void write_continuous_catalog_json(JsonWriter& out, const pipeline::ContinuousCatalog& catalog,
+                                   bool with_transitions);
+// The whole document as text (small catalogs and tests).
+std::string continuous_catalog_json(const pipeline::ContinuousCatalog& catalog,
+                                    bool with_transitions);
 
 }  // namespace oasis::codegen

@@ -6,13 +6,21 @@
 #include "support/mapped_file.hpp"
 
 namespace oasis::pipeline {
+std::vector<double> value_doubles(const model::ExplicitModel& model) {
+  std::vector<double> doubles(model.values.size());
+  for (std::size_t id = 0; id < doubles.size(); ++id)
+    doubles[id] = to_double(model.values[static_cast<ValueId>(id)]);
+  return doubles;
+}
+
 CsrData csr_of(const model::ExplicitModel& model, const model::TransitionMatrix& matrix) {
+  const std::vector<double> doubles = value_doubles(model);
   CsrData csr;
   csr.choice_begin.assign(matrix.choice_begin.begin(), matrix.choice_begin.end());
   csr.target.assign(matrix.edge_target.begin(), matrix.edge_target.end());
   csr.probability.reserve(matrix.num_edges());
   for (ValueId id : matrix.edge_probability)
-    csr.probability.push_back(to_double(model.values[id]));
+    csr.probability.push_back(doubles[id]);
   return csr;
 }
 

@@ -71,6 +71,10 @@ struct CatalogData {
   std::vector<rt::AbstractionView> abstraction_views_;
 };
 
+// The nearest double of every value of `model`'s pool, by ValueId: edges share few distinct
+// values, so converting each once is much cheaper than once per edge.
+std::vector<double> value_doubles(const model::ExplicitModel& model);
+
 // A transition matrix of `model` as CSR arrays of doubles (nearest to each exact value).
 CsrData csr_of(const model::ExplicitModel& model, const model::TransitionMatrix& matrix);
 

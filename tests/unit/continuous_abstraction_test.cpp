@@ -69,7 +69,8 @@ TEST(ContinuousCatalog, JsonFollowsTheContract) {
   std::string error;
   const auto catalog = pipeline::build_continuous_catalog(ir, 7, {}, error);
   ASSERT_TRUE(catalog) << error;
-  const nlohmann::json json = codegen::continuous_catalog_json(*catalog, true);
+  const nlohmann::json json =
+      nlohmann::json::parse(codegen::continuous_catalog_json(*catalog, true));
   EXPECT_EQ(json["name"], "line");
   EXPECT_EQ(json["variables"], nlohmann::json({"x"}));
   EXPECT_EQ(json["actions"], nlohmann::json({"left", "right"}));
@@ -100,9 +101,9 @@ TEST(ContinuousCatalog, JsonFollowsTheContract) {
       EXPECT_NEAR(total, 1.0, 1e-12) << action;
     }
   }
-  EXPECT_FALSE(
-      codegen::continuous_catalog_json(*catalog, false)["abstractions"][0]["blocks"][0].contains(
-          "next"));
+  EXPECT_FALSE(nlohmann::json::parse(codegen::continuous_catalog_json(
+      *catalog, false))["abstractions"][0]["blocks"][0]
+                   .contains("next"));
 }
 
 TEST(ContinuousCatalog, SvgShowsTheCellsAndTheCaption) {
