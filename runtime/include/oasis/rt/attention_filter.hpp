@@ -120,12 +120,16 @@ enum class FilterError : std::uint32_t {
 };
 
 /// Storage for a filter whose sizes are bounded at compile time: holds enough doubles for
-/// MaxAbstractions abstractions and, when MaxStates > 0, robust mode over MaxStates states.
+/// MaxAbstractions abstractions of a discrete or continuous catalog (workspace_size()) and,
+/// when MaxStates > 0, robust mode over MaxStates states.
 template <std::size_t MaxAbstractions, std::size_t MaxStates = 0>
 struct FixedWorkspace {
-  std::array<double, 2 * MaxAbstractions + 2 * MaxAbstractions * MaxStates> data{};
+  static constexpr std::size_t kDoubles = 3 * MaxAbstractions > 2 * MaxAbstractions*(1 + MaxStates)
+                                              ? 3 * MaxAbstractions
+                                              : 2 * MaxAbstractions*(1 + MaxStates);
+  std::array<double, kDoubles> data{};
   double* buffer() noexcept { return data.data(); }
-  static constexpr std::size_t size() noexcept { return 2 * MaxAbstractions * (1 + MaxStates); }
+  static constexpr std::size_t size() noexcept { return kDoubles; }
 };
 
 /// The OAS filter. See the top of this header for the algorithm and the cost per step.
