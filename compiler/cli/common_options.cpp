@@ -19,7 +19,8 @@ void add_common_options(CLI::App& command, CommonOptions& options) {
       ->capture_default_str();
   command
       .add_option("--progress", options.progress,
-                  "Show exploration progress on stderr: auto (when it is a terminal), "
+                  "Show progress on stderr (exploration, the stages of a continuous compile): auto "
+                  "(when it is a terminal), "
                   "always or never")
       ->capture_default_str()
       ->check(CLI::IsMember({"auto", "always", "never"}));

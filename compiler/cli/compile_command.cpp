@@ -7,6 +7,7 @@
 #include <functional>
 #include <iostream>
 #include <memory>
+#include <mutex>
 #include <set>
 
 #include "cli/commands.hpp"
@@ -206,6 +207,14 @@ int run_compile(CompileOptions options) {
     build.abstraction.max_cells = options.max_cells;
     build.abstraction.attention = !options.no_attention;
     build.jobs = options.jobs;
+    std::mutex stderr_lock;
+    if (effective_load_options(options.common).progress) {
+      build.abstraction.progress = [&stderr_lock](const std::string& context,
+                                                  const std::string& done, double seconds) {
+        const std::lock_guard lock(stderr_lock);
+        std::fprintf(stderr, "oasisc: %s: %s (%.2f s)\n", context.c_str(), done.c_str(), seconds);
+      };
+    }
     const auto catalog = pipeline::build_continuous_catalog(*loaded->ir, hash, build, error);
     if (!catalog) {
       std::cerr << options.spec << ": error: " << error << '\n';

@@ -1,6 +1,7 @@
 #include "pipeline/continuous_abstraction.hpp"
 
 #include <chrono>
+#include <cstdio>
 
 #include "bisim/quotient.hpp"
 #include "bisim/refinement.hpp"
@@ -19,6 +20,13 @@ double seconds_since(Clock::time_point& start) {
   const double seconds = std::chrono::duration<double>(now - start).count();
   start = now;
   return seconds;
+}
+
+std::string describe_grid(const geom::Grid& grid, const Rational& epsilon) {
+  char text[96];
+  std::snprintf(text, sizeof text, "grid of %zu cells, epsilon %.4g", grid.num_cells(),
+                to_double(epsilon));
+  return text;
 }
 
 }  // namespace
@@ -40,11 +48,17 @@ std::optional<ContinuousAbstraction> abstract_context(const model::ModelIR& ir, 
   result.met = partition->met;
   result.grid = std::move(partition->grid);
   result.seconds.grid = seconds_since(start);
+  const auto report = [&](const std::string& done, double seconds) {
+    if (options.progress) options.progress(result.context, done, seconds);
+  };
+  report(describe_grid(result.grid, result.epsilon), result.seconds.grid);
 
   const model::ExplicitModel mdp =
       geom::finite_mdp(*geometry, result.grid, ir.actions, ir.objective);
   result.finite_edges = mdp.contexts[0].transitions->num_edges();
   result.seconds.finite_mdp = seconds_since(start);
+  report("finite MDP, " + std::to_string(result.finite_edges) + " edges",
+         result.seconds.finite_mdp);
 
   const bisim::Partition blocks = bisim::coarsest_bisimulation(mdp, 0);
   const std::size_t cells = result.grid.num_cells();
@@ -53,6 +67,7 @@ std::optional<ContinuousAbstraction> abstract_context(const model::ModelIR& ir, 
   result.num_blocks = blocks.num_blocks;
   result.quotient = bisim::build_quotient(mdp, 0, blocks);
   result.seconds.bisimulation = seconds_since(start);
+  report("quotient, " + std::to_string(result.num_blocks) + " blocks", result.seconds.bisimulation);
 
   result.block_reward.reserve(result.num_blocks);
   for (std::uint32_t z = 0; z < result.num_blocks; ++z)
@@ -66,6 +81,7 @@ std::optional<ContinuousAbstraction> abstract_context(const model::ModelIR& ir, 
   result.policy = std::move(solved.action);
   result.value = std::move(solved.value);
   result.seconds.policy = seconds_since(start);
+  report("policy, " + std::to_string(solved.iterations) + " sweeps", result.seconds.policy);
   return result;
 }
 

@@ -5,6 +5,7 @@
 // equal rows merge into one block) and the policy solved on the quotient.
 
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -22,6 +23,9 @@ struct ContinuousOptions {
   std::size_t max_cells = 200'000;  // per context
   bool attention = true;            // false: partition the full state (the baseline)
   policy::PolicyOptions policy;
+  // Called as each stage of a context ends (from the thread abstracting it, so possibly
+  // from several threads at once): the context, what was done, and its seconds.
+  std::function<void(const std::string& context, const std::string& done, double seconds)> progress;
 };
 
 struct StageSeconds {

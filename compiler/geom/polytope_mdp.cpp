@@ -1,0 +1,132 @@
+#include "geom/polytope_mdp.hpp"
+
+#include <algorithm>
+
+#include "geom/polytope_error_bound.hpp"
+
+namespace oasis::geom {
+namespace {
+
+bool inside_undisturbed_domain(const PolytopeGeometry& geometry, const AffineStep& step,
+                               const Point& mean) {
+  for (std::size_t i = 0; i < mean.size(); ++i) {
+    if (step.disturbance[i]) continue;
+    if (mean[i] < geometry.domain_low[i] || mean[i] > geometry.domain_high[i]) return false;
+  }
+  return true;
+}
+
+// vol(B ∩ Q) / vol(B) in the disturbed coordinates, on the slice at the mean's undisturbed
+// coordinates. Only the constraints of Q that cut the box are kept, so that a box well
+// inside one cell costs nothing and the vertex enumeration stays small.
+Rational box_share(const Polytope& cell, const AffineStep& step, const Point& mean,
+                   const Rational& box_volume) {
+  std::vector<std::optional<Rational>> fixed(mean.size());
+  Point low;
+  Point high;
+  for (std::size_t i = 0; i < mean.size(); ++i) {
+    if (step.disturbance[i]) {
+      low.push_back(mean[i] + step.disturbance[i]->low);
+      high.push_back(mean[i] + step.disturbance[i]->high);
+    } else {
+      fixed[i] = mean[i];
+    }
+  }
+  Polytope clipped = Polytope::box(low, high);
+  const Polytope slice = cell.slice(fixed);
+  for (const HalfSpace& h : slice.constraints()) {
+    Rational least = 0;
+    Rational most = 0;
+    for (std::size_t j = 0; j < h.normal.size(); ++j) {
+      least += std::min(h.normal[j] * low[j], h.normal[j] * high[j]);
+      most += std::max(h.normal[j] * low[j], h.normal[j] * high[j]);
+    }
+    if (least >= h.bound && most > h.bound) return 0;  // the box is beyond this face
+    if (most > h.bound) clipped.add(h);                // else it holds on the whole box
+  }
+  return clipped.volume() / box_volume;
+}
+
+}  // namespace
+
+std::vector<std::pair<std::size_t, Rational>> successor_row(const PolytopeGeometry& geometry,
+                                                            const BspTree& tree,
+                                                            const AffineStep& step,
+                                                            const Point& from) {
+  Point mean = step.offset;
+  for (std::size_t i = 0; i < mean.size(); ++i)
+    mean[i] += dot(step.matrix[i], from);
+  std::vector<std::pair<std::size_t, Rational>> row;
+  const std::size_t outside = tree.num_cells();
+  if (!inside_undisturbed_domain(geometry, step, mean)) {
+    row.emplace_back(outside, 1);
+    return row;
+  }
+  Rational box_volume = 1;
+  bool disturbed = false;
+  for (const auto& w : step.disturbance) {
+    if (!w) continue;
+    box_volume *= w->width();
+    disturbed = true;
+  }
+  if (!disturbed) {  // a point: one cell (the undisturbed check put it in the domain)
+    row.emplace_back(*tree.locate(mean), 1);
+    return row;
+  }
+  auto range = [&](const std::vector<Rational>& normal) {
+    const Rational centre = dot(normal, mean);
+    ValueRange r{centre, centre};
+    for (std::size_t i = 0; i < normal.size(); ++i) {
+      if (!step.disturbance[i] || sgn(normal[i]) == 0) continue;
+      const Rational a = normal[i] * step.disturbance[i]->low;
+      const Rational b = normal[i] * step.disturbance[i]->high;
+      r.low += std::min(a, b);
+      r.high += std::max(a, b);
+    }
+    return r;
+  };
+  Rational inside = 0;
+  for (const std::uint32_t cell : tree.cells_meeting(range)) {
+    const Rational p = box_share(tree.cells()[cell].polytope, step, mean, box_volume);
+    if (sgn(p) <= 0) continue;
+    inside += p;
+    row.emplace_back(cell, p);
+  }
+  if (inside < 1) row.emplace_back(outside, 1 - inside);
+  return row;
+}
+
+PolytopeMdp polytope_finite_mdp(const PolytopeGeometry& geometry,
+                                const PolytopePartition& partition,
+                                const std::vector<std::string>& action_names,
+                                const model::Objective& objective) {
+  PolytopeMdp result;
+  model::ExplicitModel& mdp = result.mdp;
+  mdp.name = geometry.context;
+  mdp.actions = action_names;
+  mdp.objective = objective;
+  const BspTree& tree = partition.tree;
+  const auto num_states = static_cast<std::uint32_t>(tree.num_cells() + 1);
+  mdp.states.size = num_states;
+  const auto num_actions = static_cast<model::ActionIndex>(action_names.size());
+  model::TransitionBuilder transitions(num_states, num_actions);
+  model::RewardTable rewards;
+  rewards.state.assign(num_states, RationalPool::kZero);
+  for (std::size_t cell = 0; cell < tree.num_cells(); ++cell) {
+    rewards.state[cell] = mdp.values.intern(partition.cell_reward[cell]);
+    for (model::ActionIndex a = 0; a < num_actions; ++a) {
+      for (const auto& [target, p] :
+           successor_row(geometry, tree, geometry.actions[a], tree.cells()[cell].representative))
+        transitions.add(static_cast<model::StateIndex>(cell), a,
+                        static_cast<model::StateIndex>(target), mdp.values.intern(p));
+    }
+  }
+  for (model::ActionIndex a = 0; a < num_actions; ++a)  // outside is absorbing
+    transitions.add(num_states - 1, a, num_states - 1, RationalPool::kOne);
+  auto matrix = std::make_shared<const model::TransitionMatrix>(transitions.finish(mdp.values));
+  mdp.contexts.push_back({geometry.context, std::move(matrix), std::move(rewards)});
+  result.epsilon = partition_error_bound(geometry, tree);
+  return result;
+}
+
+}  // namespace oasis::geom
