@@ -38,8 +38,8 @@ struct CompileOptions {
   std::vector<std::string> formats;
   std::string basename;  // of the C++ files; default NAME_catalog
   std::optional<double> p_correct;
-  std::optional<double> epsilon;  // continuous: default kDefaultEpsilon
-  std::size_t max_cells = 200'000;
+  std::optional<double> epsilon;         // continuous: default kDefaultEpsilon
+  std::optional<std::size_t> max_cells;  // default: the pipeline's, per path
   bool no_attention = false;
   bool with_transitions = false;
   unsigned jobs = 0;
@@ -137,7 +137,7 @@ void print_continuous_summary(const pipeline::ContinuousCatalog& catalog) {
     const double seconds =
         a.seconds.grid + a.seconds.finite_mdp + a.seconds.bisimulation + a.seconds.policy;
     std::printf("context %s: attends to %s; %zu cells, %u blocks, epsilon %.4g%s (%.2f s)\n",
-                a.context.c_str(), attends.c_str(), a.grid.num_cells(), a.num_blocks,
+                a.context.c_str(), attends.c_str(), a.num_cells(), a.num_blocks,
                 pipeline::bound_as_double(a.epsilon), a.exact() ? " (exact)" : "", seconds);
     if (!a.met) {
       std::printf(
@@ -287,8 +287,11 @@ CommandRunner add_compile_command(CLI::App& app) {
       ->add_option("--epsilon", options->epsilon,
                    "Continuous: the error bound every transition row must meet (default 0.1)")
       ->check(CLI::PositiveNumber);
-  command->add_option("--max-cells", options->max_cells, "Continuous: cells per context at most")
-      ->capture_default_str()
+  command
+      ->add_option("--max-cells", options->max_cells,
+                   "Continuous: cells per context at most (default " +
+                       std::to_string(pipeline::kDefaultGridCells) + " on a grid, " +
+                       std::to_string(pipeline::kDefaultPolytopeCells) + " polytope cells)")
       ->check(CLI::PositiveNumber);
   command->add_flag("--no-attention", options->no_attention,
                     "Continuous: partition every variable (the no-attention baseline)");

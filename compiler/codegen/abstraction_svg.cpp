@@ -54,6 +54,51 @@ struct Frame {
   double py(double y) const { return kMargin + (y1 - y) * scale; }
 };
 
+// The corners of a 2-D convex cell in drawing order: sorted by angle about their mean.
+std::vector<std::pair<double, double>> polygon_of(const geom::BspCell& cell) {
+  std::vector<std::pair<double, double>> corners;
+  double cx = 0;
+  double cy = 0;
+  for (const geom::Point& v : cell.vertices) {
+    corners.emplace_back(to_double(v[0]), to_double(v[1]));
+    cx += corners.back().first;
+    cy += corners.back().second;
+  }
+  cx /= static_cast<double>(corners.size());
+  cy /= static_cast<double>(corners.size());
+  std::sort(corners.begin(), corners.end(), [&](const auto& p, const auto& q) {
+    return std::atan2(p.second - cy, p.first - cx) < std::atan2(q.second - cy, q.first - cx);
+  });
+  return corners;
+}
+
+// Polytope cells (the BSP path) in one or two dimensions: each cell filled like a grid cell,
+// outlined thin, and thick where it earns a reward (its block's reward is not 0).
+void draw_polytope_cells(std::ostringstream& out,
+                         const pipeline::ContinuousAbstraction& abstraction, const Frame& frame,
+                         bool two_d, double low, double high) {
+  for (std::size_t c = 0; c < abstraction.bsp->num_cells(); ++c) {
+    const geom::BspCell& cell = abstraction.bsp->cells()[c];
+    const std::uint32_t z = abstraction.cell_block[c];
+    const double shade = high > low ? (abstraction.value[z] - low) / (high - low) : 1;
+    const bool rewarded = abstraction.block_reward[z] != 0;
+    out << "<polygon points=\"";
+    if (two_d) {
+      for (const auto& [x, y] : polygon_of(cell))
+        out << number(frame.px(x)) << ',' << number(frame.py(y)) << ' ';
+    } else {
+      const double a = frame.px(to_double(cell.vertices.front()[0]));
+      const double b = frame.px(to_double(cell.vertices.back()[0]));
+      const double top = frame.py(frame.y1);
+      out << number(a) << ',' << number(top) << ' ' << number(b) << ',' << number(top) << ' '
+          << number(b) << ',' << number(top + 40) << ' ' << number(a) << ',' << number(top + 40);
+    }
+    out << "\" fill=\"" << hue_of(abstraction.policy[z]) << "\" fill-opacity=\""
+        << number(0.15 + 0.85 * shade) << "\" stroke=\"" << (rewarded ? "black" : "white")
+        << "\" stroke-width=\"" << (rewarded ? 1.5 : 0.3) << "\"/>\n";
+  }
+}
+
 }  // namespace
 
 std::string abstraction_svg(const pipeline::ContinuousCatalog& catalog, std::size_t which) {
@@ -81,8 +126,15 @@ std::string abstraction_svg(const pipeline::ContinuousCatalog& catalog, std::siz
   std::ostringstream out;
   out << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << number(width) << "\" height=\""
       << number(height) << "\" font-family=\"sans-serif\" font-size=\"12\">\n";
+  if (abstraction.bsp && grid.dimension() <= 2) {
+    draw_polytope_cells(out, abstraction, frame, two_d, low, high);
+  } else if (abstraction.bsp) {
+    out << "<text x=\"" << number(kMargin) << "\" y=\"" << number(kMargin + 20)
+        << "\">polytope cells in more than two dimensions are not drawn</text>\n";
+  }
   std::vector<std::uint32_t> index = slice.fixed;
-  const std::size_t nx = grid.intervals(0);
+  // A polytope abstraction's grid is its domain box, drawn above as cells: no grid loops.
+  const std::size_t nx = abstraction.bsp ? 0 : grid.intervals(0);
   const std::size_t ny = two_d ? grid.intervals(1) : 1;
   auto block_at = [&](std::size_t i, std::size_t j) {
     index[0] = static_cast<std::uint32_t>(i);
@@ -137,7 +189,8 @@ std::string abstraction_svg(const pipeline::ContinuousCatalog& catalog, std::siz
   out << "<text x=\"" << number(kMargin) << "\" y=\"38\">epsilon "
       << number(pipeline::bound_as_double(abstraction.epsilon))
       << (abstraction.exact() ? " (exact bisimulation)" : " (approximation)") << "; "
-      << grid.num_cells() << " cells, " << abstraction.num_blocks << " blocks"
+      << abstraction.num_cells() << (abstraction.bsp ? " polytope" : "") << " cells, "
+      << abstraction.num_blocks << " blocks"
       << (grid.dimension() > 2 ? "; slice through the centre of the other variables" : "")
       << "</text>\n";
   double legend = kMargin;

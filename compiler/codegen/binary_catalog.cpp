@@ -110,6 +110,15 @@ void add_grid(const pipeline::AbstractionData& abstraction, std::uint32_t i, Bui
   out.section(rt::Section::kCellBlock, i, abstraction.cell_block);
   out.section(rt::Section::kOutsideBlock, i, &abstraction.outside_block, 1);
   out.section(rt::Section::kEpsilon, i, &abstraction.epsilon, 1);
+  if (abstraction.bsp_cell.empty()) return;
+  const std::uint32_t counts[2] = {static_cast<std::uint32_t>(abstraction.bsp_cell.size()),
+                                   abstraction.bsp_cells};
+  out.section(rt::Section::kBspCounts, i, counts, 2);
+  out.section(rt::Section::kBspNormal, i, abstraction.bsp_normal);
+  out.section(rt::Section::kBspBound, i, abstraction.bsp_bound);
+  out.section(rt::Section::kBspBelow, i, abstraction.bsp_below);
+  out.section(rt::Section::kBspAbove, i, abstraction.bsp_above);
+  out.section(rt::Section::kBspCell, i, abstraction.bsp_cell);
 }
 
 }  // namespace

@@ -36,6 +36,28 @@ void write_cell(JsonWriter& out, const geom::Grid& grid, const std::vector<std::
   out.end_object();
 }
 
+// A polytope cell as A x <= b: its irredundant constraints, rounded to nearest doubles.
+void write_polytope_cell(JsonWriter& out, const geom::BspCell& cell, std::uint32_t block) {
+  out.begin_object();
+  out.key("A");
+  out.begin_array();
+  for (const geom::HalfSpace& row : cell.polytope.constraints()) {
+    out.begin_array();
+    for (const Rational& a : row.normal)
+      out.value(to_double(a));
+    out.end_array();
+  }
+  out.end_array();
+  out.key("b");
+  out.begin_array();
+  for (const geom::HalfSpace& row : cell.polytope.constraints())
+    out.value(to_double(row.bound));
+  out.end_array();
+  out.key("block");
+  out.value(block);
+  out.end_object();
+}
+
 void write_next(JsonWriter& out, const pipeline::ContinuousAbstraction& abstraction,
                 const std::vector<std::string>& actions, const std::vector<double>& probability,
                 std::uint32_t block) {
@@ -104,10 +126,15 @@ void write_abstraction(JsonWriter& out, const pipeline::ContinuousCatalog& catal
   out.end_array();
   out.key("cells");
   out.begin_array();
-  std::vector<std::uint32_t> index(abstraction.grid.dimension());
-  for (std::size_t cell = 0; cell < abstraction.grid.num_cells(); ++cell) {
-    abstraction.grid.index_of(cell, index);
-    write_cell(out, abstraction.grid, index, abstraction.cell_block[cell]);
+  if (abstraction.bsp) {
+    for (std::size_t cell = 0; cell < abstraction.bsp->num_cells(); ++cell)
+      write_polytope_cell(out, abstraction.bsp->cells()[cell], abstraction.cell_block[cell]);
+  } else {
+    std::vector<std::uint32_t> index(abstraction.grid.dimension());
+    for (std::size_t cell = 0; cell < abstraction.grid.num_cells(); ++cell) {
+      abstraction.grid.index_of(cell, index);
+      write_cell(out, abstraction.grid, index, abstraction.cell_block[cell]);
+    }
   }
   out.end_array();
   out.key("blocks");

@@ -72,15 +72,27 @@ std::string strings(std::string& out, const std::string& name,
 
 // The continuous fields of an AbstractionView, written out even when empty: every field by
 // position, so that the tables stay warning-free as the view grows.
+std::string bsp(std::string& out, const std::string& p, const pipeline::AbstractionData& data) {
+  if (data.bsp_cell.empty()) return "{0u, 0u, nullptr, nullptr, nullptr, nullptr, nullptr}";
+  return "{" + std::to_string(data.bsp_cell.size()) + "u, " + std::to_string(data.bsp_cells) +
+         "u, " + array(out, "double", p + "_bsp_normal", data.bsp_normal) + ", " +
+         array(out, "double", p + "_bsp_bound", data.bsp_bound) + ", " +
+         array(out, "std::uint32_t", p + "_bsp_below", data.bsp_below) + ", " +
+         array(out, "std::uint32_t", p + "_bsp_above", data.bsp_above) + ", " +
+         array(out, "std::uint32_t", p + "_bsp_cell", data.bsp_cell) + "}";
+}
+
 std::string grid(std::string& out, const std::string& p, const pipeline::AbstractionData& data) {
-  if (data.grid_axes.empty()) return "{0u, nullptr, nullptr, nullptr}, nullptr, 0u, 0.0";
+  if (data.grid_axes.empty())
+    return "{0u, nullptr, nullptr, nullptr}, nullptr, 0u, 0.0, " + bsp(out, p, data);
   const std::string axes = array(out, "std::uint32_t", p + "_grid_axes", data.grid_axes);
   const std::string begin =
       array(out, "std::uint32_t", p + "_grid_break_begin", data.grid_break_begin);
   const std::string breaks = array(out, "double", p + "_grid_breaks", data.grid_breaks);
   const std::string cells = array(out, "std::uint32_t", p + "_cell_block", data.cell_block);
   return "{" + std::to_string(data.grid_axes.size()) + "u, " + axes + ", " + begin + ", " + breaks +
-         "}, " + cells + ", " + std::to_string(data.outside_block) + "u, " + number(data.epsilon);
+         "}, " + cells + ", " + std::to_string(data.outside_block) + "u, " + number(data.epsilon) +
+         ", " + bsp(out, p, data);
 }
 
 std::string abstraction(std::string& out, std::size_t index,

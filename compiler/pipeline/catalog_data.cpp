@@ -57,6 +57,15 @@ rt::CatalogView CatalogData::view() {
       view.cell_block = data.cell_block.data();
       view.outside_block = data.outside_block;
       view.epsilon = data.epsilon;
+      if (!data.bsp_cell.empty()) {
+        view.bsp = {static_cast<std::uint32_t>(data.bsp_cell.size()),
+                    data.bsp_cells,
+                    data.bsp_normal.data(),
+                    data.bsp_bound.data(),
+                    data.bsp_below.data(),
+                    data.bsp_above.data(),
+                    data.bsp_cell.data()};
+      }
     }
     abstraction_views_.push_back(view);
   }

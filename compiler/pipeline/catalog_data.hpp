@@ -41,6 +41,13 @@ struct AbstractionData {
   std::vector<std::uint32_t> cell_block;  // [cells]
   std::uint32_t outside_block = 0;
   double epsilon = 0.0;
+  // Polytope cells (rt::BspView): the grid is then the domain box, one cell.
+  std::uint32_t bsp_cells = 0;
+  std::vector<double> bsp_normal;  // [nodes * d]
+  std::vector<double> bsp_bound;   // [nodes]
+  std::vector<std::uint32_t> bsp_below;
+  std::vector<std::uint32_t> bsp_above;
+  std::vector<std::uint32_t> bsp_cell;  // rt::kInternalNode for internal nodes
 };
 
 struct CatalogData {

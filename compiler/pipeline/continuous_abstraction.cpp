@@ -8,6 +8,8 @@
 #include "geom/context_geometry.hpp"
 #include "geom/finite_mdp.hpp"
 #include "geom/grid_refinement.hpp"
+#include "geom/polytope_mdp.hpp"
+#include "geom/polytope_partition.hpp"
 #include "policy/value_iteration.hpp"
 
 namespace oasis::pipeline {
@@ -22,11 +24,59 @@ double seconds_since(Clock::time_point& start) {
   return seconds;
 }
 
-std::string describe_grid(const geom::Grid& grid, const Rational& epsilon) {
+std::string describe_partition(const ContinuousAbstraction& abstraction) {
   char text[96];
-  std::snprintf(text, sizeof text, "grid of %zu cells, epsilon %.4g", grid.num_cells(),
-                to_double(epsilon));
+  std::snprintf(text, sizeof text, "%s of %zu cells, epsilon %.4g",
+                abstraction.bsp ? "polytope partition" : "grid", abstraction.num_cells(),
+                to_double(abstraction.epsilon));
   return text;
+}
+
+}  // namespace
+
+namespace {
+
+// The grid path: product-structured contexts (box rewards, moves along single axes).
+bool partition_by_grid(const geom::ContextGeometry& geometry, const model::ModelIR& ir,
+                       const ContinuousOptions& options, ContinuousAbstraction& result,
+                       Clock::time_point& start, std::optional<model::ExplicitModel>& mdp,
+                       std::string& error) {
+  result.axis_names = geometry.axis_names;
+  auto partition = geom::partition_grid(
+      geometry, {options.epsilon, options.max_cells.value_or(kDefaultGridCells)}, error);
+  if (!partition) return false;
+  result.epsilon = partition->epsilon;
+  result.met = partition->met;
+  result.grid = std::move(partition->grid);
+  result.seconds.grid = seconds_since(start);
+  mdp = geom::finite_mdp(geometry, result.grid, ir.actions, ir.objective);
+  return true;
+}
+
+// The polytope path (CGAL): any linear reward regions and affine dynamics. The abstraction's
+// grid is then the domain box, a single cell refined by the BSP.
+bool partition_by_polytopes(const geom::PolytopeGeometry& geometry, const model::ModelIR& ir,
+                            const ContinuousOptions& options, ContinuousAbstraction& result,
+                            Clock::time_point& start, std::optional<model::ExplicitModel>& mdp,
+                            std::string& error) {
+  result.axis_names = geometry.axis_names;
+  geom::PolytopePartitionOptions target;
+  target.epsilon = Rational(options.epsilon);
+  target.max_cells = options.max_cells.value_or(kDefaultPolytopeCells);
+  auto partition = geom::partition_polytopes(geometry, target, error);
+  if (!partition) return false;
+  std::vector<std::vector<Rational>> box;
+  for (std::size_t i = 0; i < geometry.dimension(); ++i)
+    box.push_back({geometry.domain_low[i], geometry.domain_high[i]});
+  result.grid = geom::Grid(std::move(box));
+  result.seconds.grid = seconds_since(start);
+  geom::PolytopeMdp finite =
+      geom::polytope_finite_mdp(geometry, *partition, ir.actions, ir.objective);
+  result.epsilon = finite.epsilon;
+  result.met = finite.epsilon <= target.epsilon;
+  mdp = std::move(finite.mdp);
+  result.bsp = std::move(partition->tree);
+  return true;
 }
 
 }  // namespace
@@ -39,33 +89,35 @@ std::optional<ContinuousAbstraction> abstract_context(const model::ModelIR& ir, 
   result.context = ir.contexts[context].name;
   result.relevance =
       options.attention ? geom::analyse_relevance(ir, context) : geom::full_state(ir);
-  const auto geometry = geom::context_geometry(ir, context, result.relevance, error);
-  if (!geometry) return std::nullopt;
-  result.axis_names = geometry->axis_names;
-  auto partition = geom::partition_grid(*geometry, {options.epsilon, options.max_cells}, error);
-  if (!partition) return std::nullopt;
-  result.epsilon = partition->epsilon;
-  result.met = partition->met;
-  result.grid = std::move(partition->grid);
-  result.seconds.grid = seconds_since(start);
+  std::optional<model::ExplicitModel> mdp;
+  std::string grid_refusal;
+  if (const auto geometry = geom::context_geometry(ir, context, result.relevance, grid_refusal)) {
+    if (!partition_by_grid(*geometry, ir, options, result, start, mdp, error)) return std::nullopt;
+  } else {
+    std::string polytope_refusal;
+    const auto polytopes = geom::polytope_geometry(ir, context, result.relevance, polytope_refusal);
+    if (!polytopes) {
+      error = grid_refusal + "; and the polytope path cannot take it either: " + polytope_refusal;
+      return std::nullopt;
+    }
+    if (!partition_by_polytopes(*polytopes, ir, options, result, start, mdp, error))
+      return std::nullopt;
+  }
+  result.finite_edges = mdp->contexts[0].transitions->num_edges();
+  result.seconds.finite_mdp = seconds_since(start);
   const auto report = [&](const std::string& done, double seconds) {
     if (options.progress) options.progress(result.context, done, seconds);
   };
-  report(describe_grid(result.grid, result.epsilon), result.seconds.grid);
-
-  const model::ExplicitModel mdp =
-      geom::finite_mdp(*geometry, result.grid, ir.actions, ir.objective);
-  result.finite_edges = mdp.contexts[0].transitions->num_edges();
-  result.seconds.finite_mdp = seconds_since(start);
+  report(describe_partition(result), result.seconds.grid);
   report("finite MDP, " + std::to_string(result.finite_edges) + " edges",
          result.seconds.finite_mdp);
 
-  const bisim::Partition blocks = bisim::coarsest_bisimulation(mdp, 0);
-  const std::size_t cells = result.grid.num_cells();
+  const bisim::Partition blocks = bisim::coarsest_bisimulation(*mdp, 0);
+  const std::size_t cells = result.num_cells();
   result.cell_block.assign(blocks.block_of.begin(), blocks.block_of.begin() + cells);
   result.outside_block = blocks.block_of[cells];
   result.num_blocks = blocks.num_blocks;
-  result.quotient = bisim::build_quotient(mdp, 0, blocks);
+  result.quotient = bisim::build_quotient(*mdp, 0, blocks);
   result.seconds.bisimulation = seconds_since(start);
   report("quotient, " + std::to_string(result.num_blocks) + " blocks", result.seconds.bisimulation);
 

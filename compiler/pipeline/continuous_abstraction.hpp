@@ -1,7 +1,9 @@
 #pragma once
 // One context of a continuous model, abstracted end to end: the variables it attends to
-// (geom/relevance.hpp), a grid on them meeting the error target (geom/grid_refinement.hpp),
-// the finite MDP of the grid (geom/finite_mdp.hpp), its coarsest bisimulation (cells with
+// (geom/relevance.hpp), a grid on them meeting the error target (geom/grid_refinement.hpp)
+// or, when the context is not product-structured, convex polytope cells (the CGAL path,
+// geom/polytope_partition.hpp), the finite MDP of the cells (geom/finite_mdp.hpp,
+// geom/polytope_mdp.hpp), its coarsest bisimulation (cells with
 // equal rows merge into one block) and the policy solved on the quotient.
 
 #include <cstdint>
@@ -10,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "geom/bsp_tree.hpp"
 #include "geom/grid.hpp"
 #include "geom/relevance.hpp"
 #include "model/explicit_model.hpp"
@@ -18,10 +21,15 @@
 
 namespace oasis::pipeline {
 
+inline constexpr std::size_t kDefaultGridCells = 200'000;
+inline constexpr std::size_t kDefaultPolytopeCells = 2'000;
+
 struct ContinuousOptions {
-  double epsilon = 0.1;             // the error bound to reach per context
-  std::size_t max_cells = 200'000;  // per context
-  bool attention = true;            // false: partition the full state (the baseline)
+  double epsilon = 0.1;  // the error bound to reach per context
+  // Cells per context at most; unset: kDefaultGridCells on the grid path,
+  // kDefaultPolytopeCells on the polytope path (exact polytope work per cell is far dearer).
+  std::optional<std::size_t> max_cells;
+  bool attention = true;  // false: partition the full state (the baseline)
   policy::PolicyOptions policy;
   // Called as each stage of a context ends (from the thread abstracting it, so possibly
   // from several threads at once): the context, what was done, and its seconds.
@@ -39,7 +47,9 @@ struct ContinuousAbstraction {
   std::string context;
   geom::Relevance relevance;            // relevance.relevant: the grid's axes, in order
   std::vector<std::string> axis_names;  // their variable names
-  geom::Grid grid;
+  geom::Grid grid;  // the polytope path: the domain box, one cell, refined by `bsp`
+  // The polytope path's partition (geom/bsp_tree.hpp): its cells are the abstraction's.
+  std::optional<geom::BspTree> bsp;
   Rational epsilon;  // the sound bound on every row's error (0: exact bisimulation)
   bool met = false;  // epsilon <= the target
   std::vector<std::uint32_t> cell_block;  // [cells] the block of every cell
@@ -52,6 +62,7 @@ struct ContinuousAbstraction {
   std::size_t finite_edges = 0;       // edges of the finite MDP before quotienting
   StageSeconds seconds;
 
+  [[nodiscard]] std::size_t num_cells() const { return bsp ? bsp->num_cells() : grid.num_cells(); }
   [[nodiscard]] bool exact() const { return sgn(epsilon) == 0 && relevance.exact(); }
 };
 

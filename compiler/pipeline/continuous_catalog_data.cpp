@@ -5,6 +5,19 @@
 namespace oasis::pipeline {
 namespace {
 
+void add_bsp(const geom::BspTree& tree, AbstractionData& data) {
+  data.bsp_cells = static_cast<std::uint32_t>(tree.num_cells());
+  for (const geom::RoundedBspNode& node : tree.rounded_nodes()) {
+    const bool leaf = node.cell != geom::BspNode::kNone;
+    for (std::size_t i = 0; i < tree.dimension(); ++i)
+      data.bsp_normal.push_back(leaf ? 0.0 : node.normal[i]);
+    data.bsp_bound.push_back(leaf ? 0.0 : node.bound);
+    data.bsp_below.push_back(leaf ? 0 : node.below);
+    data.bsp_above.push_back(leaf ? 0 : node.above);
+    data.bsp_cell.push_back(leaf ? node.cell : rt::kInternalNode);
+  }
+}
+
 AbstractionData abstraction_data(const pipeline::ContinuousAbstraction& abstraction,
                                  std::uint32_t num_actions, bool with_transitions) {
   AbstractionData data;
@@ -27,6 +40,7 @@ AbstractionData abstraction_data(const pipeline::ContinuousAbstraction& abstract
     data.grid_breaks.insert(data.grid_breaks.end(), breaks.begin(), breaks.end());
     data.grid_break_begin.push_back(static_cast<std::uint32_t>(data.grid_breaks.size()));
   }
+  if (abstraction.bsp) add_bsp(*abstraction.bsp, data);
   data.cell_block = abstraction.cell_block;
   data.outside_block = abstraction.outside_block;
   data.epsilon = bound_as_double(abstraction.epsilon);

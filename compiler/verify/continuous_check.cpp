@@ -9,6 +9,7 @@
 #include "oasis/rt/grid_locator.hpp"
 #include "spec/affine.hpp"
 #include "verify/policy_check.hpp"
+#include "verify/polytope_cells_check.hpp"
 
 namespace oasis::verify {
 namespace {
@@ -270,6 +271,29 @@ Problem check_policy(const model::ModelIR& ir, const rt::AbstractionView& abs,
                                  summary);
 }
 
+// Polytope cells (a BSP in the catalog): verify/polytope_cells_check.hpp, then the policy.
+CatalogCheck check_polytope_abstraction(const model::ModelIR& ir, std::size_t context,
+                                        const rt::AbstractionView& abs, std::uint32_t actions,
+                                        CatalogCheck check) {
+  const bool rows = abs.quotient.choice_begin != nullptr;
+  PolytopeCellsVerdict cells = check_polytope_cells(ir, context, abs, actions, rows);
+  Problem problem = check_domain(ir, abs);
+  if (!problem) problem = cells.problem;
+  std::string summary;
+  if (!problem && rows) problem = check_policy(ir, abs, actions, summary);
+  if (problem) {
+    check.verdict = "FAILED: " + *problem;
+    return check;
+  }
+  check.ok = true;
+  check.verdict = "attends to its relevant variables; " + cells.summary + "; " +
+                  std::to_string(abs.num_blocks) + " blocks" +
+                  (rows ? "; policy " + summary + ", values ok"
+                        : "; rows and policy not checked: the file has no transition rows "
+                          "(compile --with-transitions)");
+  return check;
+}
+
 CatalogCheck check_abstraction(const model::ModelIR& ir, std::size_t context,
                                const rt::AbstractionView& abs, std::uint32_t actions) {
   CatalogCheck check{"context " + ir.contexts[context].name, "", false};
@@ -280,6 +304,7 @@ CatalogCheck check_abstraction(const model::ModelIR& ir, std::size_t context,
     check.verdict = "FAILED: the grid's variables are not the ones the context attends to";
     return check;
   }
+  if (abs.bsp.num_nodes != 0) return check_polytope_abstraction(ir, context, abs, actions, check);
   const std::uint64_t cells = rt::grid_cells(abs.grid);
   Problem problem = check_domain(ir, abs);
   if (!problem) problem = check_rewards(ir, context, abs, cells);

@@ -10701,9 +10701,9 @@ const std::uint32_t k1_cell_block[] = {
 };
 const oasis::rt::AbstractionView kAbstractions[] = {
     {"human1_holds_treat", 8485u, nullptr, k0_block_reward, {nullptr, nullptr, nullptr, 0u}, k0_reward, k0_policy, k0_value, {nullptr, nullptr, nullptr, 0u},
-     {2u, k0_grid_axes, k0_grid_break_begin, k0_grid_breaks}, k0_cell_block, 8484u, 0.09981884057971015},
+     {2u, k0_grid_axes, k0_grid_break_begin, k0_grid_breaks}, k0_cell_block, 8484u, 0.09981884057971015, {0u, 0u, nullptr, nullptr, nullptr, nullptr, nullptr}},
     {"human2_holds_treat", 8485u, nullptr, k1_block_reward, {nullptr, nullptr, nullptr, 0u}, k1_reward, k1_policy, k1_value, {nullptr, nullptr, nullptr, 0u},
-     {2u, k1_grid_axes, k1_grid_break_begin, k1_grid_breaks}, k1_cell_block, 8484u, 0.09981884057971015},
+     {2u, k1_grid_axes, k1_grid_break_begin, k1_grid_breaks}, k1_cell_block, 8484u, 0.09981884057971015, {0u, 0u, nullptr, nullptr, nullptr, nullptr, nullptr}},
 };
 
 const oasis::rt::CatalogView kCatalog = {

@@ -144,7 +144,8 @@ void BM_RobustDiscrete(benchmark::State& state) {
                      {0, nullptr, nullptr, nullptr},
                      nullptr,
                      0,
-                     0.0};
+                     0.0,
+                     {}};
   abstractions[1] = {"object_at_s1",
                      2,
                      a1_block_of,
@@ -157,7 +158,8 @@ void BM_RobustDiscrete(benchmark::State& state) {
                      {0, nullptr, nullptr, nullptr},
                      nullptr,
                      0,
-                     0.0};
+                     0.0,
+                     {}};
   CatalogView view;
   view.name = "discrete_tracking";
   view.compiler_version = "bench";

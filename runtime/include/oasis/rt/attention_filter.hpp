@@ -31,6 +31,7 @@
 #include <cstdint>
 #include <limits>
 
+#include "oasis/rt/bsp_locator.hpp"
 #include "oasis/rt/catalog_view.hpp"
 #include "oasis/rt/grid_locator.hpp"
 
@@ -252,9 +253,10 @@ class AttentionFilter {
   }
 
   /// Continuous catalogs: start() with the initial state vector (`size` doubles, at least
-  /// state_dimension). Maps it to its block in every abstraction (rt::locate_cell; a state
-  /// outside an abstraction's domain is in its outside block). Returns kBadState on a
-  /// discrete catalog or a short vector, changing nothing. O(N sum_i log cells_i).
+  /// state_dimension). Maps it to its block in every abstraction (rt::locate_partition_cell; a
+  /// state outside an abstraction's domain is in its outside block). Returns kBadState on a
+  /// discrete catalog or a short vector, changing nothing. O(N sum_i log cells_i) on grids, O(N
+  /// depth d) on polytope cells.
   StepStatus start(const double* state, std::size_t size) noexcept {
     if (!ok()) return StepStatus::kNotReady;
     if (!catalog_->is_continuous() || state == nullptr || size < catalog_->state_dimension)
@@ -377,7 +379,7 @@ class AttentionFilter {
   void locate(const double* state, std::size_t size) noexcept {
     for (std::uint32_t i = 0; i < catalog_->num_abstractions; ++i) {
       const AbstractionView& abs = catalog_->abstractions[i];
-      const std::uint32_t cell = locate_cell(abs.grid, state, size);
+      const std::uint32_t cell = locate_partition_cell(abs.grid, abs.bsp, state, size);
       located_[i] = cell == kOutsideCell ? abs.outside_block : abs.cell_block[cell];
     }
   }

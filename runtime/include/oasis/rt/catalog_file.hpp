@@ -284,13 +284,32 @@ class LoadedCatalog {
     if (!ok_) return;
     if (!validate_grid(a.grid, view_.state_dimension))
       return static_cast<void>(fail("malformed grid in abstraction " + std::to_string(i)));
-    a.cell_block = array<std::uint32_t>(Section::kCellBlock, i, grid_cells(a.grid), "cell blocks");
+    if (count_of(Section::kBspCounts, i) != 0 && !parse_bsp(i, a)) return;
+    a.cell_block = array<std::uint32_t>(Section::kCellBlock, i, partition_cells(a), "cell blocks");
     const std::uint32_t* outside =
         array<std::uint32_t>(Section::kOutsideBlock, i, 1, "outside block");
     const double* epsilon = array<double>(Section::kEpsilon, i, 1, "epsilon", true);
     if (!ok_) return;
     a.outside_block = *outside;
     a.epsilon = epsilon == nullptr ? 0.0 : *epsilon;
+  }
+
+  // A polytope abstraction's BSP (its counts first, then arrays of those sizes); its shape is
+  // checked by validate() with the rest of the view.
+  bool parse_bsp(std::uint32_t i, AbstractionView& a) {
+    const std::uint32_t* counts = array<std::uint32_t>(Section::kBspCounts, i, 2, "BSP counts");
+    if (!ok_) return false;
+    const std::uint64_t nodes = counts[0];
+    if (nodes == 0 || counts[1] == 0)
+      return fail("an empty BSP in abstraction " + std::to_string(i));
+    a.bsp.num_nodes = counts[0];
+    a.bsp.num_cells = counts[1];
+    a.bsp.normal = array<double>(Section::kBspNormal, i, nodes * a.grid.dimension, "BSP normals");
+    a.bsp.bound = array<double>(Section::kBspBound, i, nodes, "BSP bounds");
+    a.bsp.below = array<std::uint32_t>(Section::kBspBelow, i, nodes, "BSP below");
+    a.bsp.above = array<std::uint32_t>(Section::kBspAbove, i, nodes, "BSP above");
+    a.bsp.cell = array<std::uint32_t>(Section::kBspCell, i, nodes, "BSP cells");
+    return ok_;
   }
 
   // A CSR relation: its rows, targets and probabilities. Absent (all three sections missing

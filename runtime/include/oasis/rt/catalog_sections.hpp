@@ -80,13 +80,22 @@ enum class Section : std::uint32_t {
   kCellBlock = kRequiredSection | 35,       ///< u32 [cells]
   kOutsideBlock = kRequiredSection | 36,    ///< u32 [1]
   kEpsilon = 37,                            ///< f64 [1]; optional (informational)
+  // Polytope cells (bsp_locator.hpp), per abstraction, present only in such abstractions:
+  kBspCounts = kRequiredSection | 38,  ///< u32 [2]: num_nodes, num_cells
+  kBspNormal = kRequiredSection | 39,  ///< f64 [num_nodes * d]
+  kBspBound = kRequiredSection | 40,   ///< f64 [num_nodes]
+  kBspBelow = kRequiredSection | 41,   ///< u32 [num_nodes]
+  kBspAbove = kRequiredSection | 42,   ///< u32 [num_nodes]
+  kBspCell = kRequiredSection | 43,    ///< u32 [num_nodes]
 };
 
 /// Every section this runtime understands beyond the format-1 ones.
-inline constexpr Section kContinuousSections[] = {Section::kStateDimension, Section::kGridAxes,
-                                                  Section::kGridBreakBegin, Section::kGridBreaks,
-                                                  Section::kCellBlock,      Section::kOutsideBlock,
-                                                  Section::kEpsilon};
+inline constexpr Section kContinuousSections[] = {
+    Section::kStateDimension, Section::kGridAxes,  Section::kGridBreakBegin,
+    Section::kGridBreaks,     Section::kCellBlock, Section::kOutsideBlock,
+    Section::kEpsilon,        Section::kBspCounts, Section::kBspNormal,
+    Section::kBspBound,       Section::kBspBelow,  Section::kBspAbove,
+    Section::kBspCell};
 
 /// The catalog-wide sections of a format-1 file, in table order.
 inline constexpr Section kFormat1CatalogOrder[] = {Section::kNameText, Section::kStringOffsets,

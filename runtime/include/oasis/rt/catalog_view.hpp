@@ -29,6 +29,7 @@
 #include <cstdint>
 #include <string>
 
+#include "oasis/rt/bsp_locator.hpp"
 #include "oasis/rt/grid_locator.hpp"
 
 namespace oasis::rt {
@@ -122,7 +123,18 @@ struct AbstractionView {
   /// The sound bound on the error of this abstraction's transition rows (0: an exact
   /// bisimulation), as the compiler computed it; informational for the filter.
   double epsilon = 0.0;
+
+  /// Polytope cells (bsp_locator.hpp): a BSP over the relevant variables inside the grid's
+  /// domain box, which then has a single cell; the BSP's leaves are the cells of cell_block.
+  /// Empty (num_nodes 0) for gridded abstractions.
+  BspView bsp;
 };
+
+/// The cells of a continuous abstraction (the length of cell_block): its BSP's leaves, or
+/// its grid's cells.
+inline std::uint64_t partition_cells(const AbstractionView& abs) noexcept {
+  return abs.bsp.num_nodes != 0 ? abs.bsp.num_cells : grid_cells(abs.grid);
+}
 
 /// How an observed state relates to the true state, for the robust joint filter.
 enum class ObservationKind : std::uint32_t {
@@ -419,8 +431,8 @@ inline bool validate_policy(const AbstractionView& abs, std::uint32_t num_action
   return true;
 }
 
-// A continuous abstraction: a valid grid over the state vector, every cell's block in range,
-// every block holding a cell or being the outside block.
+// A continuous abstraction: a valid grid (and BSP) over the state vector, every cell's block in
+// range, every block holding a cell or being the outside block.
 inline bool validate_cells(const CatalogView& catalog, const AbstractionView& abs,
                            const std::string& where, std::string* why) {
   if (abs.block_of != nullptr) return fail(why, where + ": block_of in a continuous catalog");
@@ -430,7 +442,14 @@ inline bool validate_cells(const CatalogView& catalog, const AbstractionView& ab
   if (abs.outside_block >= abs.num_blocks) return fail(why, where + ": outside_block out of range");
   if (!std::isfinite(abs.epsilon) || abs.epsilon < 0)
     return fail(why, where + ": epsilon not a finite bound");
-  const std::uint64_t cells = grid_cells(abs.grid);
+  const std::uint64_t cells = partition_cells(abs);
+  if (abs.bsp.num_nodes != 0) {
+    std::string scratch(abs.bsp.num_cells, '\0');
+    if (grid_cells(abs.grid) != 1 ||
+        !validate_bsp(abs.bsp, abs.grid.dimension,
+                      reinterpret_cast<unsigned char*>(scratch.data())))
+      return fail(why, where + ": malformed BSP");
+  }
   if (abs.num_blocks > cells + 1) return fail(why, where + ": more blocks than cells");
   std::string seen(abs.num_blocks, '\0');
   seen[abs.outside_block] = '\1';
@@ -457,7 +476,7 @@ inline bool validate_abstraction(const CatalogView& catalog, std::uint32_t i, st
     if (abs.num_blocks > catalog.num_states) return fail(why, where + ": more blocks than states");
     if (abs.block_of == nullptr) return fail(why, where + ": a required array is null");
     if (!validate_blocks(abs, catalog.num_states, where, why)) return false;
-    if (abs.grid.dimension != 0 || abs.cell_block != nullptr)
+    if (abs.grid.dimension != 0 || abs.cell_block != nullptr || abs.bsp.num_nodes != 0)
       return fail(why, where + ": a grid in a discrete catalog");
   }
   if (!validate_numbers(abs, catalog.num_actions, where, why)) return false;

@@ -1,0 +1,391 @@
+#include "verify/polytope_cells_check.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <random>
+#include <vector>
+
+#include "oasis/rt/bsp_locator.hpp"
+#include "spec/affine.hpp"
+
+namespace oasis::verify {
+namespace {
+
+using Problem = std::optional<std::string>;
+using Point2 = std::pair<double, double>;
+
+std::string number(double value) {
+  char text[40];
+  std::snprintf(text, sizeof text, "%.10g", value);
+  return text;
+}
+
+// a.x <= c over the abstraction's axes, with the side a cell lies on: `below` keeps
+// a.x <= c, otherwise a.x > c (the boundary rule).
+struct PathStep {
+  std::vector<double> normal;
+  double bound = 0;
+  bool below = true;
+};
+
+// Every cell's path from the root, by walking the BSP's arrays.
+std::vector<std::vector<PathStep>> cell_paths(const rt::AbstractionView& abs) {
+  const rt::BspView& bsp = abs.bsp;
+  const std::uint32_t d = abs.grid.dimension;
+  std::vector<std::vector<PathStep>> paths(bsp.num_cells);
+  std::vector<std::pair<std::uint32_t, std::vector<PathStep>>> stack{{0, {}}};
+  while (!stack.empty()) {
+    auto [node, path] = std::move(stack.back());
+    stack.pop_back();
+    if (bsp.cell[node] != rt::kInternalNode) {
+      paths[bsp.cell[node]] = std::move(path);
+      continue;
+    }
+    PathStep step{std::vector<double>(bsp.normal + std::size_t{node} * d,
+                                      bsp.normal + std::size_t{node} * d + d),
+                  bsp.bound[node], true};
+    std::vector<PathStep> above = path;
+    above.push_back(step);
+    above.back().below = false;
+    path.push_back(std::move(step));
+    stack.emplace_back(bsp.below[node], std::move(path));
+    stack.emplace_back(bsp.above[node], std::move(above));
+  }
+  return paths;
+}
+
+double dot(const std::vector<double>& a, const double* x) {
+  double sum = 0;
+  for (std::size_t i = 0; i < a.size(); ++i)
+    sum += a[i] * x[i];
+  return sum;
+}
+
+bool on_path(const std::vector<PathStep>& path, const double* x) {
+  for (const PathStep& step : path)
+    if ((dot(step.normal, x) <= step.bound) != step.below) return false;
+  return true;
+}
+
+// ---- one and two dimensions: cells as polygons -------------------------------------------
+
+// Sutherland-Hodgman: the part of a convex polygon with a.x <= c (a 1-D cell is a polygon
+// with y in [0, 1], so one routine serves both).
+std::vector<Point2> clip(const std::vector<Point2>& polygon, double ax, double ay, double c) {
+  std::vector<Point2> out;
+  for (std::size_t k = 0; k < polygon.size(); ++k) {
+    const Point2& p = polygon[k];
+    const Point2& q = polygon[(k + 1) % polygon.size()];
+    const double fp = ax * p.first + ay * p.second - c;
+    const double fq = ax * q.first + ay * q.second - c;
+    if (fp <= 0) out.push_back(p);
+    if ((fp < 0 && fq > 0) || (fp > 0 && fq < 0)) {
+      const double t = fp / (fp - fq);
+      out.emplace_back(p.first + t * (q.first - p.first), p.second + t * (q.second - p.second));
+    }
+  }
+  return out;
+}
+
+double area(const std::vector<Point2>& polygon) {
+  double twice = 0;
+  for (std::size_t k = 0; k < polygon.size(); ++k) {
+    const Point2& p = polygon[k];
+    const Point2& q = polygon[(k + 1) % polygon.size()];
+    twice += p.first * q.second - q.first * p.second;
+  }
+  return std::fabs(twice) / 2;
+}
+
+std::vector<Point2> rectangle(double x0, double x1, double y0, double y1) {
+  return {{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}};
+}
+
+// The closure of a cell: the domain clipped by its path (strict sides taken as closed).
+std::vector<Point2> cell_polygon(const std::vector<Point2>& domain,
+                                 const std::vector<PathStep>& path) {
+  std::vector<Point2> polygon = domain;
+  for (const PathStep& step : path) {
+    const double sign = step.below ? 1 : -1;
+    const double ay = step.normal.size() > 1 ? step.normal[1] : 0;
+    polygon = clip(polygon, sign * step.normal[0], sign * ay, sign * step.bound);
+    if (polygon.empty()) break;
+  }
+  return polygon;
+}
+
+struct PlanarCells {
+  std::vector<Point2> domain;
+  std::vector<std::vector<Point2>> cells;
+};
+
+PlanarCells planar_cells(const model::ModelIR& ir, const rt::AbstractionView& abs,
+                         const std::vector<std::vector<PathStep>>& paths) {
+  PlanarCells planar;
+  const auto& x = ir.continuous[abs.grid.axes[0]];
+  const bool two_d = abs.grid.dimension == 2;
+  const double y0 = two_d ? to_double(ir.continuous[abs.grid.axes[1]].low) : 0;
+  const double y1 = two_d ? to_double(ir.continuous[abs.grid.axes[1]].high) : 1;
+  planar.domain = rectangle(to_double(x.low), to_double(x.high), y0, y1);
+  for (const auto& path : paths)
+    planar.cells.push_back(cell_polygon(planar.domain, path));
+  return planar;
+}
+
+Problem check_areas(const PlanarCells& planar) {
+  const double total = area(planar.domain);
+  double sum = 0;
+  for (std::size_t c = 0; c < planar.cells.size(); ++c) {
+    const double a = area(planar.cells[c]);
+    if (!(a > 1e-12 * total)) return "cell " + std::to_string(c) + " is empty or flat";
+    sum += a;
+  }
+  if (std::fabs(sum - total) > 1e-9 * total)
+    return "the cells' areas sum to " + number(sum) + ", the domain's is " + number(total);
+  return std::nullopt;
+}
+
+// The reward of a cell from the spec: each condition holds on all of it or on none of it
+// (up to a face); nullopt when one cuts through it.
+std::optional<double> planar_reward(const model::ModelIR& ir, std::size_t context,
+                                    const rt::AbstractionView& abs,
+                                    const std::vector<Point2>& polygon) {
+  double total = 0;
+  for (const model::Reward& reward : ir.contexts[context].rewards) {
+    const auto constraints =
+        spec::polyhedral_constraints(reward.guard, ir.continuous.size(), ir.regions);
+    if (!constraints) return std::nullopt;
+    bool all = true;
+    bool none = false;
+    for (const model::LinearConstraint& constraint : *constraints) {
+      double low = HUGE_VAL;
+      double high = -HUGE_VAL;
+      for (const Point2& corner : polygon) {
+        double value = to_double(constraint.coefficients[abs.grid.axes[0]]) * corner.first;
+        if (abs.grid.dimension == 2)
+          value += to_double(constraint.coefficients[abs.grid.axes[1]]) * corner.second;
+        low = std::min(low, value);
+        high = std::max(high, value);
+      }
+      const double bound = to_double(constraint.bound);
+      const double slack = 1e-9 * std::max(1.0, std::fabs(bound));
+      if (low > bound - slack) none = true;
+      if (high > bound + slack) all = false;
+    }
+    if (none) continue;
+    if (!all) return std::nullopt;
+    total += to_double(reward.value.constant);
+  }
+  return total;
+}
+
+Problem check_planar_rewards(const model::ModelIR& ir, std::size_t context,
+                             const rt::AbstractionView& abs, const PlanarCells& planar) {
+  for (std::size_t c = 0; c < planar.cells.size(); ++c) {
+    const std::optional<double> reward = planar_reward(ir, context, abs, planar.cells[c]);
+    if (!reward) return "a reward condition cuts through cell " + std::to_string(c);
+    const double carried = abs.block_reward[abs.cell_block[c]];
+    if (std::fabs(carried - *reward) > 1e-12 * std::max(1.0, std::fabs(*reward)))
+      return "cell " + std::to_string(c) + " has reward " + number(*reward) + " but its block " +
+             std::to_string(abs.cell_block[c]) + " says " + number(carried);
+  }
+  return std::nullopt;
+}
+
+// The successor distribution over blocks from `x` under action a: uniform on the box
+// M x + t + W (every relevant axis disturbed), its area in each cell, the rest outside.
+std::optional<std::vector<double>> planar_successor_blocks(const model::ModelIR& ir,
+                                                           std::size_t context, std::size_t a,
+                                                           const rt::AbstractionView& abs,
+                                                           const PlanarCells& planar,
+                                                           const Point2& x) {
+  const model::AffineDynamics& dynamics = *ir.contexts[context].dynamics[a];
+  const std::uint32_t d = abs.grid.dimension;
+  double low[2] = {0, 0};
+  double high[2] = {1, 1};
+  const double at[2] = {x.first, x.second};
+  for (std::uint32_t i = 0; i < d; ++i) {
+    const std::uint32_t v = abs.grid.axes[i];
+    const model::DisturbanceModel& w = dynamics.disturbance[v];
+    if (w.kind != model::DisturbanceModel::Kind::Bounded || !(w.first < w.second))
+      return std::nullopt;  // a point on some axis: not checked here
+    double mean = to_double(dynamics.offset[v]);
+    for (std::uint32_t j = 0; j < d; ++j)
+      mean += to_double(dynamics.matrix[v][abs.grid.axes[j]]) * at[j];
+    low[i] = mean + to_double(w.first);
+    high[i] = mean + to_double(w.second);
+  }
+  const std::vector<Point2> box = rectangle(low[0], high[0], low[1], high[1]);
+  const double box_area = area(box);
+  std::vector<double> by_block(abs.num_blocks, 0);
+  double inside = 0;
+  for (std::size_t c = 0; c < planar.cells.size(); ++c) {
+    std::vector<Point2> part = box;
+    const std::vector<Point2>& cell = planar.cells[c];
+    // Clip the box by every edge of the (convex) cell polygon.
+    double orientation = 0;
+    for (std::size_t k = 0; k < cell.size(); ++k) {
+      const Point2& p = cell[k];
+      const Point2& q = cell[(k + 1) % cell.size()];
+      orientation += p.first * q.second - q.first * p.second;
+    }
+    for (std::size_t k = 0; k < cell.size() && !part.empty(); ++k) {
+      const Point2& p = cell[k];
+      const Point2& q = cell[(k + 1) % cell.size()];
+      // Inside is on the left of p->q for a counter-clockwise polygon.
+      double ax = q.second - p.second;
+      double ay = p.first - q.first;
+      if (orientation < 0) {
+        ax = -ax;
+        ay = -ay;
+      }
+      part = clip(part, ax, ay, ax * p.first + ay * p.second);
+    }
+    const double mass = part.size() >= 3 ? area(part) / box_area : 0;
+    by_block[abs.cell_block[c]] += mass;
+    inside += mass;
+  }
+  by_block[abs.outside_block] += std::max(0.0, 1 - inside);
+  return by_block;
+}
+
+Problem check_planar_rows(const model::ModelIR& ir, std::size_t context,
+                          const rt::AbstractionView& abs, const PlanarCells& planar,
+                          std::uint32_t actions, std::size_t& checked) {
+  const std::size_t cells = planar.cells.size();
+  const std::size_t stride = std::max<std::size_t>(1, cells / 24);
+  for (std::size_t c = 0; c < cells; c += stride) {
+    const std::vector<Point2>& polygon = planar.cells[c];
+    Point2 centroid{0, 0};
+    for (const Point2& corner : polygon) {
+      centroid.first += corner.first / static_cast<double>(polygon.size());
+      centroid.second += corner.second / static_cast<double>(polygon.size());
+    }
+    // Points a hair inside the corners (a corner itself may lie on a face whose image the
+    // rest of the cell only touches: a set of measure zero, docs/geometry.md), and the centroid.
+    std::vector<Point2> points{centroid};
+    for (const Point2& corner : polygon)
+      points.emplace_back(corner.first + 1e-7 * (centroid.first - corner.first),
+                          corner.second + 1e-7 * (centroid.second - corner.second));
+    const std::uint32_t block = abs.cell_block[c];
+    for (const Point2& x : points) {
+      for (std::uint32_t a = 0; a < actions; ++a) {
+        auto p = planar_successor_blocks(ir, context, a, abs, planar, x);
+        if (!p) continue;
+        const std::size_t row = std::size_t{block} * actions + a;
+        for (auto e = abs.quotient.choice_begin[row]; e < abs.quotient.choice_begin[row + 1]; ++e)
+          (*p)[abs.quotient.target[e]] -= abs.quotient.probability[e];
+        double variation = 0;
+        for (const double difference : *p)
+          variation += std::fabs(difference);
+        variation /= 2;
+        ++checked;
+        if (variation > abs.epsilon + 1e-7)
+          return "cell " + std::to_string(c) + " under " + ir.actions[a] +
+                 ": from one of its points the successor distribution differs from the "
+                 "catalog's row by " +
+                 number(variation) + " in total variation, more than epsilon " +
+                 number(abs.epsilon);
+      }
+    }
+  }
+  return std::nullopt;
+}
+
+// ---- any dimension ------------------------------------------------------------------------
+
+std::vector<double> random_point(const model::ModelIR& ir, std::mt19937_64& random, double margin) {
+  std::vector<double> point(ir.continuous.size());
+  for (std::size_t v = 0; v < point.size(); ++v) {
+    const double low = to_double(ir.continuous[v].low);
+    const double high = to_double(ir.continuous[v].high);
+    point[v] = std::uniform_real_distribution<double>(low - margin * (high - low),
+                                                      high + margin * (high - low))(random);
+  }
+  return point;
+}
+
+bool in_domain(const model::ModelIR& ir, const rt::AbstractionView& abs, const double* x) {
+  for (std::uint32_t i = 0; i < abs.grid.dimension; ++i) {
+    const auto& v = ir.continuous[abs.grid.axes[i]];
+    if (!(x[i] >= to_double(v.low) && x[i] <= to_double(v.high))) return false;
+  }
+  return true;
+}
+
+// The locator against plain membership, and (in any dimension) the reward at every point
+// against its cell's block.
+Problem check_points(const model::ModelIR& ir, std::size_t context, const rt::AbstractionView& abs,
+                     const std::vector<std::vector<PathStep>>& paths, std::size_t& points) {
+  std::mt19937_64 random(7);
+  std::size_t work = 0;
+  for (const auto& path : paths)
+    work += path.size() + 1;
+  points = std::clamp<std::size_t>(20'000'000 / std::max<std::size_t>(1, work), 500, 20'000);
+  std::vector<double> relevant(abs.grid.dimension);
+  for (std::size_t k = 0; k < points; ++k) {
+    const std::vector<double> point = random_point(ir, random, 0.05);
+    for (std::uint32_t i = 0; i < abs.grid.dimension; ++i)
+      relevant[i] = point[abs.grid.axes[i]];
+    std::uint32_t member = rt::kOutsideCell;
+    if (in_domain(ir, abs, relevant.data())) {
+      for (std::uint32_t c = 0; c < paths.size(); ++c) {
+        if (!on_path(paths[c], relevant.data())) continue;
+        if (member != rt::kOutsideCell) return "a point lies in two cells";
+        member = c;
+      }
+      if (member == rt::kOutsideCell) return "a point of the domain lies in no cell";
+    }
+    if (rt::locate_partition_cell(abs.grid, abs.bsp, point.data(), point.size()) != member)
+      return "the locator and plain membership disagree at a point";
+    if (member == rt::kOutsideCell) continue;
+    double reward = 0;
+    for (const model::Reward& r : ir.contexts[context].rewards) {
+      const auto constraints =
+          spec::polyhedral_constraints(r.guard, ir.continuous.size(), ir.regions);
+      bool holds = constraints.has_value();
+      for (const model::LinearConstraint& constraint :
+           constraints.value_or(std::vector<model::LinearConstraint>{})) {
+        double value = 0;
+        for (std::size_t v = 0; v < point.size(); ++v)
+          value += to_double(constraint.coefficients[v]) * point[v];
+        holds = holds && value <= to_double(constraint.bound);
+      }
+      if (holds) reward += to_double(r.value.constant);
+    }
+    if (reward != abs.block_reward[abs.cell_block[member]])
+      return "at a point of cell " + std::to_string(member) + " the spec's reward is " +
+             number(reward) + ", its block's " + number(abs.block_reward[abs.cell_block[member]]);
+  }
+  return std::nullopt;
+}
+
+}  // namespace
+
+PolytopeCellsVerdict check_polytope_cells(const model::ModelIR& ir, std::size_t context,
+                                          const rt::AbstractionView& abs, std::uint32_t actions,
+                                          bool with_rows) {
+  PolytopeCellsVerdict verdict;
+  const std::vector<std::vector<PathStep>> paths = cell_paths(abs);
+  std::size_t points = 0;
+  verdict.problem = check_points(ir, context, abs, paths, points);
+  if (verdict.problem) return verdict;
+  verdict.summary = std::to_string(paths.size()) + " polytope cells; locator and rewards at " +
+                    std::to_string(points) + " points ok";
+  if (abs.grid.dimension > 2) return verdict;
+  const PlanarCells planar = planar_cells(ir, abs, paths);
+  verdict.problem = check_areas(planar);
+  if (!verdict.problem) verdict.problem = check_planar_rewards(ir, context, abs, planar);
+  if (verdict.problem) return verdict;
+  verdict.summary += "; cells non-empty, areas summing to the domain's, rewards constant per cell";
+  if (!with_rows) return verdict;
+  std::size_t checked = 0;
+  verdict.problem = check_planar_rows(ir, context, abs, planar, actions, checked);
+  if (!verdict.problem)
+    verdict.summary +=
+        "; " + std::to_string(checked) + " sampled rows within epsilon " + number(abs.epsilon);
+  return verdict;
+}
+
+}  // namespace oasis::verify

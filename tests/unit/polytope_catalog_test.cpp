@@ -1,0 +1,160 @@
+// The polytope path through the whole compile: a spec the grid refuses (a triangular reward,
+// a drift that mixes the axes) becomes a catalog with a BSP; the binary file round-trips it,
+// the runtime's locator agrees with the compiler's exact location, the JSON cells contain
+// their points, and `verify` passes an untouched catalog and catches each changed item.
+
+#include <functional>
+#include <random>
+#include <string>
+#include <utility>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "../support/spec_models.hpp"
+#include "codegen/binary_catalog.hpp"
+#include "codegen/continuous_json.hpp"
+#include "oasis/rt/attention_filter.hpp"
+#include "oasis/rt/catalog_file.hpp"
+#include "pipeline/continuous_catalog.hpp"
+#include "pipeline/continuous_catalog_data.hpp"
+#include "verify/continuous_check.hpp"
+
+namespace oasis {
+namespace {
+
+const model::ModelIR& triangle_ir() {
+  static const model::ModelIR ir =
+      test::load_spec_ir(std::string(OASIS_SOURCE_DIR) + "/tests/data/triangle_reward.oasis");
+  return ir;
+}
+
+const pipeline::ContinuousCatalog& triangle_catalog() {
+  static const pipeline::ContinuousCatalog catalog = [] {
+    pipeline::ContinuousCatalogOptions options;
+    options.abstraction.epsilon = 0.3;
+    std::string error;
+    auto built = pipeline::build_continuous_catalog(triangle_ir(), 11, options, error);
+    EXPECT_TRUE(built) << error;
+    return std::move(*built);
+  }();
+  return catalog;
+}
+
+std::string first_failure(const pipeline::CatalogData& catalog) {
+  const std::string bytes = codegen::binary_catalog(catalog);
+  const rt::LoadedCatalog loaded = rt::LoadedCatalog::from_bytes(bytes.data(), bytes.size());
+  if (!loaded.ok()) return "the changed catalog no longer loads: " + loaded.error();
+  for (const verify::CatalogCheck& check :
+       verify::check_continuous_catalog(triangle_ir(), loaded.view()))
+    if (!check.ok) return check.item + ": " + check.verdict;
+  return "";
+}
+
+TEST(PolytopeCatalog, TheGridRefusesTheSpecAndThePolytopePathTakesIt) {
+  const pipeline::ContinuousCatalog& catalog = triangle_catalog();
+  ASSERT_EQ(catalog.abstractions.size(), 2U);
+  for (const pipeline::ContinuousAbstraction& abstraction : catalog.abstractions) {
+    ASSERT_TRUE(abstraction.bsp);
+    EXPECT_TRUE(abstraction.met);
+    EXPECT_LE(abstraction.epsilon, Rational(3, 10));
+    EXPECT_EQ(abstraction.grid.num_cells(), 1U);  // the domain box
+    EXPECT_GT(abstraction.num_cells(), 10U);
+    EXPECT_EQ(abstraction.cell_block.size(), abstraction.num_cells());
+  }
+}
+
+TEST(PolytopeCatalog, LoadedLocatorAgreesWithExactLocation) {
+  const pipeline::ContinuousCatalog& catalog = triangle_catalog();
+  const pipeline::CatalogData data = pipeline::continuous_catalog_data(catalog, false);
+  const std::string bytes = codegen::binary_catalog(data);
+  const rt::LoadedCatalog loaded = rt::LoadedCatalog::from_bytes(bytes.data(), bytes.size());
+  ASSERT_TRUE(loaded.ok()) << loaded.error();
+  std::mt19937_64 random(3);
+  std::uniform_real_distribution<double> coordinate(-0.2, 2.2);
+  for (std::uint32_t i = 0; i < 2; ++i) {
+    const rt::AbstractionView& abs = loaded.view().abstractions[i];
+    const geom::BspTree& tree = *catalog.abstractions[i].bsp;
+    for (int k = 0; k < 20000; ++k) {
+      const double x[2] = {coordinate(random), coordinate(random)};
+      const auto exact = tree.locate({Rational(x[0]), Rational(x[1])});
+      const std::uint32_t located = rt::locate_partition_cell(abs.grid, abs.bsp, x, 2);
+      ASSERT_EQ(located, exact ? static_cast<std::uint32_t>(*exact) : rt::kOutsideCell)
+          << "at (" << x[0] << ", " << x[1] << ")";
+    }
+  }
+  // The filter runs on it, block by block as located.
+  std::vector<double> workspace(rt::AttentionFilter::workspace_size(loaded.view(), {}));
+  rt::AttentionFilter filter(loaded.view(), {}, workspace.data(), workspace.size());
+  ASSERT_TRUE(filter.ok());
+  const double start[2] = {0.5, 0.3};
+  EXPECT_EQ(filter.start(start, 2), rt::StepStatus::kOk);
+  EXPECT_NE(filter.action(), rt::kNoAction);
+}
+
+TEST(PolytopeCatalog, JsonCellsHoldTheirRepresentativePoints) {
+  const pipeline::ContinuousCatalog& catalog = triangle_catalog();
+  const nlohmann::json json =
+      nlohmann::json::parse(codegen::continuous_catalog_json(catalog, false));
+  const auto& abstraction = json["abstractions"][0];
+  const geom::BspTree& tree = *catalog.abstractions[0].bsp;
+  ASSERT_EQ(abstraction["cells"].size(), tree.num_cells());
+  for (std::size_t c = 0; c < tree.num_cells(); ++c) {
+    const auto& cell = abstraction["cells"][c];
+    const geom::Point& point = tree.cells()[c].representative;
+    for (std::size_t r = 0; r < cell["A"].size(); ++r) {
+      const double lhs = cell["A"][r][0].get<double>() * to_double(point[0]) +
+                         cell["A"][r][1].get<double>() * to_double(point[1]);
+      EXPECT_LE(lhs, cell["b"][r].get<double>() + 1e-12) << "cell " << c << " row " << r;
+    }
+    EXPECT_EQ(cell["block"].get<std::uint32_t>(), catalog.abstractions[0].cell_block[c]);
+  }
+}
+
+TEST(PolytopeCatalog, VerifyPassesTheCatalogAndCatchesEveryChange) {
+  const pipeline::CatalogData sound = pipeline::continuous_catalog_data(triangle_catalog(), true);
+  EXPECT_EQ(first_failure(sound), "");
+  struct Change {
+    const char* name;
+    std::function<void(pipeline::CatalogData&)> apply;
+    const char* expected;
+  };
+  const std::vector<Change> changes = {
+      {"a rewarded cell in an unrewarded block",
+       [](auto& c) {
+         auto& a = c.abstractions[0];
+         std::size_t rewarded = 0;
+         while (a.block_reward[a.cell_block[rewarded]] == 0)
+           ++rewarded;
+         std::size_t plain = 0;
+         while (a.block_reward[a.cell_block[plain]] != 0)
+           ++plain;
+         std::swap(a.cell_block[rewarded], a.cell_block[plain]);
+       },
+       "reward"},
+      {"a splitting hyperplane moved", [](auto& c) { c.abstractions[0].bsp_bound[0] += 0.05; },
+       "reward"},
+      {"a row's probabilities",
+       [](auto& c) {
+         auto& abstraction = c.abstractions[1];
+         auto& q = abstraction.quotient;
+         for (auto e = q.choice_begin[0]; e < q.choice_begin[1]; ++e)
+           q.target[e] = (q.target[e] + abstraction.num_blocks / 2) % abstraction.num_blocks;
+       },
+       "total variation"},
+      {"an understated epsilon", [](auto& c) { c.abstractions[1].epsilon /= 10; },
+       "more than epsilon"},
+      {"the policy", [](auto& c) { c.abstractions[0].policy[3] = 1 - c.abstractions[0].policy[3]; },
+       "not optimal"},
+  };
+  for (const Change& change : changes) {
+    pipeline::CatalogData bad = sound;
+    change.apply(bad);
+    const std::string failure = first_failure(bad);
+    EXPECT_NE(failure, "") << change.name << " was not caught";
+    EXPECT_NE(failure.find(change.expected), std::string::npos) << change.name << ": " << failure;
+  }
+}
+
+}  // namespace
+}  // namespace oasis
