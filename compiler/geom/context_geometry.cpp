@@ -58,13 +58,12 @@ bool reward_box(const model::ModelIR& ir, const model::Reward& reward, const Rel
   return true;
 }
 
-bool axis_dynamics(const model::ModelIR& ir, const model::AffineDynamics& affine,
-                   const Relevance& relevance, const std::string& action, AxisDynamics& out,
-                   std::string& error) {
+void axis_dynamics(const model::AffineDynamics& affine, const Relevance& relevance,
+                   AxisDynamics& out) {
   const std::size_t d = relevance.relevant.size();
   out.matrix.assign(d, std::vector<Rational>(d));
   out.offset.assign(d, 0);
-  out.disturbance.assign(d, std::nullopt);
+  out.disturbance.assign(d, Disturbance{});
   for (std::size_t i = 0; i < d; ++i) {
     const std::uint32_t vi = relevance.relevant[i];
     for (std::size_t j = 0; j < d; ++j)
@@ -72,16 +71,17 @@ bool axis_dynamics(const model::ModelIR& ir, const model::AffineDynamics& affine
     out.offset[i] = affine.offset[vi];
     const model::DisturbanceModel& w = affine.disturbance[vi];
     using Kind = model::DisturbanceModel::Kind;
-    if (w.kind == Kind::Gaussian) {
-      error = "the disturbance of " + quoted(ir.continuous[vi].name) + " under " + quoted(action) +
-              " is Gaussian; this geometry path handles uniform boxes only";
-      return false;
+    Disturbance& axis = out.disturbance[i];
+    if (w.kind == Kind::Gaussian) {  // the checker ensures a positive deviation
+      axis.kind = Disturbance::Kind::Gaussian;
+      axis.gaussian = {w.first, w.second};
     }
-    if (w.kind == Kind::Bounded && w.first < w.second)
-      out.disturbance[i] = Interval{w.first, w.second};
+    if (w.kind == Kind::Bounded && w.first < w.second) {
+      axis.kind = Disturbance::Kind::Uniform;
+      axis.uniform = {w.first, w.second};
+    }
     if (w.kind == Kind::Bounded && w.first == w.second) out.offset[i] += w.first;  // a point
   }
-  return true;
 }
 
 // Axes without a disturbance get their cells from pre-images of intervals, which needs
@@ -89,7 +89,7 @@ bool axis_dynamics(const model::ModelIR& ir, const model::AffineDynamics& affine
 bool check_deterministic_axes(const ContextGeometry& geometry, std::string& error) {
   for (std::size_t i = 0; i < geometry.dimension(); ++i) {
     for (const AxisDynamics& action : geometry.actions) {
-      if (action.disturbance[i]) continue;
+      if (action.disturbance[i].present()) continue;
       for (std::size_t j = 0; j < geometry.dimension(); ++j) {
         const bool own = j == i;
         if (own ? sgn(action.matrix[i][j]) == 0 : sgn(action.matrix[i][j]) != 0) {
@@ -109,7 +109,7 @@ bool check_deterministic_axes(const ContextGeometry& geometry, std::string& erro
 
 bool ContextGeometry::deterministic(std::size_t axis) const {
   return std::none_of(actions.begin(), actions.end(),
-                      [&](const AxisDynamics& a) { return a.disturbance[axis].has_value(); });
+                      [&](const AxisDynamics& a) { return a.disturbance[axis].present(); });
 }
 
 std::optional<ContextGeometry> context_geometry(const model::ModelIR& ir, std::size_t context,
@@ -141,10 +141,7 @@ std::optional<ContextGeometry> context_geometry(const model::ModelIR& ir, std::s
       return std::nullopt;
     }
     AxisDynamics dynamics;
-    if (!axis_dynamics(ir, *source.dynamics[a], relevance, ir.actions[a], dynamics, error)) {
-      error = "context " + quoted(source.name) + ": " + error;
-      return std::nullopt;
-    }
+    axis_dynamics(*source.dynamics[a], relevance, dynamics);
     geometry.actions.push_back(std::move(dynamics));
   }
   if (!check_deterministic_axes(geometry, error)) {

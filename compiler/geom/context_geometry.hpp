@@ -5,7 +5,8 @@
 // need, checked once, in exact rationals.
 //
 // This first geometry path handles product structure: reward conditions that are boxes
-// (every inequality reads one variable) and uniform box disturbances or none. Variables
+// (every inequality reads one variable) and, per axis, a uniform or a Gaussian disturbance or
+// none. Variables
 // without a disturbance must move on their own axis (x' = a x + b, a != 0), so that the
 // pre-image of an interval is an interval. Anything else is refused with a sentence saying
 // what is not supported yet (general polytopes need the CGAL path).
@@ -33,12 +34,28 @@ struct RewardBox {
   Rational value;
 };
 
+// w ~ Normal(mean, deviation²), deviation > 0.
+struct Gaussian {
+  Rational mean;
+  Rational deviation;
+};
+
+// The disturbance w_i of one axis under one action: none (w_i = 0), uniform on an interval of
+// positive width, or Gaussian. Only the member its kind names is meaningful.
+struct Disturbance {
+  enum class Kind { None, Uniform, Gaussian };
+  Kind kind = Kind::None;
+  Interval uniform;
+  Gaussian gaussian;
+
+  [[nodiscard]] bool present() const { return kind != Kind::None; }
+};
+
 // x'_i = Σ_j matrix[i][j] x_j + offset[i] + w_i over the relevant axes.
 struct AxisDynamics {
   std::vector<std::vector<Rational>> matrix;
   std::vector<Rational> offset;
-  // Per relevant axis: w_i uniform on [low, high] (width > 0), or, when nullopt, w_i = 0.
-  std::vector<std::optional<Interval>> disturbance;
+  std::vector<Disturbance> disturbance;  // per relevant axis
 };
 
 struct ContextGeometry {

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <unordered_map>
 
+#include "geom/gaussian_axis.hpp"
+
 namespace oasis::geom {
 namespace {
 
@@ -22,30 +24,21 @@ class RowBuilder {
   void axis_row(const AxisDynamics& action, std::size_t i, const std::vector<Rational>& centre,
                 AxisRow& row) const {
     row.entries.clear();
-    Rational mean = action.offset[i];
+    // The image of the centre without its disturbance.
+    Rational image = action.offset[i];
     for (std::size_t j = 0; j < centre.size(); ++j)
-      if (sgn(action.matrix[i][j]) != 0) mean += action.matrix[i][j] * centre[j];
-    const auto& w = action.disturbance[i];
-    if (!w) {  // a point: one interval, or outside
-      const auto k = grid_.locate(i, mean);
-      row.inside = k ? 1 : 0;
-      if (k) row.entries.emplace_back(*k, RationalPool::kOne);
-      return;
-    }
-    const Rational low = mean + w->low;
-    const Rational high = mean + w->high;
-    const Rational width = w->high - w->low;
-    const std::vector<Rational>& t = grid_.breaks(i);
-    row.inside = 0;
-    // The first interval whose upper end is above `low`.
-    auto k = static_cast<std::size_t>(std::upper_bound(t.begin(), t.end(), low) - t.begin());
-    k = k == 0 ? 0 : k - 1;
-    for (; k + 1 < t.size() && t[k] < high; ++k) {
-      const Rational overlap = std::min(high, t[k + 1]) - std::max(low, t[k]);
-      if (sgn(overlap) <= 0) continue;
-      const Rational p = overlap / width;
-      row.inside += p;
-      row.entries.emplace_back(static_cast<std::uint32_t>(k), values_.intern(p));
+      if (sgn(action.matrix[i][j]) != 0) image += action.matrix[i][j] * centre[j];
+    const Disturbance& w = action.disturbance[i];
+    switch (w.kind) {
+      case Disturbance::Kind::None:
+        point_row(i, image, row);
+        return;
+      case Disturbance::Kind::Uniform:
+        uniform_row(i, image, w.uniform, row);
+        return;
+      case Disturbance::Kind::Gaussian:
+        gaussian_row(i, image, w.gaussian, row);
+        return;
     }
   }
 
@@ -60,6 +53,43 @@ class RowBuilder {
   }
 
  private:
+  // A point: one interval, or outside.
+  void point_row(std::size_t i, const Rational& point, AxisRow& row) const {
+    const auto k = grid_.locate(i, point);
+    row.inside = k ? 1 : 0;
+    if (k) row.entries.emplace_back(*k, RationalPool::kOne);
+  }
+
+  // Uniform on image + [low, high]: each interval's share of the overlap, exactly.
+  void uniform_row(std::size_t i, const Rational& image, const Interval& w, AxisRow& row) const {
+    const Rational low = image + w.low;
+    const Rational high = image + w.high;
+    const Rational width = w.high - w.low;
+    const std::vector<Rational>& t = grid_.breaks(i);
+    row.inside = 0;
+    // The first interval whose upper end is above `low`.
+    auto k = static_cast<std::size_t>(std::upper_bound(t.begin(), t.end(), low) - t.begin());
+    k = k == 0 ? 0 : k - 1;
+    for (; k + 1 < t.size() && t[k] < high; ++k) {
+      const Rational overlap = std::min(high, t[k + 1]) - std::max(low, t[k]);
+      if (sgn(overlap) <= 0) continue;
+      const Rational p = overlap / width;
+      row.inside += p;
+      row.entries.emplace_back(static_cast<std::uint32_t>(k), values_.intern(p));
+    }
+  }
+
+  // Normal(image + w.mean, w.deviation²): the intervals under its truncated support, to the
+  // tolerance of geom/gaussian_axis.hpp, which the context's epsilon includes.
+  void gaussian_row(std::size_t i, const Rational& image, const Gaussian& w, AxisRow& row) const {
+    row.inside = 0;
+    const Rational mean = image + w.mean;
+    for (auto& [k, p] : gaussian_interval_probabilities(mean, w.deviation, grid_.breaks(i))) {
+      row.inside += p;
+      row.entries.emplace_back(k, values_.intern(p));
+    }
+  }
+
   const ContextGeometry& geometry_;
   const Grid& grid_;
   RationalPool& values_;

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <set>
 
+#include "geom/gaussian_axis.hpp"
 #include "support/text.hpp"
 
 namespace oasis::geom {
@@ -29,15 +30,22 @@ Breaks mandatory_breaks(const ContextGeometry& geometry) {
 
 bool stochastic_somewhere(const ContextGeometry& geometry, std::size_t axis) {
   return std::any_of(geometry.actions.begin(), geometry.actions.end(),
-                     [&](const AxisDynamics& a) { return a.disturbance[axis].has_value(); });
+                     [&](const AxisDynamics& a) { return a.disturbance[axis].present(); });
+}
+
+// The length over which a disturbance spreads a unit of probability: its width when uniform,
+// s·√(2π) when Gaussian, so that a shift δ costs at most |δ| / unit in total variation.
+double spread_unit(const Disturbance& w) {
+  if (w.kind == Disturbance::Kind::Uniform) return to_double(w.uniform.high - w.uniform.low);
+  return to_double(w.gaussian.deviation) * to_double(sqrt_two_pi_below());
 }
 
 // The narrowest disturbance on an axis: the unit its cells are measured in.
-double narrowest_width(const ContextGeometry& geometry, std::size_t axis) {
+double narrowest_unit(const ContextGeometry& geometry, std::size_t axis) {
   double narrowest = HUGE_VAL;
   for (const AxisDynamics& action : geometry.actions) {
-    if (const auto& w = action.disturbance[axis])
-      narrowest = std::min(narrowest, to_double(w->high - w->low));
+    if (action.disturbance[axis].present())
+      narrowest = std::min(narrowest, spread_unit(action.disturbance[axis]));
   }
   return narrowest;
 }
@@ -77,11 +85,21 @@ std::vector<Rational> widest_half_widths(const Breaks& breaks) {
   return half;
 }
 
+// What computing Gaussian rows in floating point may cost under `action`: each axis's
+// tolerance (geom/gaussian_axis.hpp); the axes' errors add, as their distributions multiply.
+Rational numeric_error(const AxisDynamics& action, const Breaks& breaks) {
+  Rational total = 0;
+  for (std::size_t i = 0; i < breaks.size(); ++i)
+    if (action.disturbance[i].kind == Disturbance::Kind::Gaussian)
+      total += gaussian_row_tolerance(breaks[i].size() - 1);
+  return total;
+}
+
 Rational partition_error(const ContextGeometry& geometry, const Breaks& breaks) {
   const std::vector<Rational> half = widest_half_widths(breaks);
   Rational worst = 0;
   for (const AxisDynamics& action : geometry.actions)
-    worst = std::max(worst, cell_error(action, half));
+    worst = std::max(worst, Rational(cell_error(action, half) + numeric_error(action, breaks)));
   return worst;
 }
 
@@ -91,7 +109,7 @@ Breaks with_scale(const ContextGeometry& geometry, const Breaks& mandatory, doub
   Breaks breaks = mandatory;
   for (std::size_t i = 0; i < geometry.dimension(); ++i) {
     if (stochastic_somewhere(geometry, i))
-      breaks[i] = subdivided(mandatory[i], scale * narrowest_width(geometry, i), max_pieces);
+      breaks[i] = subdivided(mandatory[i], scale * narrowest_unit(geometry, i), max_pieces);
   }
   return breaks;
 }
@@ -107,7 +125,7 @@ bool close_under_preimages(const ContextGeometry& geometry, Breaks& breaks, std:
       ++rounds;
       std::vector<Rational> found;
       for (const AxisDynamics& action : geometry.actions) {
-        if (action.disturbance[i]) continue;
+        if (action.disturbance[i].present()) continue;
         for (const Rational& t : pending) {
           const Rational preimage = (t - action.offset[i]) / action.matrix[i][i];
           if (preimage > domain.low && preimage < domain.high &&
@@ -125,6 +143,13 @@ bool close_under_preimages(const ContextGeometry& geometry, Breaks& breaks, std:
 
 }  // namespace
 
+Rational shift_cost(const Disturbance& w) {
+  if (w.kind == Disturbance::Kind::Uniform) return 1 / Rational(w.uniform.high - w.uniform.low);
+  if (w.kind == Disturbance::Kind::Gaussian)
+    return 1 / Rational(w.gaussian.deviation * sqrt_two_pi_below());
+  return 0;
+}
+
 Rational cell_error(const AxisDynamics& action, std::span<const Rational> half_widths) {
   const std::size_t d = half_widths.size();
   Rational worst = 0;
@@ -132,14 +157,14 @@ Rational cell_error(const AxisDynamics& action, std::span<const Rational> half_w
   for (std::size_t signs = 0; signs < (std::size_t{1} << d); ++signs) {
     Rational total = 0;
     for (std::size_t i = 0; i < d; ++i) {
-      const auto& w = action.disturbance[i];
-      if (!w) continue;
+      const Disturbance& w = action.disturbance[i];
+      if (!w.present()) continue;
       Rational shift = 0;
       for (std::size_t j = 0; j < d; ++j) {
         const Rational term = action.matrix[i][j] * half_widths[j];
         shift += ((signs >> j) & 1U) != 0 ? -term : term;
       }
-      total += abs(shift) / (w->high - w->low);
+      total += abs(shift) * shift_cost(w);
     }
     worst = std::max(worst, total);
   }

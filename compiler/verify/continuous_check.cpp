@@ -165,9 +165,43 @@ Problem check_locator(const model::ModelIR& ir, const rt::AbstractionView& abs) 
   return std::nullopt;
 }
 
-// The exact successor distribution over cells (and outside, the last entry) from `x` under
-// action a, from the spec's dynamics on the grid's axes: per axis uniform on an interval (or a
-// point), axes independent.
+// The standard normal distribution function, written here apart from compiler/geom's.
+double normal_cdf(double z) {
+  return 0.5 * std::erfc(-z / std::sqrt(2.0));
+}
+
+// P(low <= Z < high) for a standard normal Z, taken on the side of 0 where the values are
+// small, so that a far tail keeps its digits.
+double normal_between(double low, double high) {
+  if (low > 0) return normal_cdf(-low) - normal_cdf(-high);
+  return normal_cdf(high) - normal_cdf(low);
+}
+
+// The probability of each interval of one grid axis for a successor coordinate `image` + w.
+std::vector<double> axis_probabilities(const model::DisturbanceModel& w, double image,
+                                       const double* t, std::uint32_t count) {
+  using Kind = model::DisturbanceModel::Kind;
+  const bool spread = w.kind == Kind::Bounded && w.first < w.second;
+  const double low = image + (w.kind == Kind::Bounded ? to_double(w.first) : 0);
+  const double high = spread ? image + to_double(w.second) : low;
+  std::vector<double> p;
+  for (std::uint32_t k = 0; k + 1 < count; ++k) {
+    if (w.kind == Kind::Gaussian) {
+      const double mean = image + to_double(w.first);
+      const double deviation = to_double(w.second);
+      p.push_back(normal_between((t[k] - mean) / deviation, (t[k + 1] - mean) / deviation));
+    } else if (spread) {
+      p.push_back(std::max(0.0, std::min(high, t[k + 1]) - std::max(low, t[k])) / (high - low));
+    } else {
+      p.push_back(t[k] <= low && (low < t[k + 1] || k + 2 == count) ? 1.0 : 0.0);
+    }
+  }
+  return p;
+}
+
+// The successor distribution over cells (and outside, the last entry) from `x` under action
+// a, from the spec's dynamics on the grid's axes: per axis uniform on an interval, Gaussian
+// (in doubles, to about 1e-15) or a point; axes independent.
 std::vector<double> successor_cells(const model::ModelIR& ir, std::size_t context,
                                     std::size_t action, const rt::GridView& grid,
                                     const std::vector<double>& x, std::uint64_t cells) {
@@ -175,24 +209,11 @@ std::vector<double> successor_cells(const model::ModelIR& ir, std::size_t contex
   std::vector<std::vector<double>> axis(grid.dimension);
   for (std::uint32_t i = 0; i < grid.dimension; ++i) {
     const std::uint32_t v = grid.axes[i];
-    double mean = to_double(dynamics.offset[v]);
+    double image = to_double(dynamics.offset[v]);
     for (std::uint32_t j = 0; j < grid.dimension; ++j)
-      mean += to_double(dynamics.matrix[v][grid.axes[j]]) * x[j];
-    const double* t = grid.breaks + grid.break_begin[i];
-    const std::uint32_t count = grid.break_begin[i + 1] - grid.break_begin[i];
-    const model::DisturbanceModel& w = dynamics.disturbance[v];
-    const bool spread = w.kind == model::DisturbanceModel::Kind::Bounded && w.first < w.second;
-    const double low =
-        mean + (w.kind == model::DisturbanceModel::Kind::Bounded ? to_double(w.first) : 0);
-    const double high = spread ? mean + to_double(w.second) : low;
-    for (std::uint32_t k = 0; k + 1 < count; ++k) {
-      if (spread) {
-        axis[i].push_back(std::max(0.0, std::min(high, t[k + 1]) - std::max(low, t[k])) /
-                          (high - low));
-      } else {
-        axis[i].push_back(t[k] <= low && (low < t[k + 1] || k + 2 == count) ? 1.0 : 0.0);
-      }
-    }
+      image += to_double(dynamics.matrix[v][grid.axes[j]]) * x[j];
+    axis[i] = axis_probabilities(dynamics.disturbance[v], image, grid.breaks + grid.break_begin[i],
+                                 grid.break_begin[i + 1] - grid.break_begin[i]);
   }
   std::vector<double> p(cells + 1, 0);
   double inside = 0;

@@ -153,9 +153,9 @@ TEST(GeomGrid, MonteCarloSuccessorsAgreeWithTheRowsWithinEpsilon) {
           next[i] = to_double(step.offset[i]);
           for (std::size_t j = 0; j < 2; ++j)
             next[i] += to_double(step.matrix[i][j]) * x[j];
-          const auto& w = step.disturbance[i];
+          const geom::Interval& w = step.disturbance[i].uniform;
           next[i] +=
-              std::uniform_real_distribution<double>(to_double(w->low), to_double(w->high))(random);
+              std::uniform_real_distribution<double>(to_double(w.low), to_double(w.high))(random);
         }
         const auto target = grid.locate(std::span<const double>(next, 2));
         counts[target ? *target : grid.num_cells()] += 1;
@@ -207,8 +207,8 @@ TEST(GeomGrid, VerticesStayWithinTheBoundWhichIsNearlyReached) {
           double mean = to_double(step.offset[i]);
           for (std::size_t j = 0; j < 2; ++j)
             mean += to_double(step.matrix[i][j]) * v[j];
-          const double low = mean + to_double(step.disturbance[i]->low);
-          const double high = mean + to_double(step.disturbance[i]->high);
+          const double low = mean + to_double(step.disturbance[i].uniform.low);
+          const double high = mean + to_double(step.disturbance[i].uniform.high);
           const std::vector<double>& t = grid.breaks_double(i);
           for (std::size_t k = 0; k + 1 < t.size(); ++k)
             axis[i].push_back(std::max(0.0, std::min(high, t[k + 1]) - std::max(low, t[k])) /
