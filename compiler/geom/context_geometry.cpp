@@ -33,7 +33,7 @@ bool reward_box(const model::ModelIR& ir, const model::Reward& reward, const Rel
       if (axis >= 0) {
         error =
             "a reward condition is not an axis-aligned box (an inequality reads two "
-            "variables); general polytopes need the CGAL path, not built yet";
+            "variables), which the grid cannot follow";
         return false;
       }
       axis = axis_of(relevance, v);
@@ -96,7 +96,7 @@ bool check_deterministic_axes(const ContextGeometry& geometry, std::string& erro
           error = "variable " + quoted(geometry.axis_names[i]) +
                   " has no disturbance and its next value " +
                   (own ? "does not depend on itself" : "reads another variable") +
-                  "; such dynamics need the CGAL polytope path, not built yet";
+                  ", which the grid cannot follow";
           return false;
         }
       }

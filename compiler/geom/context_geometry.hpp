@@ -9,7 +9,8 @@
 // none. Variables
 // without a disturbance must move on their own axis (x' = a x + b, a != 0), so that the
 // pre-image of an interval is an interval. Anything else is refused with a sentence saying
-// what is not supported yet (general polytopes need the CGAL path).
+// what the grid cannot follow; the pipeline then takes the polytope path
+// (geom/polytope_partition.hpp).
 
 #include <cstddef>
 #include <cstdint>
