@@ -203,8 +203,13 @@ int run_compile(CompileOptions options) {
   bool written = false;
   if (continuous) {
     pipeline::ContinuousCatalogOptions build;
-    build.abstraction.epsilon = options.epsilon.value_or(kDefaultEpsilon);
+    // The command line wins over the spec (`epsilon e;`, `max_cells n;`), which wins over
+    // the defaults.
+    const model::ModelIR& ir = *loaded->ir;
+    build.abstraction.epsilon =
+        options.epsilon.value_or(ir.epsilon ? to_double(*ir.epsilon) : kDefaultEpsilon);
     build.abstraction.max_cells = options.max_cells;
+    if (!build.abstraction.max_cells && ir.max_cells) build.abstraction.max_cells = *ir.max_cells;
     build.abstraction.attention = !options.no_attention;
     build.jobs = options.jobs;
     std::mutex stderr_lock;
@@ -285,11 +290,12 @@ CommandRunner add_compile_command(CLI::App& app) {
       ->check(CLI::Range(0.0, 1.0));
   command
       ->add_option("--epsilon", options->epsilon,
-                   "Continuous: the error bound every transition row must meet (default 0.1)")
+                   "Continuous: the error bound every transition row must meet (default: the "
+                   "spec's 'epsilon', else 0.1)")
       ->check(CLI::PositiveNumber);
   command
       ->add_option("--max-cells", options->max_cells,
-                   "Continuous: cells per context at most (default " +
+                   "Continuous: cells per context at most (default: the spec's 'max_cells', else " +
                        std::to_string(pipeline::kDefaultGridCells) + " on a grid, " +
                        std::to_string(pipeline::kDefaultPolytopeCells) + " polytope cells)")
       ->check(CLI::PositiveNumber);

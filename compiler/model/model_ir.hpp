@@ -116,6 +116,10 @@ struct ModelIR {
   Objective objective;
   SourceRange objective_range;     // the spec's discount or horizon; else the model's name
   std::optional<Rational> period;  // seconds per step (continuous models)
+  // Continuous models: the spec's error target per context and cell budget per context, when
+  // it gives them (`epsilon e;`, `max_cells n;`).
+  std::optional<Rational> epsilon;
+  std::optional<std::uint64_t> max_cells;
 };
 
 }  // namespace oasis::model

@@ -148,6 +148,10 @@ struct MdpDecl {
   std::optional<Setting> discount;
   std::optional<Setting> horizon;
   std::optional<Setting> period;
+  // Continuous models: the abstraction's error target and cell budget (`epsilon e;`,
+  // `max_cells n;`), which the command line may override.
+  std::optional<Setting> epsilon;
+  std::optional<Setting> max_cells;
 };
 
 struct ContextDecl {

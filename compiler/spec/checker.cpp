@@ -310,12 +310,43 @@ class Checker {
         ir_.objective.horizon = static_cast<std::uint32_t>(*value);
       }
     }
+    check_abstraction_target(mdp);
     if (mdp.period) {
       auto value = expressions_.constant_number(*mdp.period->value, "the period");
       if (value && *value <= 0) {
         diagnostics_.error(mdp.period->value->range, "period must be positive (seconds per step)");
       } else if (value) {
         ir_.period = *value;
+      }
+    }
+  }
+
+  // `epsilon e;` and `max_cells n;`: the continuous abstraction's target and budget.
+  void check_abstraction_target(const ast::MdpDecl& mdp) {
+    for (const auto* setting : {&mdp.epsilon, &mdp.max_cells}) {
+      if (*setting && ir_.kind != model::ModelKind::Continuous)
+        diagnostics_.error((*setting)->range,
+                           "'epsilon' and 'max_cells' set the abstraction of continuous "
+                           "states; an explicit model's quotient is exact");
+    }
+    if (ir_.kind != model::ModelKind::Continuous) return;
+    if (mdp.epsilon) {
+      auto value = expressions_.constant_number(*mdp.epsilon->value, "epsilon");
+      if (value && (*value <= 0 || *value > 1)) {
+        diagnostics_.error(mdp.epsilon->value->range,
+                           "epsilon bounds a total-variation distance: it must be in (0, 1], not " +
+                               describe(*value));
+      } else if (value) {
+        ir_.epsilon = *value;
+      }
+    }
+    if (mdp.max_cells) {
+      auto value = expressions_.constant_integer(*mdp.max_cells->value, "max_cells");
+      if (value && (*value < 1 || *value > 100'000'000)) {
+        diagnostics_.error(mdp.max_cells->value->range,
+                           "max_cells must be between 1 and 10^8 cells per context");
+      } else if (value) {
+        ir_.max_cells = static_cast<std::uint64_t>(*value);
       }
     }
   }

@@ -220,6 +220,13 @@ class Parser {
         decl.period = setting();
         return;
       default:
+        // `epsilon` and `max_cells` are contextual: a state may be called so (`epsilon, a ->`).
+        if ((at_word("epsilon") || at_word("max_cells")) && !peek(1).is(TokenKind::Comma)) {
+          std::optional<Setting>& target = at_word("epsilon") ? decl.epsilon : decl.max_cells;
+          if (target) fail(peek(), "the model already has a '" + std::string(peek().text) + "'");
+          target = setting();
+          return;
+        }
         if (!behaviour_item(decl.behaviour)) {
           fail(token,
                "expected a model item (states, actions, var, a transition, reward, ...), "

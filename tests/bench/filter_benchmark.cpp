@@ -13,6 +13,7 @@
 #include <benchmark/benchmark.h>
 
 #include "oasis/rt/attention_filter.hpp"
+#include "oasis/rt/bsp_locator.hpp"
 #include "oasis/rt/catalog_view.hpp"
 #include "oasis/rt/grid_locator.hpp"
 
@@ -196,6 +197,20 @@ void BM_RobustDiscrete(benchmark::State& state) {
 }
 BENCHMARK(BM_RobustDiscrete);
 
+// 4096 points of [0, 5]^dimension, one after the other (xorshift: no <random> needed in the
+// runtime's benchmark).
+std::vector<double> random_points(std::uint32_t dimension) {
+  std::vector<double> points(4096 * std::size_t{dimension});
+  std::uint64_t seed = 88172645463325252ULL;
+  for (double& x : points) {
+    seed ^= seed << 13;
+    seed ^= seed >> 7;
+    seed ^= seed << 17;
+    x = 5.0 * static_cast<double>(seed % 1000000) / 1000000.0;
+  }
+  return points;
+}
+
 // Point location in a gridded continuous abstraction (grid_locator.hpp): the Go1 catalog's
 // grid at epsilon 0.1 has 84 x 101 intervals over (x, y); the argument is the number of
 // intervals per axis, over `dimension` axes, at random points of the domain.
@@ -212,14 +227,7 @@ void BM_LocateCell(benchmark::State& state) {
     begin.push_back(static_cast<std::uint32_t>(breaks.size()));
   }
   const oasis::rt::GridView grid{dimension, axes.data(), begin.data(), breaks.data()};
-  std::vector<double> points(4096 * dimension);
-  std::uint64_t seed = 88172645463325252ULL;
-  for (double& x : points) {  // xorshift: no <random> needed in the runtime's benchmark
-    seed ^= seed << 13;
-    seed ^= seed >> 7;
-    seed ^= seed << 17;
-    x = 5.0 * static_cast<double>(seed % 1000000) / 1000000.0;
-  }
+  const std::vector<double> points = random_points(dimension);
   std::size_t next = 0;
   for (auto _ : state) {
     benchmark::DoNotOptimize(oasis::rt::locate_cell(grid, points.data() + next, dimension));
@@ -227,6 +235,51 @@ void BM_LocateCell(benchmark::State& state) {
   }
 }
 BENCHMARK(BM_LocateCell)->Args({84, 2})->Args({101, 2})->Args({1000, 2})->Args({15, 4});
+
+// Point location in polytope cells (bsp_locator.hpp): the domain box, then a walk down the
+// BSP, one dot product per level. The cost depends on the depth reached, so the tree here is
+// complete: 2^depth cells over `dimension` axes, slanted hyperplanes through [0, 5]^d.
+void BM_LocateBsp(benchmark::State& state) {
+  const auto depth = static_cast<std::uint32_t>(state.range(0));
+  const auto dimension = static_cast<std::uint32_t>(state.range(1));
+  std::vector<std::uint32_t> axes;
+  std::vector<std::uint32_t> begin{0};
+  std::vector<double> breaks;
+  for (std::uint32_t i = 0; i < dimension; ++i) {
+    axes.push_back(i);
+    breaks.insert(breaks.end(), {0.0, 5.0});
+    begin.push_back(static_cast<std::uint32_t>(breaks.size()));
+  }
+  const oasis::rt::GridView grid{dimension, axes.data(), begin.data(), breaks.data()};
+  const std::uint32_t internal = (1U << depth) - 1;
+  const std::uint32_t nodes = 2 * internal + 1;
+  std::vector<double> normal(std::size_t{nodes} * dimension, 0.0);
+  std::vector<double> bound(nodes, 0.0);
+  std::vector<std::uint32_t> below(nodes, 0);
+  std::vector<std::uint32_t> above(nodes, 0);
+  std::vector<std::uint32_t> cell(nodes, oasis::rt::kInternalNode);
+  for (std::uint32_t n = 0; n < nodes; ++n) {
+    if (n >= internal) {
+      cell[n] = n - internal;
+      continue;
+    }
+    below[n] = 2 * n + 1;
+    above[n] = 2 * n + 2;
+    for (std::uint32_t i = 0; i < dimension; ++i)
+      normal[std::size_t{n} * dimension + i] = 1.0 + 0.1 * ((n + i) % 7);
+    bound[n] = 2.5 * (1.0 + 0.1 * dimension);
+  }
+  const oasis::rt::BspView bsp{nodes,        1U << depth,  normal.data(), bound.data(),
+                               below.data(), above.data(), cell.data()};
+  const std::vector<double> points = random_points(dimension);
+  std::size_t next = 0;
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(
+        oasis::rt::locate_partition_cell(grid, bsp, points.data() + next, dimension));
+    next = (next + dimension) % points.size();
+  }
+}
+BENCHMARK(BM_LocateBsp)->Args({10, 2})->Args({16, 2})->Args({10, 4});
 
 }  // namespace
 
