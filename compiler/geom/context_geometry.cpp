@@ -61,14 +61,12 @@ bool reward_box(const model::ModelIR& ir, const model::Reward& reward, const Rel
 void axis_dynamics(const model::AffineDynamics& affine, const Relevance& relevance,
                    AxisDynamics& out) {
   const std::size_t d = relevance.relevant.size();
-  out.matrix.assign(d, std::vector<Rational>(d));
-  out.offset.assign(d, 0);
+  ProjectedStep projected = project_step(affine, relevance);
+  out.matrix = std::move(projected.matrix);
+  out.offset = std::move(projected.offset);
   out.disturbance.assign(d, Disturbance{});
   for (std::size_t i = 0; i < d; ++i) {
     const std::uint32_t vi = relevance.relevant[i];
-    for (std::size_t j = 0; j < d; ++j)
-      out.matrix[i][j] = affine.matrix[vi][relevance.relevant[j]];
-    out.offset[i] = affine.offset[vi];
     const model::DisturbanceModel& w = affine.disturbance[vi];
     using Kind = model::DisturbanceModel::Kind;
     Disturbance& axis = out.disturbance[i];

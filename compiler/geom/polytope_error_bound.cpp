@@ -3,6 +3,17 @@
 #include <algorithm>
 
 namespace oasis::geom {
+
+void add_disturbance(const AffineStep& step, const std::vector<Rational>& normal,
+                     ValueRange& range) {
+  for (std::size_t i = 0; i < normal.size(); ++i) {
+    if (!step.disturbance[i] || sgn(normal[i]) == 0) continue;
+    const Rational a = normal[i] * step.disturbance[i]->low;
+    const Rational b = normal[i] * step.disturbance[i]->high;
+    range.low += std::min(a, b);
+    range.high += std::max(a, b);
+  }
+}
 namespace {
 
 Point apply(const AffineStep& step, const Point& x) {
@@ -99,13 +110,7 @@ CellErrorBound cell_error_bound(const PolytopeGeometry& geometry, const BspTree&
         if (value < r.low) r.low = value;
         if (value > r.high) r.high = value;
       }
-      for (std::size_t i = 0; i < normal.size(); ++i) {
-        if (!step.disturbance[i] || sgn(normal[i]) == 0) continue;
-        const Rational a = normal[i] * step.disturbance[i]->low;
-        const Rational b = normal[i] * step.disturbance[i]->high;
-        r.low += std::min(a, b);
-        r.high += std::max(a, b);
-      }
+      add_disturbance(step, normal, r);
       return r;
     };
     std::vector<std::uint32_t> cut;

@@ -24,6 +24,11 @@
 
 namespace oasis::geom {
 
+// `range` (of normal . z over the images of some points) widened by the step's disturbance
+// box: the range of normal . z over every successor of those points.
+void add_disturbance(const AffineStep& step, const std::vector<Rational>& normal,
+                     ValueRange& range);
+
 struct CellErrorBound {
   Rational epsilon;  // in [0, 1]; 0 for a row that is exact from every point of the cell
   // When epsilon is 1 because a hyperplane reading only undisturbed axes cuts the cell's

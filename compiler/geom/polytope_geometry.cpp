@@ -44,14 +44,12 @@ bool affine_step(const model::ModelIR& ir, const model::AffineDynamics& affine,
                  const Relevance& relevance, const std::string& action, AffineStep& out,
                  std::string& error) {
   const std::size_t d = relevance.relevant.size();
-  out.matrix.assign(d, std::vector<Rational>(d, 0));
-  out.offset.assign(d, 0);
+  ProjectedStep projected = project_step(affine, relevance);
+  out.matrix = std::move(projected.matrix);
+  out.offset = std::move(projected.offset);
   out.disturbance.assign(d, std::nullopt);
   for (std::size_t i = 0; i < d; ++i) {
     const std::uint32_t vi = relevance.relevant[i];
-    for (std::size_t j = 0; j < d; ++j)
-      out.matrix[i][j] = affine.matrix[vi][relevance.relevant[j]];
-    out.offset[i] = affine.offset[vi];
     const model::DisturbanceModel& w = affine.disturbance[vi];
     using Kind = model::DisturbanceModel::Kind;
     if (w.kind == Kind::Gaussian) {

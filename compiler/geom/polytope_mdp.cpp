@@ -76,13 +76,7 @@ std::vector<std::pair<std::size_t, Rational>> successor_row(const PolytopeGeomet
   auto range = [&](const std::vector<Rational>& normal) {
     const Rational centre = dot(normal, mean);
     ValueRange r{centre, centre};
-    for (std::size_t i = 0; i < normal.size(); ++i) {
-      if (!step.disturbance[i] || sgn(normal[i]) == 0) continue;
-      const Rational a = normal[i] * step.disturbance[i]->low;
-      const Rational b = normal[i] * step.disturbance[i]->high;
-      r.low += std::min(a, b);
-      r.high += std::max(a, b);
-    }
+    add_disturbance(step, normal, r);
     return r;
   };
   Rational inside = 0;

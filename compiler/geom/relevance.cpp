@@ -94,6 +94,19 @@ Relevance analyse_relevance(const model::ModelIR& ir, std::size_t context_index)
   return result;
 }
 
+ProjectedStep project_step(const model::AffineDynamics& affine, const Relevance& relevance) {
+  const std::size_t d = relevance.relevant.size();
+  ProjectedStep step{std::vector<std::vector<Rational>>(d, std::vector<Rational>(d)),
+                     std::vector<Rational>(d)};
+  for (std::size_t i = 0; i < d; ++i) {
+    const std::uint32_t vi = relevance.relevant[i];
+    for (std::size_t j = 0; j < d; ++j)
+      step.matrix[i][j] = affine.matrix[vi][relevance.relevant[j]];
+    step.offset[i] = affine.offset[vi];
+  }
+  return step;
+}
+
 Relevance full_state(const model::ModelIR& ir) {
   Relevance result;
   for (std::uint32_t v = 0; v < ir.continuous.size(); ++v) {

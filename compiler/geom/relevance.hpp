@@ -35,6 +35,14 @@ struct Relevance {
   [[nodiscard]] bool exact() const { return failed_conditions.empty(); }
 };
 
+// x' = matrix x + offset restricted to the relevant axes (rows and columns in relevance order):
+// what both geometry paths start from (the disturbances are read per path).
+struct ProjectedStep {
+  std::vector<std::vector<Rational>> matrix;
+  std::vector<Rational> offset;
+};
+ProjectedStep project_step(const model::AffineDynamics& affine, const Relevance& relevance);
+
 // The relevance of the continuous variables to context `context` of a continuous model.
 Relevance analyse_relevance(const model::ModelIR& ir, std::size_t context);
 

@@ -10,6 +10,7 @@
 #include "spec/affine.hpp"
 #include "verify/policy_check.hpp"
 #include "verify/polytope_cells_check.hpp"
+#include "verify/row_distance.hpp"
 
 namespace oasis::verify {
 namespace {
@@ -255,16 +256,9 @@ Problem check_rows(const model::ModelIR& ir, std::size_t context, const rt::Abst
         const std::size_t row = std::size_t{block} * actions + a;
         for (auto e = abs.quotient.choice_begin[row]; e < abs.quotient.choice_begin[row + 1]; ++e)
           by_block[abs.quotient.target[e]] -= abs.quotient.probability[e];
-        double variation = 0;
-        for (const double difference : by_block)
-          variation += std::fabs(difference);
-        variation /= 2;
+        const double variation = total_variation(by_block);
         if (variation > abs.epsilon + 1e-9)
-          return "cell " + std::to_string(cell) + " under " + ir.actions[a] +
-                 ": from one of its points the successor distribution differs from the "
-                 "catalog's row by " +
-                 number(variation) + " in total variation, more than epsilon " +
-                 number(abs.epsilon);
+          return row_too_far(cell, ir.actions[a], variation, abs.epsilon);
       }
     }
   }

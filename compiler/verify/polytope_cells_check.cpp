@@ -8,6 +8,7 @@
 
 #include "oasis/rt/bsp_locator.hpp"
 #include "spec/affine.hpp"
+#include "verify/row_distance.hpp"
 
 namespace oasis::verify {
 namespace {
@@ -276,17 +277,10 @@ Problem check_planar_rows(const model::ModelIR& ir, std::size_t context,
         const std::size_t row = std::size_t{block} * actions + a;
         for (auto e = abs.quotient.choice_begin[row]; e < abs.quotient.choice_begin[row + 1]; ++e)
           (*p)[abs.quotient.target[e]] -= abs.quotient.probability[e];
-        double variation = 0;
-        for (const double difference : *p)
-          variation += std::fabs(difference);
-        variation /= 2;
+        const double variation = total_variation(*p);
         ++checked;
         if (variation > abs.epsilon + 1e-7)
-          return "cell " + std::to_string(c) + " under " + ir.actions[a] +
-                 ": from one of its points the successor distribution differs from the "
-                 "catalog's row by " +
-                 number(variation) + " in total variation, more than epsilon " +
-                 number(abs.epsilon);
+          return row_too_far(c, ir.actions[a], variation, abs.epsilon);
       }
     }
   }
