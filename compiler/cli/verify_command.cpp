@@ -6,6 +6,7 @@
 #include <memory>
 
 #include "cli/commands.hpp"
+#include "cli/continuous_json_reader.hpp"
 #include "cli/partition_result_reader.hpp"
 #include "oasis/rt/catalog_file.hpp"
 #include "pipeline/catalog_data.hpp"
@@ -47,26 +48,41 @@ int verify_catalog(const VerifyOptions& options, const model::ExplicitModel& mod
   return print_checks(verify::check_catalog(model, view));
 }
 
-int verify_continuous(const VerifyOptions& options, const model::ModelIR& ir) {
-  if (!options.result.ends_with(".bin")) {
-    std::cerr << options.result
-              << ": error: a continuous spec is verified against its compiled catalog "
-                 "(NAME.bin)\n";
+// A continuous catalog as a view: the binary file loaded (which validates it), or the JSON
+// read back and validated here. nullopt after printing why.
+int check_continuous_view(const VerifyOptions& options, const model::ModelIR& ir,
+                          const rt::CatalogView& view) {
+  const std::uint64_t hash = pipeline::spec_hash_of_file(options.model);
+  if (view.spec_hash != hash || !view.is_continuous()) {
+    std::cerr << options.result << ": error: the catalog was not compiled from this spec "
+              << "(hash " << pipeline::hash_text(view.spec_hash) << ", this one has "
+              << pipeline::hash_text(hash) << "); recompile it\n";
     return 1;
+  }
+  return print_checks(verify::check_continuous_catalog(ir, view));
+}
+
+int verify_continuous(const VerifyOptions& options, const model::ModelIR& ir) {
+  if (options.result.ends_with(".json")) {
+    std::string error;
+    auto data = read_continuous_catalog_json(options.result, error);
+    if (!data) {
+      std::cerr << options.result << ": error: " << error << '\n';
+      return 1;
+    }
+    const rt::CatalogView view = data->view();
+    if (!rt::validate(view, &error)) {
+      std::cerr << options.result << ": error: invalid catalog: " << error << '\n';
+      return 1;
+    }
+    return check_continuous_view(options, ir, view);
   }
   const rt::LoadedCatalog catalog = rt::LoadedCatalog::from_file(options.result);
   if (!catalog.ok()) {
     std::cerr << catalog.error() << '\n';
     return 1;
   }
-  const std::uint64_t hash = pipeline::spec_hash_of_file(options.model);
-  if (catalog.view().spec_hash != hash || !catalog.view().is_continuous()) {
-    std::cerr << options.result << ": error: the catalog was not compiled from this spec "
-              << "(hash " << pipeline::hash_text(catalog.view().spec_hash) << ", this one has "
-              << pipeline::hash_text(hash) << "); recompile it\n";
-    return 1;
-  }
-  return print_checks(verify::check_continuous_catalog(ir, catalog.view()));
+  return check_continuous_view(options, ir, catalog.view());
 }
 
 int print_checks(const std::vector<verify::CatalogCheck>& checks) {
@@ -146,12 +162,15 @@ CommandRunner add_verify_command(CLI::App& app) {
       "    horizon H: the first step of an optimal H-step plan), and the values are within\n"
       "    tol of the policy's. Doubles must be the exact values up to rounding (2^-50\n"
       "    relative).\n"
-      "For a continuous spec's catalog: the names, switching and prior; per context the\n"
-      "variables it attends to (recomputed), the grid's domain, the reward constant on\n"
-      "every cell and equal to its block's, the locator against plain membership; and,\n"
-      "when the file has the transition rows (compile --with-transitions), every sampled\n"
-      "cell's row recomputed from the spec at its centre and vertices and within the\n"
-      "catalog's epsilon in total variation, and the policy and values as above.\n"
+      "For a continuous spec's catalog (NAME.bin, or NAME.json read back into the same\n"
+      "form): the names, switching and prior; per context the variables it attends to\n"
+      "(recomputed), the domain, the reward constant on every cell and equal to its\n"
+      "block's, the locator against plain membership (grid or BSP of polytope cells;\n"
+      "polytope cells in 1-D and 2-D also clipped as polygons whose areas sum to the\n"
+      "domain's); and, when the file has the transition rows (compile\n"
+      "--with-transitions), sampled cells' rows recomputed from the spec at their centres\n"
+      "and corners and within the catalog's epsilon in total variation, and the policy\n"
+      "and values as above.\n"
       "For a partition JSON it checks the partitions only. The coarsest check is\n"
       "quadratic in the number of blocks at worst.\n\n"
       "Exit status: 0 everything holds, 1 a failure or a bad MODEL or RESULT.\n\n"

@@ -58,6 +58,40 @@ void write_polytope_cell(JsonWriter& out, const geom::BspCell& cell, std::uint32
   out.end_object();
 }
 
+// The BSP as the runtime walks it (rt::BspView): per node its rounded half-space a.x <= c,
+// its children, and the cell of a leaf (null for an internal node).
+void write_bsp(JsonWriter& out, const geom::BspTree& tree) {
+  const std::vector<geom::RoundedBspNode> nodes = tree.rounded_nodes();
+  out.begin_object();
+  out.key("normal");
+  out.begin_array();
+  for (const geom::RoundedBspNode& node : nodes)
+    out.embed(node.cell == geom::BspNode::kNone ? nlohmann::json(node.normal)
+                                                : nlohmann::json::array());
+  out.end_array();
+  const auto field = [&](const char* name, const auto& get) {
+    out.key(name);
+    out.begin_array();
+    for (const geom::RoundedBspNode& node : nodes)
+      get(node);
+    out.end_array();
+  };
+  const auto internal = [](const geom::RoundedBspNode& node) {
+    return node.cell == geom::BspNode::kNone;
+  };
+  field("bound", [&](const auto& n) { out.value(internal(n) ? n.bound : 0.0); });
+  field("below", [&](const auto& n) { out.value(internal(n) ? n.below : 0U); });
+  field("above", [&](const auto& n) { out.value(internal(n) ? n.above : 0U); });
+  field("cell", [&](const auto& n) {
+    if (internal(n)) {
+      out.null();
+    } else {
+      out.value(n.cell);
+    }
+  });
+  out.end_object();
+}
+
 void write_next(JsonWriter& out, const pipeline::ContinuousAbstraction& abstraction,
                 const std::vector<std::string>& actions, const std::vector<double>& probability,
                 std::uint32_t block) {
@@ -124,6 +158,10 @@ void write_abstraction(JsonWriter& out, const pipeline::ContinuousCatalog& catal
   for (std::size_t i = 0; i < abstraction.grid.dimension(); ++i)
     out.embed(nlohmann::json(abstraction.grid.breaks_double(i)));
   out.end_array();
+  if (abstraction.bsp) {
+    out.key("bsp");
+    write_bsp(out, *abstraction.bsp);
+  }
   out.key("cells");
   out.begin_array();
   if (abstraction.bsp) {

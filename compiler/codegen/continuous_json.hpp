@@ -5,7 +5,11 @@
 //   context, relevant_variables (names), epsilon (the sound bound), exact (bool),
 //   num_blocks, outside_block, grid (per relevant variable its breakpoints),
 //   cells: [{"A": [[...]], "b": [...], "block": z}]  meaning A x <= b over the relevant
-//          variables in the listed order (each cell a box: two rows per variable),
+//          variables in the listed order (a grid cell is a box: two rows per variable;
+//          a polytope cell has its irredundant constraints),
+//   bsp (polytope cells only; the grid is then the domain box): {"normal": [[a...] or []],
+//          "bound": [c], "below": [n], "above": [n], "cell": [leaf's cell or null]}, one
+//          entry per node, root first, a point with a.x <= c going `below`,
 //   blocks: [{"reward": r, "policy": "action", "value": v, "next": {...}}]
 // where `next` (only with transitions) maps each action name to [[block, probability], ...]
 // with zero entries omitted. Written compactly (no indentation) and streamed: it can be large (327

@@ -3,6 +3,7 @@
 // the runtime's locator agrees with the compiler's exact location, the JSON cells contain
 // their points, and `verify` passes an untouched catalog and catches each changed item.
 
+#include <fstream>
 #include <functional>
 #include <random>
 #include <string>
@@ -11,6 +12,8 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include "../support/run_oasisc.hpp"
+#include "../support/scratch_directory.hpp"
 #include "../support/spec_models.hpp"
 #include "codegen/binary_catalog.hpp"
 #include "codegen/continuous_json.hpp"
@@ -154,6 +157,29 @@ TEST(PolytopeCatalog, VerifyPassesTheCatalogAndCatchesEveryChange) {
     EXPECT_NE(failure, "") << change.name << " was not caught";
     EXPECT_NE(failure.find(change.expected), std::string::npos) << change.name << ": " << failure;
   }
+}
+
+// `verify SPEC NAME.json` reads the JSON back (BSP included) and checks it like the binary
+// file: the untouched JSON passes, one with a changed value is refused.
+TEST(PolytopeCatalog, VerifyChecksTheJsonToo) {
+  const test::ScratchDirectory scratch("oasis_polytope_json");
+  const std::string spec = std::string(OASIS_SOURCE_DIR) + "/tests/data/triangle_reward.oasis";
+  const auto out = scratch.path() / "triangle";
+  const auto compiled = test::run_oasisc("compile " + spec + " -o " + out.string() +
+                                         " --format json --with-transitions");
+  ASSERT_EQ(compiled.status, 0) << compiled.output;
+  const std::string json_path = (out / "triangle.json").string();
+  const auto verified = test::run_oasisc("verify " + spec + " " + json_path);
+  EXPECT_EQ(verified.status, 0) << verified.output;
+  EXPECT_NE(verified.output.find("polytope cells"), std::string::npos) << verified.output;
+
+  nlohmann::json document = nlohmann::json::parse(test::read_text_file(json_path));
+  document["abstractions"][1]["blocks"][2]["value"] = 1000.0;
+  const std::string changed = (scratch.path() / "changed.json").string();
+  std::ofstream(changed) << document.dump();
+  const auto refused = test::run_oasisc("verify " + spec + " " + changed);
+  EXPECT_EQ(refused.status, 1) << refused.output;
+  EXPECT_NE(refused.output.find("value[2]"), std::string::npos) << refused.output;
 }
 
 }  // namespace

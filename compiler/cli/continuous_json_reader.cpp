@@ -1,0 +1,148 @@
+#include "cli/continuous_json_reader.hpp"
+
+#include <algorithm>
+#include <fstream>
+
+#include <nlohmann/json.hpp>
+
+#include "oasis/rt/bsp_locator.hpp"
+#include "oasis/rt/catalog_view.hpp"
+
+namespace oasis::cli {
+namespace {
+
+using nlohmann::json;
+
+// The index of `name` in `names`; throws (as nlohmann does) with the key's meaning.
+std::uint32_t index_of(const std::vector<std::string>& names, const std::string& name,
+                       const char* what) {
+  const auto found = std::find(names.begin(), names.end(), name);
+  if (found == names.end())
+    throw std::out_of_range(std::string("unknown ") + what + " '" + name + "'");
+  return static_cast<std::uint32_t>(found - names.begin());
+}
+
+std::uint64_t parse_hash(const std::string& text) {
+  if (text.size() != 16 || text.find_first_not_of("0123456789abcdef") != std::string::npos)
+    throw std::out_of_range("spec_hash is not 16 hexadecimal digits");
+  return std::stoull(text, nullptr, 16);
+}
+
+void read_grid(const json& abstraction, const pipeline::CatalogData& catalog,
+               pipeline::AbstractionData& data) {
+  for (const json& name : abstraction.at("relevant_variables"))
+    data.grid_axes.push_back(index_of(catalog.variable_names, name.get<std::string>(), "variable"));
+  data.grid_break_begin.push_back(0);
+  for (const json& axis : abstraction.at("grid")) {
+    for (const json& t : axis)
+      data.grid_breaks.push_back(t.get<double>());
+    data.grid_break_begin.push_back(static_cast<std::uint32_t>(data.grid_breaks.size()));
+  }
+  for (const json& cell : abstraction.at("cells"))
+    data.cell_block.push_back(cell.at("block").get<std::uint32_t>());
+}
+
+void read_bsp(const json& bsp, pipeline::AbstractionData& data) {
+  for (const json& normal : bsp.at("normal")) {
+    if (normal.empty()) {  // a leaf: zeros, as in the binary file
+      data.bsp_normal.insert(data.bsp_normal.end(), data.grid_axes.size(), 0.0);
+      continue;
+    }
+    if (normal.size() != data.grid_axes.size())
+      throw std::out_of_range("a BSP normal has the wrong number of coefficients");
+    for (const json& a : normal)
+      data.bsp_normal.push_back(a.get<double>());
+  }
+  data.bsp_bound = bsp.at("bound").get<std::vector<double>>();
+  data.bsp_below = bsp.at("below").get<std::vector<std::uint32_t>>();
+  data.bsp_above = bsp.at("above").get<std::vector<std::uint32_t>>();
+  for (const json& cell : bsp.at("cell"))
+    data.bsp_cell.push_back(cell.is_null() ? rt::kInternalNode : cell.get<std::uint32_t>());
+  const std::size_t nodes = data.bsp_cell.size();
+  if (data.bsp_bound.size() != nodes || data.bsp_below.size() != nodes ||
+      data.bsp_above.size() != nodes || data.bsp_normal.size() != nodes * data.grid_axes.size())
+    throw std::out_of_range("the BSP's arrays differ in length");
+  data.bsp_cells = static_cast<std::uint32_t>(data.cell_block.size());
+}
+
+// Blocks: rewards, policy and values; with transitions their `next` rows as CSR.
+void read_blocks(const json& blocks, const pipeline::CatalogData& catalog,
+                 pipeline::AbstractionData& data) {
+  const std::size_t actions = catalog.action_names.size();
+  bool rows = false;
+  for (const json& block : blocks) {
+    const double reward = block.at("reward").get<double>();
+    data.block_reward.push_back(reward);
+    data.reward.insert(data.reward.end(), actions, reward);  // state rewards
+    const json& policy = block.at("policy");
+    data.policy.push_back(
+        policy.is_null() ? rt::kNoAction
+                         : index_of(catalog.action_names, policy.get<std::string>(), "action"));
+    data.value.push_back(block.at("value").get<double>());
+    rows = rows || block.contains("next");
+  }
+  if (!rows) return;
+  data.quotient.choice_begin.push_back(0);
+  for (const json& block : blocks) {
+    const json& next = block.at("next");
+    for (const std::string& action : catalog.action_names) {
+      for (const json& entry : next.at(action)) {
+        data.quotient.target.push_back(entry.at(0).get<std::uint32_t>());
+        data.quotient.probability.push_back(entry.at(1).get<double>());
+      }
+      data.quotient.choice_begin.push_back(static_cast<std::uint32_t>(data.quotient.target.size()));
+    }
+  }
+}
+
+pipeline::CatalogData catalog_of(const json& document) {
+  pipeline::CatalogData catalog;
+  if (document.at("format").get<std::uint32_t>() != rt::kCatalogFormat)
+    throw std::out_of_range("catalog format " + document.at("format").dump() + ", expected " +
+                            std::to_string(rt::kCatalogFormat));
+  catalog.name = document.at("name").get<std::string>();
+  catalog.spec_hash = parse_hash(document.at("spec_hash").get<std::string>());
+  catalog.compiler_version = document.at("compiler_version").get<std::string>();
+  catalog.variable_names = document.at("variables").get<std::vector<std::string>>();
+  catalog.action_names = document.at("actions").get<std::vector<std::string>>();
+  catalog.num_actions = static_cast<std::uint32_t>(catalog.action_names.size());
+  for (const json& row : document.at("switching"))
+    for (const json& p : row)
+      catalog.switching.push_back(p.get<double>());
+  catalog.prior = document.at("prior").get<std::vector<double>>();
+  for (const json& abstraction : document.at("abstractions")) {
+    pipeline::AbstractionData data;
+    data.context = abstraction.at("context").get<std::string>();
+    data.num_blocks = abstraction.at("num_blocks").get<std::uint32_t>();
+    data.outside_block = abstraction.at("outside_block").get<std::uint32_t>();
+    data.epsilon = abstraction.at("epsilon").get<double>();
+    read_grid(abstraction, catalog, data);
+    if (abstraction.contains("bsp")) read_bsp(abstraction.at("bsp"), data);
+    read_blocks(abstraction.at("blocks"), catalog, data);
+    if (data.block_reward.size() != data.num_blocks)
+      throw std::out_of_range("abstraction '" + data.context + "' lists " +
+                              std::to_string(data.block_reward.size()) + " blocks, num_blocks " +
+                              std::to_string(data.num_blocks));
+    catalog.abstractions.push_back(std::move(data));
+  }
+  return catalog;
+}
+
+}  // namespace
+
+std::optional<pipeline::CatalogData> read_continuous_catalog_json(const std::string& path,
+                                                                  std::string& error) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) {
+    error = "cannot open the file";
+    return std::nullopt;
+  }
+  try {
+    return catalog_of(json::parse(in));
+  } catch (const std::exception& e) {  // nlohmann's parse, key and type errors, and ours
+    error = std::string("not a continuous catalog's JSON: ") + e.what();
+    return std::nullopt;
+  }
+}
+
+}  // namespace oasis::cli

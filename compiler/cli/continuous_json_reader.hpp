@@ -1,0 +1,19 @@
+#pragma once
+// Reading a continuous catalog's JSON (codegen/continuous_json.hpp, the contract tools
+// outside the project read) back into the runtime's schema, so that `oasisc verify SPEC
+// NAME.json` checks the JSON as it checks the binary file. Only the shape is checked here
+// (keys present, of the right types, names known); what the numbers mean is checked by
+// rt::validate and the verifier.
+
+#include <optional>
+#include <string>
+
+#include "pipeline/catalog_data.hpp"
+
+namespace oasis::cli {
+
+// nullopt with `error` (one sentence, without the path) when the file is not such a JSON.
+std::optional<pipeline::CatalogData> read_continuous_catalog_json(const std::string& path,
+                                                                  std::string& error);
+
+}  // namespace oasis::cli
