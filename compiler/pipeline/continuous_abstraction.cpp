@@ -63,6 +63,16 @@ bool partition_by_polytopes(const geom::PolytopeGeometry& geometry, const model:
   geom::PolytopePartitionOptions target;
   target.epsilon = Rational(options.epsilon);
   target.max_cells = options.max_cells.value_or(kDefaultPolytopeCells);
+  if (options.progress) {
+    // Exact polytope work makes this the long stage: say how far it got every 100 cells.
+    const Clock::time_point begun = start;
+    target.progress = [&options, &result, begun](std::size_t cells) {
+      if (cells % 100 != 0) return;
+      const double seconds = std::chrono::duration<double>(Clock::now() - begun).count();
+      options.progress(result.context, "refining, " + std::to_string(cells) + " polytope cells",
+                       seconds);
+    };
+  }
   auto partition = geom::partition_polytopes(geometry, target, error);
   if (!partition) return false;
   std::vector<std::vector<Rational>> box;
