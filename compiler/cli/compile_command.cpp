@@ -17,6 +17,7 @@
 #include "codegen/cpp_catalog.hpp"
 #include "codegen/dot_catalog.hpp"
 #include "codegen/json_catalog.hpp"
+#include "oasis/rt/catalog_sections.hpp"
 #include "pipeline/catalog_data.hpp"
 #include "pipeline/continuous_catalog.hpp"
 #include "pipeline/continuous_catalog_data.hpp"
@@ -81,8 +82,17 @@ bool wants(const CompileOptions& options, const char* format) {
 // the partition, rewards and policies, not the analysis product).
 bool write_common(const CompileOptions& options, const pipeline::CatalogData& data,
                   const pipeline::CatalogData& linked, OutputSet& out, std::string& error) {
-  if (wants(options, "bin") && !out.write(data.name + ".bin", codegen::binary_catalog(data), error))
-    return false;
+  if (wants(options, "bin")) {
+    const std::string bytes = codegen::binary_catalog(data);
+    // Never write a catalog the runtime's loader would refuse.
+    if (bytes.size() > rt::kMaxCatalogFileBytes) {
+      error = "the binary catalog would be " + std::to_string(bytes.size()) +
+              " bytes, more than the runtime loads (" + std::to_string(rt::kMaxCatalogFileBytes) +
+              "); compile without --with-transitions or with a coarser --epsilon";
+      return false;
+    }
+    if (!out.write(data.name + ".bin", bytes, error)) return false;
+  }
   if (!wants(options, "cpp")) return true;
   const std::string basename =
       options.basename.empty() ? linked.name + "_catalog" : options.basename;

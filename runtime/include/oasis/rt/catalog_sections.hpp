@@ -44,8 +44,11 @@ inline constexpr std::uint32_t kOldestCatalogFileFormat = 1;
 /// Bytes per section-table entry, by file format.
 inline constexpr std::size_t kFormat1EntryBytes = 16;
 inline constexpr std::size_t kFormat2EntryBytes = 24;
-/// Refuse files larger than this (1 GiB): a catalog is tables for a robot, not a dataset.
-inline constexpr std::uint64_t kMaxCatalogFileBytes = std::uint64_t{1} << 30;
+/// Refuse files larger than this (8 GiB). The tables a robot loads are small (the Go1
+/// catalog: 1.2 MB), but a catalog written with its transition rows for analysis
+/// (`oasisc compile --with-transitions`) reaches 2 GB at the Go1 spec's epsilon 0.05; the
+/// limit keeps a damaged size field from asking for absurd memory.
+inline constexpr std::uint64_t kMaxCatalogFileBytes = std::uint64_t{8} << 30;
 
 /// The abstraction field of a catalog-wide section.
 inline constexpr std::uint32_t kCatalogWide = 0xFFFFFFFFu;
