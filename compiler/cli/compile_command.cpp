@@ -266,9 +266,12 @@ CommandRunner add_compile_command(CLI::App& app) {
   command->footer(
       "Discrete specs and imported models: for every context the coarsest bisimulation\n"
       "quotient (see 'oasisc quotient') and a policy solved on it (docs/policies.md).\n"
-      "Continuous specs: for every context the variables it attends to, a grid on them\n"
-      "refined until every transition row is within --epsilon of the truth (a sound bound,\n"
-      "docs/geometry.md), the quotient of that finite MDP and its policy.\n\n"
+      "Continuous specs: for every context the variables it attends to, a partition of\n"
+      "them refined until every transition row is within --epsilon of the truth (a sound\n"
+      "bound, docs/geometry.md), the quotient of that finite MDP and its policy. The\n"
+      "partition is a grid where the context allows it (box rewards, moves along single\n"
+      "axes, uniform or Gaussian disturbances), else convex polytope cells in a BSP,\n"
+      "computed exactly (CGAL's linear programs); --progress shows each stage.\n\n"
       "DIR (default: the spec's name, e.g. ./discrete_tracking) is written as one unit: the\n"
       "whole new set of files replaces the whole old one, also if compile is killed. DIR\n"
       "must be new, empty, or written by an earlier compile (marked by .oasisc-output).\n"
@@ -282,7 +285,9 @@ CommandRunner add_compile_command(CLI::App& app) {
       "Examples:\n"
       "  oasisc compile specs/discrete_tracking.oasis -o out\n"
       "  oasisc verify specs/discrete_tracking.oasis out/discrete_tracking.bin\n"
-      "  oasisc compile specs/go1_treat.oasis -o go1 --format bin,json,cpp,svg --epsilon 0.1");
+      "  oasisc compile specs/go1_treat.oasis -o go1 --format bin,json,cpp,svg --epsilon 0.1\n"
+      "  oasisc compile specs/go1_treat.oasis -o go1 --with-transitions   # rows for analysis\n"
+      "  oasisc verify specs/go1_treat.oasis go1/go1_treat.json");
   command->add_option("spec", options->spec, "Spec (.oasis) or model (.aut, .tra) file")
       ->required();
   command->add_option("-o,--output", options->output,
