@@ -1,0 +1,22 @@
+#pragma once
+// Seeded packet loss for the fake Go1: the same seed drops the same packets (by arrival order)
+// on every run and every standard library, because the generator (SplitMix64) is our own.
+
+#include <cstdint>
+
+namespace oasis::hw::go1 {
+
+class LossModel {
+ public:
+  LossModel(double loss_probability, std::uint64_t seed)
+      : loss_probability_(loss_probability), state_(seed) {}
+
+  // Whether the next packet is lost.
+  bool drop_next();
+
+ private:
+  double loss_probability_;
+  std::uint64_t state_;
+};
+
+}  // namespace oasis::hw::go1

@@ -1,0 +1,34 @@
+#pragma once
+// The frame shared by HighCmd and HighState: head FE EF at byte 0, the level flag at byte 2 and a
+// CRC over the first (length / 4 - 1) words stored in the last four bytes (NOTES §1 "CRC": the
+// SDK covers bytes 0..123 of a HighCmd and 0..1079 of a HighState; the bytes between the covered
+// words and the CRC are not checked).
+
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+#include <span>
+
+#include "go1/packet_refusal.hpp"
+
+namespace oasis::hw::go1 {
+
+// How many words the CRC covers in a packet of `length` bytes, and where it is stored.
+constexpr std::size_t crc_word_count(std::size_t length) {
+  return length / 4 - 1;
+}
+constexpr std::size_t crc_offset(std::size_t length) {
+  return length - 4;
+}
+
+// Writes head, level flag and CRC into `packet` (its other bytes already filled in).
+void seal_frame(std::span<std::uint8_t> packet, std::uint8_t level_flag);
+
+// Checks length, head, level flag (when one is expected) and CRC (when `check_crc`), in that
+// order; nullopt if all hold.
+std::optional<Refused> check_frame(std::span<const std::uint8_t> packet,
+                                   std::size_t expected_length,
+                                   std::optional<std::uint8_t> expected_level_flag,
+                                   bool check_crc = true);
+
+}  // namespace oasis::hw::go1
