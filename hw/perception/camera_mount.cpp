@@ -1,0 +1,34 @@
+#include "perception/camera_mount.hpp"
+
+#include <cmath>
+
+namespace oasis::hw {
+
+Point3 robot_direction_from_camera(const CameraMount& mount, const Point3& camera) {
+  const double c = std::cos(mount.pitch_up_rad);
+  const double s = std::sin(mount.pitch_up_rad);
+  // Optical z is (c, 0, s) in the robot frame, optical y (down) is (s, 0, -c), optical x is -y.
+  return {camera.z * c + camera.y * s, -camera.x, camera.z * s - camera.y * c};
+}
+
+Point3 robot_point_from_camera(const CameraMount& mount, const Point3& camera) {
+  Point3 robot = robot_direction_from_camera(mount, camera);
+  robot.z += mount.height_m;
+  return robot;
+}
+
+Point3 camera_point_from_robot(const CameraMount& mount, const Point3& robot) {
+  const double c = std::cos(mount.pitch_up_rad);
+  const double s = std::sin(mount.pitch_up_rad);
+  const double up = robot.z - mount.height_m;
+  return {-robot.y, robot.x * s - up * c, robot.x * c + up * s};
+}
+
+Point3 back_project(const CameraIntrinsics& intrinsics, const CameraMount& mount, double u,
+                    double v, double depth_m) {
+  const Point3 camera{(u - intrinsics.cx) / intrinsics.fx * depth_m,
+                      (v - intrinsics.cy) / intrinsics.fy * depth_m, depth_m};
+  return robot_point_from_camera(mount, camera);
+}
+
+}  // namespace oasis::hw
