@@ -107,6 +107,10 @@ std::optional<ContinuousAbstraction> abstract_context(const model::ModelIR& ir, 
     std::string polytope_refusal;
     const auto polytopes = geom::polytope_geometry(ir, context, result.relevance, polytope_refusal);
     if (!polytopes) {
+      // Both refusals name the context; say it once.
+      const std::string named = "context ";
+      if (polytope_refusal.starts_with(named) && polytope_refusal.find("': ") != std::string::npos)
+        polytope_refusal.erase(0, polytope_refusal.find("': ") + 3);
       error = grid_refusal + "; and the polytope path cannot take it either: " + polytope_refusal;
       return std::nullopt;
     }

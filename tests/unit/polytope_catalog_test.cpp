@@ -3,6 +3,7 @@
 // the runtime's locator agrees with the compiler's exact location, the JSON cells contain
 // their points, and `verify` passes an untouched catalog and catches each changed item.
 
+#include <filesystem>
 #include <fstream>
 #include <functional>
 #include <random>
@@ -180,6 +181,29 @@ TEST(PolytopeCatalog, VerifyChecksTheJsonToo) {
   const auto refused = test::run_oasisc("verify " + spec + " " + changed);
   EXPECT_EQ(refused.status, 1) << refused.output;
   EXPECT_NE(refused.output.find("value[2]"), std::string::npos) << refused.output;
+}
+
+// What neither path takes (a slanted reward with a Gaussian disturbance) is refused with
+// both reasons, the context named once, and no output.
+TEST(PolytopeCatalog, WhatNeitherPathTakesIsRefusedWithBothReasons) {
+  const test::ScratchDirectory scratch("oasis_polytope_refused");
+  std::string spec =
+      test::read_text_file(std::string(OASIS_SOURCE_DIR) + "/tests/data/triangle_reward.oasis");
+  const std::string uniform = "disturbance y in [-0.5 .. 0.5];";
+  spec.replace(spec.find(uniform), uniform.size(), "disturbance y ~ gaussian(0, 0.2);");
+  const auto path = scratch.path() / "gaussian_triangle.oasis";
+  std::ofstream(path) << spec;
+  const auto out = scratch.path() / "out";
+  const auto result = test::run_oasisc("compile " + path.string() + " -o " + out.string());
+  EXPECT_EQ(result.status, 1) << result.output;
+  EXPECT_NE(result.output.find("which the grid cannot follow"), std::string::npos) << result.output;
+  EXPECT_NE(result.output.find("the polytope path handles uniform boxes only"), std::string::npos)
+      << result.output;
+  const std::string named = "context 'at_goal'";
+  const auto first = result.output.find(named);
+  ASSERT_NE(first, std::string::npos) << result.output;
+  EXPECT_EQ(result.output.find(named, first + 1), std::string::npos) << result.output;
+  EXPECT_FALSE(std::filesystem::exists(out / "triangle.bin"));
 }
 
 }  // namespace
