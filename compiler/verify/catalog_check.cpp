@@ -2,9 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <optional>
 
+#include "verify/number_text.hpp"
 #include "verify/policy_check.hpp"
 #include "verify/verifier.hpp"
 
@@ -16,12 +16,6 @@ bool carried(double d, const Rational& q, double slack = 0x1p-60) {
   if (!std::isfinite(d)) return false;
   const Rational difference = abs(Rational(d) - q);
   return difference <= abs(q) * Rational(1, 1L << 50) + Rational(slack);
-}
-
-std::string number(double value) {
-  char text[40];
-  std::snprintf(text, sizeof text, "%.10g", value);
-  return text;
 }
 
 struct Failure {
@@ -74,10 +68,10 @@ std::optional<Failure> check_switching(const model::ExplicitModel& model,
   for (std::size_t k = 0; k < n * n; ++k)
     if (!carried(c.switching[k], matrix[k]))
       return Failure{"switching[" + std::to_string(k / n) + "][" + std::to_string(k % n) + "] is " +
-                     number(c.switching[k]) + ", the model says " + describe(matrix[k])};
+                     number_text(c.switching[k]) + ", the model says " + describe(matrix[k])};
   for (std::size_t i = 0; i < n; ++i)
     if (!carried(c.prior[i], prior[i]))
-      return Failure{"prior[" + std::to_string(i) + "] is " + number(c.prior[i]) +
+      return Failure{"prior[" + std::to_string(i) + "] is " + number_text(c.prior[i]) +
                      ", the model says " + describe(prior[i])};
   return std::nullopt;
 }
@@ -131,9 +125,9 @@ std::optional<Failure> check_rewards(const model::ExplicitModel& model, std::siz
   for (model::StateIndex s = 0; s < model.num_states(); ++s) {
     const std::uint32_t z = abs.block_of[s];
     if (!carried(abs.block_reward[z], model.values[rewards.state[s]]))
-      return Failure{"block " + std::to_string(z) + " has reward " + number(abs.block_reward[z]) +
-                     " but its state " + model.states.name(s) + " has " +
-                     describe(model.values[rewards.state[s]])};
+      return Failure{"block " + std::to_string(z) + " has reward " +
+                     number_text(abs.block_reward[z]) + " but its state " + model.states.name(s) +
+                     " has " + describe(model.values[rewards.state[s]])};
   }
   const std::uint32_t actions = model.num_actions();
   for (std::uint32_t z = 0; z < abs.num_blocks; ++z) {
@@ -143,7 +137,7 @@ std::optional<Failure> check_rewards(const model::ExplicitModel& model, std::siz
       const double carried_value = abs.reward[std::size_t{z} * actions + a];
       if (!carried(carried_value, exact))
         return Failure{"R^Z(block " + std::to_string(z) + ", " + model.actions[a] + ") is " +
-                       number(carried_value) + ", the model says " + describe(exact)};
+                       number_text(carried_value) + ", the model says " + describe(exact)};
     }
   }
   return std::nullopt;
@@ -171,7 +165,7 @@ std::optional<Failure> check_transitions(const model::ExplicitModel& model,
             !carried(carried_row[k].second, exact[k].second, 1e-12))
           return Failure{where + ": the catalog gives block " +
                          std::to_string(carried_row[k].first) + " probability " +
-                         number(carried_row[k].second) + ", the model block " +
+                         number_text(carried_row[k].second) + ", the model block " +
                          std::to_string(exact[k].first) + " " + describe(exact[k].second)};
       }
     }

@@ -2,24 +2,18 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <optional>
 #include <random>
 
 #include "oasis/rt/grid_locator.hpp"
 #include "spec/affine.hpp"
+#include "verify/number_text.hpp"
 #include "verify/policy_check.hpp"
 #include "verify/polytope_cells_check.hpp"
 #include "verify/row_distance.hpp"
 
 namespace oasis::verify {
 namespace {
-
-std::string number(double value) {
-  char text[40];
-  std::snprintf(text, sizeof text, "%.10g", value);
-  return text;
-}
 
 using Problem = std::optional<std::string>;
 
@@ -109,8 +103,9 @@ Problem check_rewards(const model::ModelIR& ir, std::size_t context, const rt::A
     }
     const double carried = abs.block_reward[abs.cell_block[cell]];
     if (std::fabs(carried - total) > 1e-12 * std::max(1.0, std::fabs(total)))
-      return "cell " + std::to_string(cell) + " has reward " + number(total) + " but its block " +
-             std::to_string(abs.cell_block[cell]) + " says " + number(carried);
+      return "cell " + std::to_string(cell) + " has reward " + number_text(total) +
+             " but its block " + std::to_string(abs.cell_block[cell]) + " says " +
+             number_text(carried);
   }
   if (abs.block_reward[abs.outside_block] != 0) return "the outside block's reward is not 0";
   return std::nullopt;
@@ -122,9 +117,9 @@ Problem check_domain(const model::ModelIR& ir, const rt::AbstractionView& abs) {
     const double* t = abs.grid.breaks + abs.grid.break_begin[i];
     const std::uint32_t last = abs.grid.break_begin[i + 1] - abs.grid.break_begin[i] - 1;
     if (t[0] != to_double(v.low) || t[last] != to_double(v.high))
-      return "the grid of " + v.name + " spans [" + number(t[0]) + ", " + number(t[last]) +
-             "], its domain is [" + number(to_double(v.low)) + ", " + number(to_double(v.high)) +
-             "]";
+      return "the grid of " + v.name + " spans [" + number_text(t[0]) + ", " +
+             number_text(t[last]) + "], its domain is [" + number_text(to_double(v.low)) + ", " +
+             number_text(to_double(v.high)) + "]";
   }
   return std::nullopt;
 }
@@ -336,7 +331,7 @@ CatalogCheck check_abstraction(const model::ModelIR& ir, std::size_t context,
   check.verdict =
       "attends to its relevant variables; " + std::to_string(cells) + " cells, " +
       std::to_string(abs.num_blocks) + " blocks; domain, rewards, locator ok" +
-      (rows ? "; rows within epsilon " + number(abs.epsilon) +
+      (rows ? "; rows within epsilon " + number_text(abs.epsilon) +
                   " at sampled cells' centres and vertices; policy " + summary + ", values ok"
             : "; rows and policy not checked: the file has no transition rows "
               "(compile --with-transitions)");

@@ -2,18 +2,12 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 
 #include "oasis/rt/catalog_view.hpp"
+#include "verify/number_text.hpp"
 
 namespace oasis::verify {
 namespace {
-
-std::string number(double value) {
-  char text[40];
-  std::snprintf(text, sizeof text, "%.10g", value);
-  return text;
-}
 
 double tolerance_for(const double* value, std::uint32_t blocks) {
   double scale = 1;
@@ -52,14 +46,14 @@ std::optional<std::string> check_discounted(const NumericQuotient& quotient,
       const double gain = quotient.q(value, z, a, gamma) - value[z];
       if (gain > tolerance * (1 - gamma) / 2)
         return "the policy is not optimal: in block " + std::to_string(z) + " action " +
-               std::to_string(a) + " gains " + number(gain) + " over action " +
+               std::to_string(a) + " gains " + number_text(gain) + " over action " +
                std::to_string(policy[z]);
     }
   }
   for (std::uint32_t z = 0; z < quotient.blocks; ++z) {
     if (std::fabs(stored[z] - value[z]) > tolerance)
-      return "value[" + std::to_string(z) + "] is " + number(stored[z]) +
-             ", the policy's value is " + number(value[z]);
+      return "value[" + std::to_string(z) + "] is " + number_text(stored[z]) +
+             ", the policy's value is " + number_text(value[z]);
   }
   return std::nullopt;
 }
@@ -88,8 +82,8 @@ std::optional<std::string> check_horizon(const NumericQuotient& quotient,
   tolerance = tolerance_for(value.data(), quotient.blocks);
   for (std::uint32_t z = 0; z < quotient.blocks; ++z) {
     if (std::fabs(stored[z] - value[z]) > tolerance)
-      return "value[" + std::to_string(z) + "] is " + number(stored[z]) + ", the optimal " +
-             std::to_string(horizon) + "-step value is " + number(value[z]);
+      return "value[" + std::to_string(z) + "] is " + number_text(stored[z]) + ", the optimal " +
+             std::to_string(horizon) + "-step value is " + number_text(value[z]);
     if (!quotient.dead(z) && quotient.q(before_last, z, policy[z], gamma) < value[z] - tolerance)
       return "the policy's first step in block " + std::to_string(z) +
              " is not optimal for the horizon";
@@ -143,7 +137,8 @@ std::optional<std::string> check_policy_and_values(const NumericQuotient& quotie
     return check_horizon(quotient, policy, value, objective.gamma, *objective.horizon, tolerance);
   }
   const double tolerance = tolerance_for(value, quotient.blocks);
-  summary = "optimal within " + number(tolerance) + " (discount " + number(objective.gamma) + ")";
+  summary = "optimal within " + number_text(tolerance) + " (discount " +
+            number_text(objective.gamma) + ")";
   return check_discounted(quotient, policy, value, objective.gamma, tolerance);
 }
 

@@ -2,12 +2,12 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <random>
 #include <vector>
 
 #include "oasis/rt/bsp_locator.hpp"
 #include "spec/affine.hpp"
+#include "verify/number_text.hpp"
 #include "verify/row_distance.hpp"
 
 namespace oasis::verify {
@@ -15,12 +15,6 @@ namespace {
 
 using Problem = std::optional<std::string>;
 using Point2 = std::pair<double, double>;
-
-std::string number(double value) {
-  char text[40];
-  std::snprintf(text, sizeof text, "%.10g", value);
-  return text;
-}
 
 // a.x <= c over the abstraction's axes, with the side a cell lies on: `below` keeps
 // a.x <= c, otherwise a.x > c (the boundary rule).
@@ -67,6 +61,39 @@ bool on_path(const std::vector<PathStep>& path, const double* x) {
   for (const PathStep& step : path)
     if ((dot(step.normal, x) <= step.bound) != step.below) return false;
   return true;
+}
+
+// a.x <= c over the whole state vector, in doubles.
+struct LinearForm {
+  std::vector<double> coefficients;
+  double bound = 0;
+};
+
+// A reward of the context as the checks read it: its value and its condition's linear forms
+// (nullopt when the condition is not polyhedral), converted from the spec once.
+struct RewardForm {
+  double value = 0;
+  std::optional<std::vector<LinearForm>> condition;
+};
+
+std::vector<RewardForm> reward_forms(const model::ModelIR& ir, std::size_t context) {
+  std::vector<RewardForm> forms;
+  for (const model::Reward& reward : ir.contexts[context].rewards) {
+    RewardForm form{to_double(reward.value.constant), std::nullopt};
+    const auto constraints =
+        spec::polyhedral_constraints(reward.guard, ir.continuous.size(), ir.regions);
+    if (constraints) {
+      form.condition.emplace();
+      for (const model::LinearConstraint& constraint : *constraints) {
+        LinearForm linear{{}, to_double(constraint.bound)};
+        for (const Rational& a : constraint.coefficients)
+          linear.coefficients.push_back(to_double(a));
+        form.condition->push_back(std::move(linear));
+      }
+    }
+    forms.push_back(std::move(form));
+  }
+  return forms;
 }
 
 // ---- one and two dimensions: cells as polygons -------------------------------------------
@@ -143,53 +170,51 @@ Problem check_areas(const PlanarCells& planar) {
     sum += a;
   }
   if (std::fabs(sum - total) > 1e-9 * total)
-    return "the cells' areas sum to " + number(sum) + ", the domain's is " + number(total);
+    return "the cells' areas sum to " + number_text(sum) + ", the domain's is " +
+           number_text(total);
   return std::nullopt;
 }
 
 // The reward of a cell from the spec: each condition holds on all of it or on none of it
 // (up to a face); nullopt when one cuts through it.
-std::optional<double> planar_reward(const model::ModelIR& ir, std::size_t context,
+std::optional<double> planar_reward(const std::vector<RewardForm>& rewards,
                                     const rt::AbstractionView& abs,
                                     const std::vector<Point2>& polygon) {
   double total = 0;
-  for (const model::Reward& reward : ir.contexts[context].rewards) {
-    const auto constraints =
-        spec::polyhedral_constraints(reward.guard, ir.continuous.size(), ir.regions);
-    if (!constraints) return std::nullopt;
+  for (const RewardForm& reward : rewards) {
+    if (!reward.condition) return std::nullopt;
     bool all = true;
     bool none = false;
-    for (const model::LinearConstraint& constraint : *constraints) {
+    for (const LinearForm& form : *reward.condition) {
       double low = HUGE_VAL;
       double high = -HUGE_VAL;
       for (const Point2& corner : polygon) {
-        double value = to_double(constraint.coefficients[abs.grid.axes[0]]) * corner.first;
-        if (abs.grid.dimension == 2)
-          value += to_double(constraint.coefficients[abs.grid.axes[1]]) * corner.second;
+        double value = form.coefficients[abs.grid.axes[0]] * corner.first;
+        if (abs.grid.dimension == 2) value += form.coefficients[abs.grid.axes[1]] * corner.second;
         low = std::min(low, value);
         high = std::max(high, value);
       }
-      const double bound = to_double(constraint.bound);
-      const double slack = 1e-9 * std::max(1.0, std::fabs(bound));
-      if (low > bound - slack) none = true;
-      if (high > bound + slack) all = false;
+      const double slack = 1e-9 * std::max(1.0, std::fabs(form.bound));
+      if (low > form.bound - slack) none = true;
+      if (high > form.bound + slack) all = false;
     }
     if (none) continue;
     if (!all) return std::nullopt;
-    total += to_double(reward.value.constant);
+    total += reward.value;
   }
   return total;
 }
 
-Problem check_planar_rewards(const model::ModelIR& ir, std::size_t context,
-                             const rt::AbstractionView& abs, const PlanarCells& planar) {
+Problem check_planar_rewards(const std::vector<RewardForm>& rewards, const rt::AbstractionView& abs,
+                             const PlanarCells& planar) {
   for (std::size_t c = 0; c < planar.cells.size(); ++c) {
-    const std::optional<double> reward = planar_reward(ir, context, abs, planar.cells[c]);
+    const std::optional<double> reward = planar_reward(rewards, abs, planar.cells[c]);
     if (!reward) return "a reward condition cuts through cell " + std::to_string(c);
     const double carried = abs.block_reward[abs.cell_block[c]];
     if (std::fabs(carried - *reward) > 1e-12 * std::max(1.0, std::fabs(*reward)))
-      return "cell " + std::to_string(c) + " has reward " + number(*reward) + " but its block " +
-             std::to_string(abs.cell_block[c]) + " says " + number(carried);
+      return "cell " + std::to_string(c) + " has reward " + number_text(*reward) +
+             " but its block " + std::to_string(abs.cell_block[c]) + " says " +
+             number_text(carried);
   }
   return std::nullopt;
 }
@@ -310,7 +335,8 @@ bool in_domain(const model::ModelIR& ir, const rt::AbstractionView& abs, const d
 
 // The locator against plain membership, and (in any dimension) the reward at every point
 // against its cell's block.
-Problem check_points(const model::ModelIR& ir, std::size_t context, const rt::AbstractionView& abs,
+Problem check_points(const model::ModelIR& ir, const std::vector<RewardForm>& rewards,
+                     const rt::AbstractionView& abs,
                      const std::vector<std::vector<PathStep>>& paths, std::size_t& points) {
   std::mt19937_64 random(7);
   std::size_t work = 0;
@@ -335,22 +361,16 @@ Problem check_points(const model::ModelIR& ir, std::size_t context, const rt::Ab
       return "the locator and plain membership disagree at a point";
     if (member == rt::kOutsideCell) continue;
     double reward = 0;
-    for (const model::Reward& r : ir.contexts[context].rewards) {
-      const auto constraints =
-          spec::polyhedral_constraints(r.guard, ir.continuous.size(), ir.regions);
-      bool holds = constraints.has_value();
-      for (const model::LinearConstraint& constraint :
-           constraints.value_or(std::vector<model::LinearConstraint>{})) {
-        double value = 0;
-        for (std::size_t v = 0; v < point.size(); ++v)
-          value += to_double(constraint.coefficients[v]) * point[v];
-        holds = holds && value <= to_double(constraint.bound);
-      }
-      if (holds) reward += to_double(r.value.constant);
+    for (const RewardForm& r : rewards) {
+      bool holds = r.condition.has_value();
+      for (const LinearForm& form : r.condition.value_or(std::vector<LinearForm>{}))
+        holds = holds && dot(form.coefficients, point.data()) <= form.bound;
+      if (holds) reward += r.value;
     }
     if (reward != abs.block_reward[abs.cell_block[member]])
       return "at a point of cell " + std::to_string(member) + " the spec's reward is " +
-             number(reward) + ", its block's " + number(abs.block_reward[abs.cell_block[member]]);
+             number_text(reward) + ", its block's " +
+             number_text(abs.block_reward[abs.cell_block[member]]);
   }
   return std::nullopt;
 }
@@ -362,15 +382,16 @@ PolytopeCellsVerdict check_polytope_cells(const model::ModelIR& ir, std::size_t 
                                           bool with_rows) {
   PolytopeCellsVerdict verdict;
   const std::vector<std::vector<PathStep>> paths = cell_paths(abs);
+  const std::vector<RewardForm> rewards = reward_forms(ir, context);
   std::size_t points = 0;
-  verdict.problem = check_points(ir, context, abs, paths, points);
+  verdict.problem = check_points(ir, rewards, abs, paths, points);
   if (verdict.problem) return verdict;
   verdict.summary = std::to_string(paths.size()) + " polytope cells; locator and rewards at " +
                     std::to_string(points) + " points ok";
   if (abs.grid.dimension > 2) return verdict;
   const PlanarCells planar = planar_cells(ir, abs, paths);
   verdict.problem = check_areas(planar);
-  if (!verdict.problem) verdict.problem = check_planar_rewards(ir, context, abs, planar);
+  if (!verdict.problem) verdict.problem = check_planar_rewards(rewards, abs, planar);
   if (verdict.problem) return verdict;
   verdict.summary += "; cells non-empty, areas summing to the domain's, rewards constant per cell";
   if (!with_rows) return verdict;
@@ -378,7 +399,7 @@ PolytopeCellsVerdict check_polytope_cells(const model::ModelIR& ir, std::size_t 
   verdict.problem = check_planar_rows(ir, context, abs, planar, actions, checked);
   if (!verdict.problem)
     verdict.summary +=
-        "; " + std::to_string(checked) + " sampled rows within epsilon " + number(abs.epsilon);
+        "; " + std::to_string(checked) + " sampled rows within epsilon " + number_text(abs.epsilon);
   return verdict;
 }
 

@@ -1,7 +1,8 @@
 #include "verify/row_distance.hpp"
 
 #include <cmath>
-#include <cstdio>
+
+#include "verify/number_text.hpp"
 
 namespace oasis::verify {
 
@@ -14,13 +15,10 @@ double total_variation(const std::vector<double>& difference) {
 
 std::string row_too_far(std::uint64_t cell, const std::string& action, double variation,
                         double epsilon) {
-  char numbers[96];
-  std::snprintf(numbers, sizeof numbers, "%.10g in total variation, more than epsilon %.10g",
-                variation, epsilon);
   return "cell " + std::to_string(cell) + " under " + action +
          ": from one of its points the successor distribution differs from the catalog's row "
          "by " +
-         numbers;
+         number_text(variation) + " in total variation, more than epsilon " + number_text(epsilon);
 }
 
 }  // namespace oasis::verify
