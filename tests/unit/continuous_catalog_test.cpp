@@ -13,9 +13,9 @@
 
 #include "../support/spec_models.hpp"
 #include "codegen/binary_catalog.hpp"
-#include "pipeline/continuous_catalog_data.hpp"
 #include "oasis/rt/attention_filter.hpp"
 #include "oasis/rt/catalog_file.hpp"
+#include "pipeline/continuous_catalog_data.hpp"
 
 namespace oasis {
 namespace {

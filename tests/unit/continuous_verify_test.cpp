@@ -12,9 +12,9 @@
 #include "../support/scratch_directory.hpp"
 #include "../support/spec_models.hpp"
 #include "codegen/binary_catalog.hpp"
-#include "pipeline/continuous_catalog_data.hpp"
 #include "oasis/rt/catalog_file.hpp"
 #include "pipeline/continuous_catalog.hpp"
+#include "pipeline/continuous_catalog_data.hpp"
 #include "verify/continuous_check.hpp"
 
 namespace oasis {
