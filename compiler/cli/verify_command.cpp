@@ -25,6 +25,16 @@ struct VerifyOptions {
 
 int print_checks(const std::vector<verify::CatalogCheck>& checks);
 
+// True when `view` was compiled from MODEL's very bytes; otherwise says so.
+bool compiled_from_model(const VerifyOptions& options, const rt::CatalogView& view) {
+  const std::uint64_t hash = pipeline::spec_hash_of_file(options.model);
+  if (view.spec_hash == hash) return true;
+  std::cerr << options.result << ": error: the catalog was compiled from another spec (hash "
+            << pipeline::hash_text(view.spec_hash) << ", this one has " << pipeline::hash_text(hash)
+            << "); recompile it\n";
+  return false;
+}
+
 // `verify MODEL CATALOG.bin`: the file loads (magic, checksum, structure), was compiled from
 // this spec, and every item it carries holds (verify/catalog_check.hpp).
 int verify_catalog(const VerifyOptions& options, const model::ExplicitModel& model) {
@@ -34,13 +44,7 @@ int verify_catalog(const VerifyOptions& options, const model::ExplicitModel& mod
     return 1;
   }
   const rt::CatalogView& view = catalog.view();
-  const std::uint64_t hash = pipeline::spec_hash_of_file(options.model);
-  if (view.spec_hash != hash) {
-    std::cerr << options.result << ": error: the catalog was compiled from another spec (hash "
-              << pipeline::hash_text(view.spec_hash) << ", this one has "
-              << pipeline::hash_text(hash) << "); recompile it\n";
-    return 1;
-  }
+  if (!compiled_from_model(options, view)) return 1;
   if (view.is_continuous()) {
     std::cerr << options.result << ": error: a continuous catalog, but the model is explicit\n";
     return 1;
@@ -48,15 +52,15 @@ int verify_catalog(const VerifyOptions& options, const model::ExplicitModel& mod
   return print_checks(verify::check_catalog(model, view));
 }
 
-// A continuous catalog as a view: the binary file loaded (which validates it), or the JSON
-// read back and validated here. nullopt after printing why.
+// The checks of a continuous catalog, whichever file it came from (the binary file, loaded
+// and validated, or the JSON, read back and validated).
 int check_continuous_view(const VerifyOptions& options, const model::ModelIR& ir,
                           const rt::CatalogView& view) {
-  const std::uint64_t hash = pipeline::spec_hash_of_file(options.model);
-  if (view.spec_hash != hash || !view.is_continuous()) {
-    std::cerr << options.result << ": error: the catalog was not compiled from this spec "
-              << "(hash " << pipeline::hash_text(view.spec_hash) << ", this one has "
-              << pipeline::hash_text(hash) << "); recompile it\n";
+  if (!compiled_from_model(options, view)) return 1;
+  if (!view.is_continuous()) {
+    std::cerr << options.result
+              << ": error: an explicit model's catalog, but the spec is "
+                 "continuous\n";
     return 1;
   }
   return print_checks(verify::check_continuous_catalog(ir, view));
