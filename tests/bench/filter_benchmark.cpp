@@ -211,22 +211,33 @@ std::vector<double> random_points(std::uint32_t dimension) {
   return points;
 }
 
+// The arrays of a grid over [0, 5]^dimension, `intervals` equal intervals per axis.
+struct UniformGrid {
+  std::vector<std::uint32_t> axes;
+  std::vector<std::uint32_t> begin{0};
+  std::vector<double> breaks;
+
+  UniformGrid(std::uint32_t intervals, std::uint32_t dimension) {
+    for (std::uint32_t i = 0; i < dimension; ++i) {
+      axes.push_back(i);
+      for (std::uint32_t k = 0; k <= intervals; ++k)
+        breaks.push_back(5.0 * k / intervals);
+      begin.push_back(static_cast<std::uint32_t>(breaks.size()));
+    }
+  }
+  [[nodiscard]] oasis::rt::GridView view() const {
+    return {static_cast<std::uint32_t>(axes.size()), axes.data(), begin.data(), breaks.data()};
+  }
+};
+
 // Point location in a gridded continuous abstraction (grid_locator.hpp): the Go1 catalog's
 // grid at epsilon 0.1 has 84 x 101 intervals over (x, y); the argument is the number of
 // intervals per axis, over `dimension` axes, at random points of the domain.
 void BM_LocateCell(benchmark::State& state) {
   const auto intervals = static_cast<std::uint32_t>(state.range(0));
   const auto dimension = static_cast<std::uint32_t>(state.range(1));
-  std::vector<std::uint32_t> axes;
-  std::vector<std::uint32_t> begin{0};
-  std::vector<double> breaks;
-  for (std::uint32_t i = 0; i < dimension; ++i) {
-    axes.push_back(i);
-    for (std::uint32_t k = 0; k <= intervals; ++k)
-      breaks.push_back(5.0 * k / intervals);
-    begin.push_back(static_cast<std::uint32_t>(breaks.size()));
-  }
-  const oasis::rt::GridView grid{dimension, axes.data(), begin.data(), breaks.data()};
+  const UniformGrid arrays(intervals, dimension);
+  const oasis::rt::GridView grid = arrays.view();
   const std::vector<double> points = random_points(dimension);
   std::size_t next = 0;
   for (auto _ : state) {
@@ -242,15 +253,8 @@ BENCHMARK(BM_LocateCell)->Args({84, 2})->Args({101, 2})->Args({1000, 2})->Args({
 void BM_LocateBsp(benchmark::State& state) {
   const auto depth = static_cast<std::uint32_t>(state.range(0));
   const auto dimension = static_cast<std::uint32_t>(state.range(1));
-  std::vector<std::uint32_t> axes;
-  std::vector<std::uint32_t> begin{0};
-  std::vector<double> breaks;
-  for (std::uint32_t i = 0; i < dimension; ++i) {
-    axes.push_back(i);
-    breaks.insert(breaks.end(), {0.0, 5.0});
-    begin.push_back(static_cast<std::uint32_t>(breaks.size()));
-  }
-  const oasis::rt::GridView grid{dimension, axes.data(), begin.data(), breaks.data()};
+  const UniformGrid arrays(1, dimension);  // the domain box: the BSP refines its one cell
+  const oasis::rt::GridView grid = arrays.view();
   const std::uint32_t internal = (1U << depth) - 1;
   const std::uint32_t nodes = 2 * internal + 1;
   std::vector<double> normal(std::size_t{nodes} * dimension, 0.0);
