@@ -26,15 +26,23 @@ constexpr milliseconds kWatchdogTimeout{200};
 constexpr milliseconds kSchedulingMargin{50};
 constexpr milliseconds kStopHold{100};
 
-SenderOptions options_for(const FakeGo1& robot) {
+// A sender bound on loopback at 200 Hz that leaves process signals to the test, with the
+// given holds of stop and of the final stand.
+SenderOptions loopback_options(const Endpoint& robot, milliseconds stop_hold,
+                               milliseconds stand_hold) {
   SenderOptions options;
-  options.robot = robot.endpoint();
+  options.robot = robot;
   options.local = Endpoint{"127.0.0.1", 0};
   options.rate_hz = 200.0;
-  options.watchdog_timeout = kWatchdogTimeout;
-  options.stop_hold = kStopHold;
-  options.shutdown_stand_hold = milliseconds(50);
+  options.stop_hold = stop_hold;
+  options.shutdown_stand_hold = stand_hold;
   options.obey_stop_signal = false;
+  return options;
+}
+
+SenderOptions options_for(const FakeGo1& robot) {
+  SenderOptions options = loopback_options(robot.endpoint(), kStopHold, milliseconds(50));
+  options.watchdog_timeout = kWatchdogTimeout;
   return options;
 }
 
@@ -282,13 +290,8 @@ TEST(Go1Link, InvalidAddressesGiveClearErrors) {
 TEST(Go1Link, UnreachableRobotIsReportedNotFatal) {
   // A loopback-bound socket cannot reach the real robot's network: every send fails, and the
   // sender keeps running and says why.
-  SenderOptions options;
-  options.local = Endpoint{"127.0.0.1", 0};
-  options.rate_hz = 200.0;
-  options.stop_hold = milliseconds(20);
-  options.shutdown_stand_hold = milliseconds(20);
-  options.obey_stop_signal = false;
-  Sender sender(options);
+  const Endpoint real_robot = SenderOptions{}.robot;  // the default: the Go1's own address
+  Sender sender(loopback_options(real_robot, milliseconds(20), milliseconds(20)));
   sender.set_command({0.2f, 0.0f, 0.0f});
   std::this_thread::sleep_for(milliseconds(50));
   const SenderStatus status = sender.status();
@@ -306,14 +309,7 @@ TEST(Go1Link, SilentRobotLeavesNoStateAndStopsCleanly) {
     UdpSocket placeholder(Endpoint{"127.0.0.1", 0});
     nobody = placeholder.local_endpoint();
   }  // closed: nothing listens there now
-  SenderOptions options;
-  options.robot = nobody;
-  options.local = Endpoint{"127.0.0.1", 0};
-  options.rate_hz = 200.0;
-  options.stop_hold = milliseconds(20);
-  options.shutdown_stand_hold = milliseconds(20);
-  options.obey_stop_signal = false;
-  Sender sender(options);
+  Sender sender(loopback_options(nobody, milliseconds(20), milliseconds(20)));
   sender.set_command({0.2f, 0.0f, 0.0f});
   std::this_thread::sleep_for(milliseconds(50));
   const SenderStatus status = sender.status();
