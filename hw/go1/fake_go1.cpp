@@ -104,11 +104,7 @@ void FakeGo1::integrate_until(Clock::time_point at) {
   if (!in_effect_ || !moves(in_effect_->command)) return;
   const double seconds = std::chrono::duration<double>(at - in_effect_->at).count();
   const HighCommand& command = in_effect_->command;
-  const double forward = command.velocity[0];
-  const double lateral = command.velocity[1];
-  pose_.x += (forward * std::cos(pose_.yaw) - lateral * std::sin(pose_.yaw)) * seconds;
-  pose_.y += (forward * std::sin(pose_.yaw) + lateral * std::cos(pose_.yaw)) * seconds;
-  pose_.yaw += command.yaw_speed * seconds;
+  pose_ = advanced(pose_, {command.velocity[0], command.velocity[1], command.yaw_speed}, seconds);
 }
 
 void FakeGo1::reply(const Endpoint& to) {

@@ -17,6 +17,7 @@
 #include "go1/endpoint.hpp"
 #include "go1/high_cmd.hpp"
 #include "go1/loss_model.hpp"
+#include "go1/planar_pose.hpp"
 #include "go1/udp_socket.hpp"
 
 namespace oasis::hw::go1 {
@@ -28,12 +29,6 @@ struct FakeGo1Options {
   double loss_probability = 0.0;
   std::chrono::milliseconds delay{0};  // from receipt until the command takes effect
   std::uint64_t seed = 1;
-};
-
-struct Pose {
-  double x = 0.0;    // m
-  double y = 0.0;    // m
-  double yaw = 0.0;  // rad
 };
 
 struct FakeGo1Counts {

@@ -1,0 +1,131 @@
+// The loop's decision step on the linked Go1 catalog: the state vector, the filter's belief,
+// the action and its velocity.
+#include "app/attention_controller.hpp"
+
+#include <cmath>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "go1_treat_catalog.hpp"
+
+namespace oasis::hw::app {
+namespace {
+
+// The spec's six actions at its speeds: 0.5 m/s forward, 0.5 rad/s turns (left positive).
+ControllerSettings spec_settings(const rt::CatalogView& catalog) {
+  ControllerSettings settings;
+  for (std::uint32_t a = 0; a < catalog.num_actions; ++a) {
+    const std::string name = catalog.action_names[a];
+    go1::VelocityCommand velocity;
+    if (name.find("straight") != std::string::npos) velocity.forward = 0.5f;
+    if (name.rfind("left", 0) == 0) velocity.yaw_rate = 0.5f;
+    if (name.rfind("right", 0) == 0) velocity.yaw_rate = -0.5f;
+    settings.action_velocity.push_back(velocity);
+  }
+  return settings;
+}
+
+PerceptionResult seen_at(double x1, double y1, double x2, double y2, double reward) {
+  PerceptionResult result;
+  const double positions[2][2] = {{x1, y1}, {x2, y2}};
+  for (std::size_t human = 0; human < 2; ++human) {
+    result.humans[human].seen = true;
+    result.humans[human].x_m = positions[human][0];
+    result.humans[human].y_m = positions[human][1];
+    result.humans[human].confidence = 1.0;
+  }
+  result.reward = reward;
+  return result;
+}
+
+std::uint32_t abstraction_named(const rt::CatalogView& catalog, const std::string& context) {
+  for (std::uint32_t i = 0; i < catalog.num_abstractions; ++i)
+    if (context == catalog.abstractions[i].context) return i;
+  ADD_FAILURE() << "no context " << context;
+  return 0;
+}
+
+TEST(AttentionController, RewardNextToHumanOneSelectsItsContext) {
+  const rt::CatalogView& catalog = go1_treat::catalog();
+  AttentionController controller(catalog, spec_settings(catalog));
+  const log::StepRecord first = controller.decide(seen_at(2.0, 0.5, 2.0, -0.5, 0.0), 0.0, {});
+  EXPECT_EQ(first.step, 0u);
+  EXPECT_EQ(first.filter_status, "ok");
+  ASSERT_EQ(first.belief.size(), 2u);
+  EXPECT_DOUBLE_EQ(first.belief[0] + first.belief[1], 1.0);
+  EXPECT_EQ(first.state, (std::vector<double>{2.0, 0.5, 2.0, -0.5}));
+
+  // Human 1 within reach, human 2 far: a reward of 1 is explained by context 1 only.
+  const log::StepRecord second = controller.decide(seen_at(0.5, 0.0, 3.0, -1.5, 1.0), 0.2, {});
+  const std::uint32_t human1 = abstraction_named(catalog, "human1_holds_treat");
+  EXPECT_EQ(second.abstraction, human1);
+  EXPECT_EQ(second.abstraction_name, "human1_holds_treat");
+  EXPECT_DOUBLE_EQ(second.belief[human1], 1.0);
+  EXPECT_EQ(second.action_name, catalog.action_names[second.action]);
+}
+
+TEST(AttentionController, FollowsTheHolderWithTheMappedVelocity) {
+  const rt::CatalogView& catalog = go1_treat::catalog();
+  AttentionController controller(catalog, spec_settings(catalog));
+  controller.decide(seen_at(3.0, 0.0, 3.0, 0.0, 0.0), 0.0, {});
+  // Human 2 in reach, human 1 far to the left: context 2; its policy keeps human 2 in reach,
+  // and the command is the configured velocity of the chosen action.
+  const log::StepRecord record = controller.decide(seen_at(3.0, 2.0, 0.6, 0.0, 1.0), 0.2, {});
+  EXPECT_EQ(record.abstraction_name, "human2_holds_treat");
+  const ControllerSettings settings = spec_settings(catalog);
+  EXPECT_FLOAT_EQ(static_cast<float>(record.command.forward_m_s),
+                  settings.action_velocity[record.action].forward);
+  EXPECT_FLOAT_EQ(static_cast<float>(record.command.yaw_rate_rad_s),
+                  settings.action_velocity[record.action].yaw_rate);
+}
+
+TEST(AttentionController, UnseenPersonKeepsTheLastPositionOrGoesOutside) {
+  const rt::CatalogView& catalog = go1_treat::catalog();
+  PerceptionResult gone = seen_at(1.0, 0.2, 2.0, -0.4, 0.0);
+  gone.humans[1].seen = false;
+
+  AttentionController holding(catalog, spec_settings(catalog));
+  holding.decide(seen_at(1.0, 0.2, 2.5, -1.0, 0.0), 0.0, {});
+  EXPECT_EQ(holding.decide(gone, 0.2, {}).state, (std::vector<double>{1.0, 0.2, 2.5, -1.0}));
+  // The robot walks 1 m forward: the unseen person, standing still, is now 1 m closer.
+  const log::StepRecord walked = holding.decide(gone, 0.4, {1.0, 0.0, 0.0});
+  EXPECT_NEAR(walked.state[2], 1.5, 1e-12);
+  EXPECT_NEAR(walked.state[3], -1.0, 1e-12);
+
+  ControllerSettings outside = spec_settings(catalog);
+  outside.hold_last_seen = false;
+  AttentionController dropping(catalog, outside);
+  const log::StepRecord record = dropping.decide(gone, 0.0, {});
+  EXPECT_TRUE(std::isnan(record.state[2]) && std::isnan(record.state[3]));
+  EXPECT_EQ(record.filter_status, "ok");
+}
+
+TEST(AttentionController, PeopleOutsideTheDomainArePutAtItsEdge) {
+  const rt::CatalogView& catalog = go1_treat::catalog();
+  const PerceptionResult beside = seen_at(-0.4, -1.2, 7.0, 3.5, 0.0);
+  AttentionController clamping(catalog, spec_settings(catalog));
+  EXPECT_EQ(clamping.decide(beside, 0.0, {}).state, (std::vector<double>{0.0, -1.2, 5.0, 3.0}));
+
+  ControllerSettings outside = spec_settings(catalog);
+  outside.clamp_to_domain = false;
+  AttentionController passing(catalog, outside);
+  EXPECT_EQ(passing.decide(beside, 0.0, {}).state, (std::vector<double>{-0.4, -1.2, 7.0, 3.5}));
+}
+
+TEST(AttentionController, RefusesVelocitiesThatDoNotCoverTheActions) {
+  const rt::CatalogView& catalog = go1_treat::catalog();
+  ControllerSettings settings = spec_settings(catalog);
+  settings.action_velocity.pop_back();
+  EXPECT_THROW(AttentionController(catalog, settings), std::invalid_argument);
+}
+
+TEST(AttentionController, RefusesRobustModeOnACatalogWithoutObservationModel) {
+  const rt::CatalogView& catalog = go1_treat::catalog();
+  ControllerSettings settings = spec_settings(catalog);
+  settings.filter.mode = rt::FilterMode::kRobust;
+  EXPECT_THROW(AttentionController(catalog, settings), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace oasis::hw::app
