@@ -1,6 +1,7 @@
-// One step of the oasis-go1 loop as it is logged (one JSON object per line, step_log.hpp) and
-// scored (table2_metrics.hpp): what perception saw, what the filter believed and chose, what
-// the robot was told, and, when the frames come from a simulator, the ground truth.
+// One step of the oasis-go1 loop as it is logged (one JSON object per line: step_json.hpp, keys
+// and units in README.md) and scored (table2_metrics.hpp): what perception saw, what the filter
+// believed and chose, what the robot was told, and, when the frames come from a simulator, the
+// ground truth.
 #pragma once
 
 #include <array>

@@ -9,8 +9,9 @@
 #include <gtest/gtest.h>
 
 #include "../support/spec_models.hpp"
+#include "metrics/context_metrics.hpp"
+#include "metrics/mean_std.hpp"
 #include "pipeline/catalog_data.hpp"
-#include "sim/metrics.hpp"
 #include "sim/noise.hpp"
 #include "sim/patterns.hpp"
 #include "sim/report.hpp"
@@ -25,31 +26,32 @@ TEST(SimMetrics, LagCountsStepsFromTheSwitchWithinItsSegment) {
   const std::vector<std::uint32_t> inferred{0, 0, 0, 0, 1, 1, 1, 1, 1};
   // Switch at 3: right again at 4 -> lag 1. Switch at 7: never right in 7..8 -> lag 2 (the
   // segment's length).
-  EXPECT_EQ(switch_lags(truth, inferred), (std::vector<std::uint32_t>{1, 2}));
-  const TrialMetrics metrics = trial_metrics(truth, inferred);
-  EXPECT_DOUBLE_EQ(metrics.accuracy, 6.0 / 9.0);
-  EXPECT_DOUBLE_EQ(metrics.avg_lag, 1.5);
-  EXPECT_DOUBLE_EQ(metrics.max_lag, 2.0);
-  EXPECT_EQ(metrics.switches, 2u);
+  EXPECT_EQ(metrics::switch_lags(truth, inferred), (std::vector<std::uint32_t>{1, 2}));
+  const metrics::TrialMetrics trial = metrics::trial_metrics(truth, inferred);
+  EXPECT_DOUBLE_EQ(trial.accuracy, 6.0 / 9.0);
+  EXPECT_DOUBLE_EQ(trial.avg_lag, 1.5);
+  EXPECT_DOUBLE_EQ(trial.max_lag, 2.0);
+  EXPECT_EQ(trial.switches, 2u);
 }
 
 TEST(SimMetrics, RightAtTheSwitchIsLagZeroAndNoSwitchesIsZero) {
   const std::vector<std::uint32_t> truth{0, 1, 0, 1};
-  EXPECT_EQ(switch_lags(truth, truth), (std::vector<std::uint32_t>{0, 0, 0}));
-  EXPECT_DOUBLE_EQ(accuracy(truth, truth), 1.0);
+  EXPECT_EQ(metrics::switch_lags(truth, truth), (std::vector<std::uint32_t>{0, 0, 0}));
+  EXPECT_DOUBLE_EQ(metrics::accuracy(truth, truth), 1.0);
   const std::vector<std::uint32_t> constant{1, 1, 1};
-  const TrialMetrics metrics = trial_metrics(constant, std::vector<std::uint32_t>{0, 1, 0});
-  EXPECT_EQ(metrics.switches, 0u);
-  EXPECT_DOUBLE_EQ(metrics.avg_lag, 0.0);
-  EXPECT_DOUBLE_EQ(metrics.max_lag, 0.0);
-  EXPECT_DOUBLE_EQ(metrics.accuracy, 1.0 / 3.0);
+  const metrics::TrialMetrics trial =
+      metrics::trial_metrics(constant, std::vector<std::uint32_t>{0, 1, 0});
+  EXPECT_EQ(trial.switches, 0u);
+  EXPECT_DOUBLE_EQ(trial.avg_lag, 0.0);
+  EXPECT_DOUBLE_EQ(trial.max_lag, 0.0);
+  EXPECT_DOUBLE_EQ(trial.accuracy, 1.0 / 3.0);
 }
 
 TEST(SimMetrics, MeanAndPopulationStd) {
-  const MeanStd value = mean_std({1.0, 3.0});
+  const metrics::MeanStd value = metrics::mean_std({1.0, 3.0});
   EXPECT_DOUBLE_EQ(value.mean, 2.0);
   EXPECT_DOUBLE_EQ(value.std, 1.0);  // population: sqrt(((1-2)^2 + (3-2)^2) / 2)
-  EXPECT_DOUBLE_EQ(mean_std({}).mean, 0.0);
+  EXPECT_DOUBLE_EQ(metrics::mean_std({}).mean, 0.0);
 }
 
 TEST(SimPatterns, StepSwitchesOnceAt100) {
@@ -59,7 +61,7 @@ TEST(SimPatterns, StepSwitchesOnceAt100) {
   EXPECT_EQ(sequence[99], 0u);
   EXPECT_EQ(sequence[100], 1u);
   EXPECT_EQ(sequence[499], 1u);
-  EXPECT_EQ(switch_lags(sequence, sequence).size(), 1u);
+  EXPECT_EQ(metrics::switch_lags(sequence, sequence).size(), 1u);
   EXPECT_EQ(context_sequence(Pattern::kNoisyStep, 500, 2, rng), sequence);
 }
 
@@ -68,7 +70,7 @@ TEST(SimPatterns, PeriodicSwitchesEveryTenSteps) {
   const auto sequence = context_sequence(Pattern::kPeriodic, 500, 2, rng);
   for (std::uint32_t k = 0; k < 500; ++k)
     EXPECT_EQ(sequence[k], (k / 10) % 2) << k;
-  EXPECT_EQ(switch_lags(sequence, sequence).size(), 49u);
+  EXPECT_EQ(metrics::switch_lags(sequence, sequence).size(), 49u);
 }
 
 TEST(SimPatterns, UniformRandomDrawsEveryContextEvenly) {
@@ -211,7 +213,7 @@ TEST_F(SimTable1, PaperFilterFollowsTheStepPattern) {
         sim.run_trial(spec(Pattern::kStep, NoiseReading::kNone, FilterKind::kPaper, seed), error);
     ASSERT_TRUE(trace) << error;
     ASSERT_EQ(trace->truth.size(), 500u);
-    EXPECT_GE(accuracy(trace->truth, trace->inferred), 0.95) << "seed " << seed;
+    EXPECT_GE(metrics::accuracy(trace->truth, trace->inferred), 0.95) << "seed " << seed;
     EXPECT_EQ(trace->zero_likelihood_steps, 0u);
   }
 }

@@ -10,7 +10,7 @@
 namespace oasis::sim {
 namespace {
 
-std::string cell(const MeanStd& value) {
+std::string cell(const metrics::MeanStd& value) {
   std::ostringstream text;
   text << std::fixed << std::setprecision(2) << value.mean << " ± " << value.std;
   return text.str();
@@ -129,7 +129,7 @@ void print_table(std::ostream& out, const std::vector<RowResult>& rows,
 }
 
 nlohmann::json rows_json(const std::vector<RowResult>& rows) {
-  const auto stat = [](const MeanStd& value) {
+  const auto stat = [](const metrics::MeanStd& value) {
     return nlohmann::json{{"mean", value.mean}, {"std", value.std}};
   };
   nlohmann::json list = nlohmann::json::array();

@@ -11,6 +11,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "metrics/mean_std.hpp"
 #include "sim/table1.hpp"
 
 namespace oasis::sim {
@@ -18,9 +19,9 @@ namespace oasis::sim {
 // The paper's Table I, as printed (mean ± std over five seeds). Reference only: nothing here
 // is computed from it.
 struct PaperReference {
-  MeanStd accuracy;
-  MeanStd avg_lag;
-  MeanStd max_lag;
+  metrics::MeanStd accuracy;
+  metrics::MeanStd avg_lag;
+  metrics::MeanStd max_lag;
 };
 
 std::optional<PaperReference> paper_reference(const std::string& model, Pattern pattern);

@@ -2,6 +2,7 @@
 
 #include <utility>
 
+#include "metrics/context_metrics.hpp"
 #include "oasis/rt/attention_filter.hpp"
 
 namespace oasis::sim {
@@ -218,15 +219,17 @@ std::optional<std::vector<RowResult>> run_table1(const Table1Experiment& experim
             spec.steps = options.steps;
             const std::optional<Trace> trace = experiment.run_trial(spec, error);
             if (!trace) return std::nullopt;
-            const TrialMetrics metrics = trial_metrics(trace->truth, trace->inferred);
-            accuracy.push_back(metrics.accuracy);
-            avg_lag.push_back(metrics.avg_lag);
-            max_lag.push_back(metrics.max_lag);
+            const metrics::TrialMetrics trial =
+                metrics::trial_metrics(trace->truth, trace->inferred);
+            accuracy.push_back(trial.accuracy);
+            avg_lag.push_back(trial.avg_lag);
+            max_lag.push_back(trial.max_lag);
             zero.push_back(trace->zero_likelihood_steps);
             if (sink) sink(spec, *trace);
           }
-          rows.push_back({model.id, pattern, noise, filter, mean_std(accuracy), mean_std(avg_lag),
-                          mean_std(max_lag), mean_std(zero)});
+          rows.push_back({model.id, pattern, noise, filter, metrics::mean_std(accuracy),
+                          metrics::mean_std(avg_lag), metrics::mean_std(max_lag),
+                          metrics::mean_std(zero)});
         }
       }
     }

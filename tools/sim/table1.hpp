@@ -13,7 +13,8 @@
 //     filter's action() is not used), the true state moves under the true context's
 //     transitions P^c(s' | s, a), the noise reading (noise.hpp) produces the observed state
 //     and the reward r = R^c(.), and step(observed, r, a) is called;
-//  4. the ML abstraction after step k is the inferred context at k (metrics.hpp).
+//  4. the ML abstraction after step k is the inferred context at k; the statistics are
+//     metrics/context_metrics.hpp's.
 // The environment's random numbers depend on (seed, pattern, noise) only: every filter and
 // both transition models see the same true contexts, states and noise for a given seed.
 // The filter's own tie-breaking PRNG is seeded with the seed.
@@ -25,9 +26,9 @@
 #include <string_view>
 #include <vector>
 
+#include "metrics/mean_std.hpp"
 #include "model/explicit_model.hpp"
 #include "pipeline/discrete_catalog.hpp"
-#include "sim/metrics.hpp"
 #include "sim/noise.hpp"
 #include "sim/patterns.hpp"
 
@@ -106,10 +107,10 @@ struct RowResult {
   Pattern pattern = Pattern::kStep;
   NoiseReading noise = NoiseReading::kNone;
   FilterKind filter = FilterKind::kPaper;
-  MeanStd accuracy;
-  MeanStd avg_lag;
-  MeanStd max_lag;
-  MeanStd zero_likelihood_steps;
+  metrics::MeanStd accuracy;
+  metrics::MeanStd avg_lag;
+  metrics::MeanStd max_lag;
+  metrics::MeanStd zero_likelihood_steps;
 };
 
 struct Table1Options {

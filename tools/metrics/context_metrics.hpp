@@ -1,5 +1,8 @@
 #pragma once
-// The statistics of Table I, computed from a trial's true and inferred (ML) contexts.
+// The per-trial statistics of the paper's tables, computed from a trial's true and inferred
+// (ML) contexts, one entry per step. The paper defines them in words (Sec. IV, footnotes on
+// accuracy and lag); this is the one reading of those words that Table I (tools/sim) and
+// Table II (hw/log) share.
 //
 //  * accuracy: the fraction of steps k at which inferred[k] == truth[k].
 //  * switch:   a step k >= 1 with truth[k] != truth[k-1]. Its segment runs from k up to (not
@@ -9,19 +12,18 @@
 //              step itself; the segment's length if it is never right within the segment.
 //  * avg lag:  the mean of the lags of the trial's switches; max lag: their maximum. Both are 0
 //              for a trial without switches.
-// Over seeds, every statistic is summarised as mean and *population* standard deviation
-// (divide by the number of seeds, as numpy.std does by default).
+// Lags are in steps; a caller that reports seconds multiplies by its step period.
 
 #include <cstddef>
 #include <cstdint>
 #include <vector>
 
-namespace oasis::sim {
+namespace oasis::metrics {
 
 struct TrialMetrics {
   double accuracy = 0.0;
-  double avg_lag = 0.0;
-  double max_lag = 0.0;
+  double avg_lag = 0.0;  // steps
+  double max_lag = 0.0;  // steps
   std::size_t switches = 0;
 };
 
@@ -29,17 +31,11 @@ struct TrialMetrics {
 std::vector<std::uint32_t> switch_lags(const std::vector<std::uint32_t>& truth,
                                        const std::vector<std::uint32_t>& inferred);
 
+// 0 for an empty trial. truth and inferred have equal length.
 double accuracy(const std::vector<std::uint32_t>& truth,
                 const std::vector<std::uint32_t>& inferred);
 
 TrialMetrics trial_metrics(const std::vector<std::uint32_t>& truth,
                            const std::vector<std::uint32_t>& inferred);
 
-struct MeanStd {
-  double mean = 0.0;
-  double std = 0.0;  // population standard deviation
-};
-
-MeanStd mean_std(const std::vector<double>& values);
-
-}  // namespace oasis::sim
+}  // namespace oasis::metrics

@@ -1,10 +1,9 @@
-#include "sim/metrics.hpp"
+#include "metrics/context_metrics.hpp"
 
 #include <algorithm>
 #include <cassert>
-#include <cmath>
 
-namespace oasis::sim {
+namespace oasis::metrics {
 
 std::vector<std::uint32_t> switch_lags(const std::vector<std::uint32_t>& truth,
                                        const std::vector<std::uint32_t>& inferred) {
@@ -49,18 +48,4 @@ TrialMetrics trial_metrics(const std::vector<std::uint32_t>& truth,
   return metrics;
 }
 
-MeanStd mean_std(const std::vector<double>& values) {
-  MeanStd result;
-  if (values.empty()) return result;
-  const auto n = static_cast<double>(values.size());
-  for (double v : values)
-    result.mean += v;
-  result.mean /= n;
-  double squares = 0.0;
-  for (double v : values)
-    squares += (v - result.mean) * (v - result.mean);
-  result.std = std::sqrt(squares / n);
-  return result;
-}
-
-}  // namespace oasis::sim
+}  // namespace oasis::metrics
