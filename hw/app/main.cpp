@@ -1,0 +1,47 @@
+// oasis-go1: Online Attention Switching on a Unitree Go1 - the 5 Hz loop camera -> perception
+// -> filter -> policy -> robot, its logs and their Table II score.
+
+#include <iostream>
+#include <map>
+
+#include <CLI/CLI.hpp>
+
+#include "app/commands.hpp"
+
+int main(int argc, char** argv) {
+  CLI::App app{
+      "oasis-go1: follow whichever of two people holds the treat, with Online "
+      "Attention Switching on a Unitree Go1",
+      "oasis-go1"};
+  app.require_subcommand(1);
+  app.footer(
+      "Start with a dry run on the synthetic world, which needs neither robot nor camera:\n"
+      "  oasis-go1 run --dry-run --source synthetic --steps 150 --log run.jsonl\n"
+      "  oasis-go1 score run.jsonl\n"
+      "Before the real robot, read hw/README.md (\"On the robot\"). Run 'oasis-go1 COMMAND "
+      "--help' for a command's options.");
+
+  std::map<const CLI::App*, oasis::hw::app::CommandRunner> runners;
+  auto add = [&](oasis::hw::app::CommandRunner runner) {
+    runners.emplace(app.get_subcommands({}).back(), std::move(runner));
+  };
+  add(oasis::hw::app::add_run_command(app));
+  add(oasis::hw::app::add_replay_command(app));
+  add(oasis::hw::app::add_record_command(app));
+  add(oasis::hw::app::add_score_command(app));
+  add(oasis::hw::app::add_config_command(app));
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    const int status = app.exit(e);
+    return status == 0 ? 0 : 2;  // bad usage, distinct from 1 (an error in the input)
+  }
+  try {
+    for (const CLI::App* command : app.get_subcommands())
+      return runners.at(command)();
+  } catch (const std::exception& e) {
+    std::cerr << "oasis-go1: error: " << e.what() << '\n';
+  }
+  return 1;
+}

@@ -1,0 +1,83 @@
+// `oasis-go1 record`: write frames from a source to a recording folder, for replay and for
+// tests. Nothing is sent to a robot; the synthetic world's robot stands still.
+
+#include <iostream>
+#include <memory>
+#include <string>
+#include <variant>
+
+#include "app/commands.hpp"
+#include "app/robot_link.hpp"
+#include "app/session.hpp"
+#include "camera/camera_error.hpp"
+#include "camera/recording_writer.hpp"
+#include "settings/settings.hpp"
+
+namespace oasis::hw::app {
+namespace {
+
+struct RecordRequest {
+  std::string config;
+  std::string source = "synthetic";
+  std::string folder;
+  std::uint64_t frames = 50;
+  bool replace = false;
+};
+
+int record(const RecordRequest& request) {
+  settings::Go1Settings settings = request.config.empty() ? settings::default_settings()
+                                                          : settings::load_settings(request.config);
+  const std::optional<settings::FrameSourceSetting> source_setting =
+      settings::parse_frame_source(request.source);
+  if (!source_setting)
+    throw SetupError("--source: expected synthetic, camera or recorded:DIR, got \"" +
+                     request.source + "\"");
+  settings.source = *source_setting;
+  const SessionCatalog catalog(settings.loop.catalog);
+  DryRunLink standing;
+  SessionSource source = open_source(settings, catalog.view(), standing);
+  camera::RecordingWriter writer(request.folder, request.replace ? camera::ExistingFolder::kReplace
+                                                                 : camera::ExistingFolder::kRefuse);
+  for (std::uint64_t k = 0; k < request.frames; ++k) {
+    NextFrame next = source.source->next();
+    if (const SourceStop* stop = std::get_if<SourceStop>(&next)) {
+      if (stop->kind == SourceStop::Kind::kFailure) throw SetupError(stop->reason);
+      break;
+    }
+    writer.write(std::get<Frame>(next),
+                 source.true_holder ? source.true_holder() : std::optional<TreatHolder>{});
+  }
+  writer.finish();
+  std::cerr << "oasis-go1: wrote " << writer.frames_written() << " frames to " << request.folder
+            << '\n';
+  return 0;
+}
+
+}  // namespace
+
+CommandRunner add_record_command(CLI::App& app) {
+  auto request = std::make_shared<RecordRequest>();
+  CLI::App* command =
+      app.add_subcommand("record", "write frames from a source into a recording folder");
+  command->add_option("folder", request->folder, "the recording's folder (created)")->required();
+  command->add_option("--source", request->source, "synthetic (default) or camera");
+  command->add_option("--frames", request->frames, "how many frames (default 50)")
+      ->check(CLI::Range(1, 100000));
+  command->add_option("--config", request->config, "YAML settings (camera, perception)")
+      ->check(CLI::ExistingFile);
+  command->add_flag("--replace", request->replace, "replace an earlier recording in the folder");
+  return [request] {
+    try {
+      return record(*request);
+    } catch (const settings::SettingsError& e) {
+      std::cerr << e.what() << '\n';
+    } catch (const SetupError& e) {
+      std::cerr << "oasis-go1: error: " << e.what() << '\n';
+    } catch (const camera::CameraError& e) {
+      std::cerr << "oasis-go1: error: " << e.what() << '\n';
+    }
+    return 1;
+  };
+}
+
+}  // namespace oasis::hw::app

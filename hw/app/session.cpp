@@ -1,0 +1,122 @@
+#include "app/session.hpp"
+
+#include <cstring>
+
+#include "app/go1_link.hpp"
+#include "app/synthetic_world.hpp"
+#include "camera/camera_error.hpp"
+#include "camera/live_camera.hpp"
+#include "camera/recorded_source.hpp"
+#include "go1/link_error.hpp"
+#include "go1_treat_catalog.hpp"
+
+namespace oasis::hw::app {
+namespace {
+
+// The catalog's index of the context "human N holds the treat" (the Go1 spec's names).
+std::optional<std::uint32_t> context_of(const rt::CatalogView& catalog, TreatHolder holder) {
+  const char* name = holder == TreatHolder::kHuman1 ? "human1_holds_treat" : "human2_holds_treat";
+  for (std::uint32_t i = 0; i < catalog.num_abstractions; ++i)
+    if (std::strcmp(catalog.abstractions[i].context, name) == 0) return i;
+  return std::nullopt;
+}
+
+SessionSource synthetic_source(const settings::Go1Settings& settings,
+                               const rt::CatalogView& catalog, RobotLink& link) {
+  SyntheticWorldSettings world;
+  world.period_s = 1.0 / settings.loop.rate_hz;
+  world.render.intrinsics = settings.camera.intrinsics;
+  world.render.depth_scale_m_per_unit = settings.camera.depth_scale_m_per_unit;
+  world.render.mount = settings.perception.mount;
+  world.reach = settings.perception.reach;
+  auto source = std::make_unique<SyntheticWorld>(world, [&link] { return link.pose(); });
+  SessionSource session;
+  session.description = "synthetic world (two people, the treat handed over at 12 s and 24 s)";
+  const std::optional<std::uint32_t> human1 = context_of(catalog, TreatHolder::kHuman1);
+  const std::optional<std::uint32_t> human2 = context_of(catalog, TreatHolder::kHuman2);
+  if (human1 && human2) {
+    session.truth = [world = source.get(), one = *human1,
+                     two = *human2]() -> std::optional<log::GroundTruth> {
+      const std::optional<WorldTruth>& truth = world->truth_of_last_frame();
+      if (!truth || truth->holder == TreatHolder::kNone) return std::nullopt;
+      return log::GroundTruth{truth->holder == TreatHolder::kHuman1 ? one : two,
+                              truth->holder_in_reach ? 1.0 : 0.0};
+    };
+  }
+  session.true_holder = [world = source.get()]() -> std::optional<TreatHolder> {
+    const std::optional<WorldTruth>& truth = world->truth_of_last_frame();
+    if (!truth) return std::nullopt;
+    return truth->holder;
+  };
+  session.source = std::move(source);
+  return session;
+}
+
+}  // namespace
+
+SessionCatalog::SessionCatalog(const std::string& setting) {
+  if (setting == settings::kLinkedCatalog) {
+    view_ = &go1_treat::catalog();
+    description_ = "linked catalog go1_treat (generated/go1_treat)";
+    return;
+  }
+  loaded_ = rt::LoadedCatalog::from_file(setting);
+  if (!loaded_.ok()) throw SetupError("catalog " + setting + ": " + loaded_.error());
+  view_ = &loaded_.view();
+  description_ = "catalog " + setting;
+}
+
+std::unique_ptr<RobotLink> open_link(const settings::Go1Settings& settings, bool dry_run,
+                                     std::chrono::milliseconds robot_timeout) {
+  if (dry_run) return std::make_unique<DryRunLink>();
+  std::unique_ptr<Go1Link> link;
+  try {
+    link = std::make_unique<Go1Link>(settings.link);
+  } catch (const go1::LinkError& e) {
+    throw SetupError(std::string("robot link: ") + e.what());
+  }
+  if (!link->wait_for_robot(robot_timeout)) {
+    const std::string report = link->silence_report();
+    link->shut_down();
+    throw SetupError("the robot did not answer within " + std::to_string(robot_timeout.count()) +
+                     " ms: " + report +
+                     ". Check that the robot is on and standing, that this machine is on its "
+                     "network (192.168.123.x), and robot.level_flag (hw/README.md, \"First "
+                     "checks\"); or run with --dry-run.");
+  }
+  return link;
+}
+
+SessionSource open_source(const settings::Go1Settings& settings, const rt::CatalogView& catalog,
+                          RobotLink& link) {
+  using Kind = settings::FrameSourceSetting::Kind;
+  try {
+    switch (settings.source.kind) {
+      case Kind::kSynthetic:
+        return synthetic_source(settings, catalog, link);
+      case Kind::kCamera: {
+        SessionSource session;
+        session.source = std::make_unique<camera::LiveCamera>(settings.camera);
+        session.realtime_only = true;
+        session.description = "camera " + settings.camera.colour_device + " (colour) + " +
+                              settings.camera.depth_device + " (depth)";
+        return session;
+      }
+      case Kind::kRecorded: {
+        SessionSource session;
+        auto recording = std::make_unique<camera::RecordedSource>(settings.source.directory);
+        session.true_holder = [recording = recording.get()] {
+          return recording->truth_of_last_frame();
+        };
+        session.source = std::move(recording);
+        session.description = "recording " + settings.source.directory;
+        return session;
+      }
+    }
+  } catch (const camera::CameraError& e) {
+    throw SetupError(e.what());
+  }
+  throw SetupError("unknown frame source");
+}
+
+}  // namespace oasis::hw::app

@@ -1,0 +1,63 @@
+#pragma once
+// What `oasis-go1 run` and `replay` assemble from the settings before the loop starts: the
+// catalog (linked or loaded), the robot link (the Go1 or a dry run), the frame source
+// (synthetic world, live camera, recording), and the ground truth when the source knows it.
+// Each part fails here, before anything moves, with an error that says what to check.
+#include <chrono>
+#include <functional>
+#include <memory>
+#include <optional>
+#include <stdexcept>
+#include <string>
+
+#include "app/robot_link.hpp"
+#include "log/step_record.hpp"
+#include "oasis/rt/catalog_file.hpp"
+#include "perception/frame.hpp"
+#include "perception/treat_holder.hpp"
+#include "settings/settings.hpp"
+
+namespace oasis::hw::app {
+
+// An error that ends oasis-go1 with status 1 before (or instead of) running the loop.
+class SetupError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+// The catalog the loop runs: the one linked into oasis-go1, or a .bin file. Throws SetupError.
+class SessionCatalog {
+ public:
+  explicit SessionCatalog(const std::string& setting);  // "linked" or a path
+  const rt::CatalogView& view() const { return *view_; }
+  std::string describe() const { return description_; }
+
+ private:
+  rt::LoadedCatalog loaded_;
+  const rt::CatalogView* view_ = nullptr;
+  std::string description_;
+};
+
+// The Go1 link after the robot answered, or a dry run. Throws SetupError when the robot does
+// not answer within `robot_timeout` (the sender meanwhile only ever commanded stand).
+std::unique_ptr<RobotLink> open_link(const settings::Go1Settings& settings, bool dry_run,
+                                     std::chrono::milliseconds robot_timeout);
+
+struct SessionSource {
+  std::unique_ptr<FrameSource> source;
+  // The ground truth of the frame just taken, for the log: the synthetic world knows it. A
+  // recording knows only the holder, not the true reward, so its log has no truth column.
+  std::function<std::optional<log::GroundTruth>()> truth;
+  // Who truly held the treat in the frame just taken (recordings written from the synthetic
+  // world keep it); empty when unknown.
+  std::function<std::optional<TreatHolder>()> true_holder;
+  bool realtime_only = false;  // a live camera: frames come at the camera's pace anyway
+  std::string description;
+};
+
+// Opens settings.source. The synthetic world sees the robot where `link` says it is. Throws
+// SetupError (a missing camera, a bad recording).
+SessionSource open_source(const settings::Go1Settings& settings, const rt::CatalogView& catalog,
+                          RobotLink& link);
+
+}  // namespace oasis::hw::app

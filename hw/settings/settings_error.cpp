@@ -1,0 +1,55 @@
+#include "settings/settings_error.hpp"
+
+#include <algorithm>
+#include <utility>
+
+namespace oasis::hw::settings {
+
+namespace {
+
+std::string join_formatted(const std::string& file, const std::vector<Diagnostic>& diagnostics) {
+  std::string text;
+  for (const Diagnostic& diagnostic : diagnostics) {
+    if (!text.empty()) text += '\n';
+    text += format_diagnostic(file, diagnostic);
+  }
+  return text;
+}
+
+// Positioned problems first, in file order; those without a place keep their order at the end.
+std::vector<Diagnostic> in_file_order(std::vector<Diagnostic> diagnostics) {
+  std::stable_sort(diagnostics.begin(), diagnostics.end(),
+                   [](const Diagnostic& a, const Diagnostic& b) {
+                     if ((a.line == 0) != (b.line == 0)) return b.line == 0;
+                     if (a.line != b.line) return a.line < b.line;
+                     return a.column < b.column;
+                   });
+  return diagnostics;
+}
+
+}  // namespace
+
+std::string format_diagnostic(const std::string& file, const Diagnostic& diagnostic) {
+  std::string text = file;
+  if (diagnostic.line > 0)
+    text += ":" + std::to_string(diagnostic.line) + ":" + std::to_string(diagnostic.column);
+  text += ": error: ";
+  if (!diagnostic.key.empty()) text += diagnostic.key + ": ";
+  text += diagnostic.message;
+  if (diagnostic.line > 0 && !diagnostic.source_line.empty()) {
+    text += "\n  " + diagnostic.source_line + "\n  ";
+    // Tabs stay tabs so that the caret lines up however the terminal draws them.
+    const auto width = static_cast<std::size_t>(std::max(diagnostic.column - 1, 0));
+    for (std::size_t i = 0; i < width && i < diagnostic.source_line.size(); ++i)
+      text += diagnostic.source_line[i] == '\t' ? '\t' : ' ';
+    text += '^';
+  }
+  return text;
+}
+
+SettingsError::SettingsError(std::string file, std::vector<Diagnostic> diagnostics)
+    : std::runtime_error(join_formatted(file, in_file_order(diagnostics))),
+      file_(std::move(file)),
+      diagnostics_(in_file_order(std::move(diagnostics))) {}
+
+}  // namespace oasis::hw::settings

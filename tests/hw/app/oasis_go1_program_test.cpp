@@ -1,0 +1,179 @@
+// The oasis-go1 program as a user runs it: a dry run that logs and scores, the fake Go1 driven
+// over loopback and stopped by SIGTERM, and clear errors (exit 1) for a malformed config, a
+// missing camera and a robot that does not answer - never a moving robot.
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include <gtest/gtest.h>
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include "go1/fake_go1.hpp"
+
+namespace {
+
+namespace fs = std::filesystem;
+using std::chrono::milliseconds;
+
+constexpr milliseconds kSchedulingMargin{50};
+
+struct Outcome {
+  int status = -1;  // exit status, or -1 when killed by a signal
+  int signal = 0;
+  std::string output;  // standard output and error together
+};
+
+fs::path scratch(const std::string& name) {
+  const fs::path folder =
+      fs::temp_directory_path() / ("oasis_go1_program_test_" + std::to_string(::getpid()));
+  fs::create_directories(folder);
+  return folder / name;
+}
+
+// Runs oasis-go1 with `arguments`; output goes to a file so a chatty run cannot block.
+pid_t start(const std::vector<std::string>& arguments, const fs::path& output) {
+  const pid_t child = ::fork();
+  if (child == 0) {
+    std::FILE* out = std::freopen(output.c_str(), "w", stdout);
+    if (out == nullptr || ::dup2(::fileno(stdout), 2) < 0) ::_exit(127);
+    std::vector<char*> argv{const_cast<char*>(OASIS_GO1_PROGRAM)};
+    for (const std::string& argument : arguments)
+      argv.push_back(const_cast<char*>(argument.c_str()));
+    argv.push_back(nullptr);
+    ::execv(OASIS_GO1_PROGRAM, argv.data());
+    ::_exit(127);
+  }
+  return child;
+}
+
+Outcome finish(pid_t child, const fs::path& output) {
+  Outcome outcome;
+  int status = 0;
+  ::waitpid(child, &status, 0);
+  if (WIFEXITED(status)) outcome.status = WEXITSTATUS(status);
+  if (WIFSIGNALED(status)) outcome.signal = WTERMSIG(status);
+  std::ifstream in(output);
+  std::stringstream text;
+  text << in.rdbuf();
+  outcome.output = text.str();
+  return outcome;
+}
+
+Outcome run(const std::vector<std::string>& arguments) {
+  const fs::path output = scratch("output.txt");
+  return finish(start(arguments, output), output);
+}
+
+std::size_t lines_in(const fs::path& file) {
+  std::ifstream in(file);
+  std::size_t lines = 0;
+  for (std::string line; std::getline(in, line);)
+    ++lines;
+  return lines;
+}
+
+fs::path write_config(const std::string& name, const std::string& yaml) {
+  const fs::path file = scratch(name);
+  std::ofstream(file) << yaml;
+  return file;
+}
+
+TEST(OasisGo1Program, DryRunOnTheSyntheticWorldLogsEveryStepAndScores) {
+  const fs::path log = scratch("dry.jsonl");
+  const Outcome dry = run({"run", "--dry-run", "--source", "synthetic", "--fast", "--steps", "150",
+                           "--log", log.string(), "--quiet"});
+  ASSERT_EQ(dry.status, 0) << dry.output;
+  EXPECT_EQ(lines_in(log), 150u);
+
+  const Outcome score = run({"score", "--json", log.string()});
+  ASSERT_EQ(score.status, 0) << score.output;
+  EXPECT_NE(score.output.find("\"accuracy\""), std::string::npos) << score.output;
+  EXPECT_NE(score.output.find("\"normalized_reward\""), std::string::npos) << score.output;
+}
+
+TEST(OasisGo1Program, RecordThenReplay) {
+  const fs::path folder = scratch("recording");
+  fs::remove_all(folder);
+  const Outcome recorded = run({"record", folder.string(), "--frames", "12"});
+  ASSERT_EQ(recorded.status, 0) << recorded.output;
+  const fs::path log = scratch("replay.jsonl");
+  const Outcome replayed = run({"replay", folder.string(), "--log", log.string(), "--quiet"});
+  ASSERT_EQ(replayed.status, 0) << replayed.output;
+  EXPECT_EQ(lines_in(log), 12u);
+}
+
+TEST(OasisGo1Program, SigtermStopsThenStandsTheFakeGo1) {
+  oasis::hw::go1::FakeGo1 robot;
+  const std::string address = "127.0.0.1:" + std::to_string(robot.endpoint().port);
+  const fs::path config =
+      write_config("loopback.yaml", "robot:\n  local_address: 127.0.0.1\n  local_port: 0\n");
+  const fs::path output = scratch("sigterm.txt");
+  const pid_t child = start(
+      {"run", "--config", config.string(), "--source", "synthetic", "--robot", address, "--quiet"},
+      output);
+  std::this_thread::sleep_for(milliseconds(3000));
+  const auto signalled = std::chrono::steady_clock::now();
+  ASSERT_EQ(::kill(child, SIGTERM), 0);
+  const Outcome outcome = finish(child, output);
+  EXPECT_EQ(outcome.signal, SIGTERM) << "status " << outcome.status << ": " << outcome.output;
+
+  const std::vector<oasis::hw::go1::AppliedCommand> applied = robot.applied_commands();
+  ASSERT_FALSE(applied.empty()) << outcome.output;
+  bool moved = false;
+  for (const auto& command : applied)
+    moved = moved || command.command.velocity[0] > 0.0f;
+  EXPECT_TRUE(moved) << "the loop never drove the robot forward: " << outcome.output;
+  // After the signal: stopped at once (walking at zero), then told to stand.
+  std::optional<std::chrono::steady_clock::time_point> stopped;
+  for (const auto& command : applied)
+    if (command.at >= signalled && !stopped && command.command.velocity[0] == 0.0f &&
+        command.command.velocity[1] == 0.0f && command.command.yaw_speed == 0.0f)
+      stopped = command.at;
+  ASSERT_TRUE(stopped.has_value()) << outcome.output;
+  EXPECT_LE(std::chrono::duration_cast<milliseconds>(*stopped - signalled).count(),
+            kSchedulingMargin.count());
+  EXPECT_EQ(applied.back().command.mode, oasis::hw::go1::Mode::kIdle);
+}
+
+TEST(OasisGo1Program, UnreachableRobotIsAnErrorAndNothingRuns) {
+  // A fake Go1 that is gone: its port is free, nobody answers.
+  std::uint16_t port = 0;
+  {
+    oasis::hw::go1::FakeGo1 gone;
+    port = gone.endpoint().port;
+  }
+  const fs::path config =
+      write_config("unreachable.yaml", "robot:\n  local_address: 127.0.0.1\n  local_port: 0\n");
+  const Outcome outcome =
+      run({"run", "--config", config.string(), "--source", "synthetic", "--robot",
+           "127.0.0.1:" + std::to_string(port), "--robot-timeout-ms", "300", "--quiet"});
+  EXPECT_EQ(outcome.status, 1);
+  EXPECT_NE(outcome.output.find("did not answer"), std::string::npos) << outcome.output;
+}
+
+TEST(OasisGo1Program, MalformedConfigNamesTheKey) {
+  const fs::path config = write_config("bad.yaml", "robot:\n  port: 80x2\n");
+  const Outcome outcome = run({"run", "--dry-run", "--config", config.string()});
+  EXPECT_EQ(outcome.status, 1);
+  EXPECT_NE(outcome.output.find("robot.port"), std::string::npos) << outcome.output;
+  EXPECT_NE(outcome.output.find("bad.yaml:2:"), std::string::npos) << outcome.output;
+}
+
+TEST(OasisGo1Program, MissingCameraNamesTheDevice) {
+  const fs::path config = write_config("camera.yaml",
+                                       "camera:\n  colour_device: /dev/oasis-no-such-camera\n  "
+                                       "depth_device: /dev/oasis-no-such-depth\n");
+  const Outcome outcome =
+      run({"run", "--dry-run", "--source", "camera", "--config", config.string(), "--quiet"});
+  EXPECT_EQ(outcome.status, 1);
+  EXPECT_NE(outcome.output.find("/dev/oasis-no-such"), std::string::npos) << outcome.output;
+}
+
+}  // namespace
