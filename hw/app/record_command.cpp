@@ -27,12 +27,7 @@ struct RecordRequest {
 int record(const RecordRequest& request) {
   settings::Go1Settings settings = request.config.empty() ? settings::default_settings()
                                                           : settings::load_settings(request.config);
-  const std::optional<settings::FrameSourceSetting> source_setting =
-      settings::parse_frame_source(request.source);
-  if (!source_setting)
-    throw SetupError("--source: expected synthetic, camera or recorded:DIR, got \"" +
-                     request.source + "\"");
-  settings.source = *source_setting;
+  settings.source = source_option(request.source);
   const SessionCatalog catalog(settings.loop.catalog);
   DryRunLink standing;
   SessionSource source = open_source(settings, catalog.view(), standing);

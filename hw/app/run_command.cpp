@@ -38,14 +38,7 @@ struct RunRequest {
 settings::Go1Settings effective_settings(const RunRequest& request) {
   settings::Go1Settings result = request.config.empty() ? settings::default_settings()
                                                         : settings::load_settings(request.config);
-  if (!request.source.empty()) {
-    const std::optional<settings::FrameSourceSetting> source =
-        settings::parse_frame_source(request.source);
-    if (!source)
-      throw SetupError("--source: expected synthetic, camera or recorded:DIR, got \"" +
-                       request.source + "\"");
-    result.source = *source;
-  }
+  if (!request.source.empty()) result.source = source_option(request.source);
   if (!request.catalog.empty()) result.loop.catalog = request.catalog;
   if (!request.robot.empty()) {
     try {

@@ -54,6 +54,13 @@ SessionSource synthetic_source(const settings::Go1Settings& settings,
 
 }  // namespace
 
+settings::FrameSourceSetting source_option(const std::string& text) {
+  const std::optional<settings::FrameSourceSetting> source = settings::parse_frame_source(text);
+  if (!source)
+    throw SetupError("--source: expected synthetic, camera or recorded:DIR, got \"" + text + "\"");
+  return *source;
+}
+
 SessionCatalog::SessionCatalog(const std::string& setting) {
   if (setting == settings::kLinkedCatalog) {
     view_ = &go1_treat::catalog();

@@ -25,6 +25,9 @@ class SetupError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+// The value of a --source option: synthetic, camera or recorded:DIR. Throws SetupError.
+settings::FrameSourceSetting source_option(const std::string& text);
+
 // The catalog the loop runs: the one linked into oasis-go1, or a .bin file. Throws SetupError.
 class SessionCatalog {
  public:

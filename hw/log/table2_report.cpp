@@ -5,27 +5,20 @@
 #include <sstream>
 #include <string>
 
+#include "metrics/table_text.hpp"
+
 namespace oasis::hw::log {
 namespace {
 
 std::string cell(const std::optional<metrics::MeanStd>& value) {
   if (!value) return "unavailable";
-  std::ostringstream text;
-  text << std::fixed << std::setprecision(2) << value->mean << " ± " << value->std;
-  return text.str();
-}
-
-// Pads to `width` display columns ("±" is two bytes, one column).
-std::string pad(const std::string& text, std::size_t width) {
-  std::size_t columns = 0;
-  for (unsigned char c : text)
-    if ((c & 0xC0) != 0x80) ++columns;
-  return text + std::string(columns < width ? width - columns : 0, ' ');
+  return metrics::mean_std_text(*value);
 }
 
 void print_row(std::ostream& out, const char* name, const std::optional<metrics::MeanStd>& ours,
                const metrics::MeanStd& paper) {
-  out << pad(name, 20) << "| " << pad(cell(ours), 14) << "| " << cell(paper) << '\n';
+  out << metrics::pad_columns(name, 20) << "| " << metrics::pad_columns(cell(ours), 14) << "| "
+      << cell(paper) << '\n';
 }
 
 std::string reward_sources(const Table2Summary& summary) {
@@ -47,7 +40,8 @@ void print_table2(std::ostream& out, const Table2Summary& summary) {
   out << "Table II, continuous-space tracking (Go1 treat): ours = mean ± population std over "
       << summary.trials << " trial(s); 'paper' is the paper's printed row over " << paper.trials
       << " trials (reference, not computed).\n";
-  out << pad("statistic", 20) << "| " << pad("ours", 14) << "| paper\n";
+  out << metrics::pad_columns("statistic", 20) << "| " << metrics::pad_columns("ours", 14)
+      << "| paper\n";
   print_row(out, "accuracy", summary.accuracy, paper.accuracy);
   print_row(out, "average lag (s)", summary.avg_lag_s, paper.avg_lag_s);
   print_row(out, "max. lag (s)", summary.max_lag_s, paper.max_lag_s);

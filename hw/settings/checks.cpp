@@ -92,12 +92,7 @@ class Checker {
   }
 
  private:
-  std::string path(std::string_view key) const {
-    std::string text;
-    for (const std::string& part : prefix_)
-      text += part + ".";
-    return text + std::string(key);
-  }
+  std::string path(std::string_view key) const { return dotted_key(prefix_, key); }
   void report(std::string key, std::string message) {
     out_.push_back({0, 0, std::move(key), std::move(message), {}});
   }

@@ -200,6 +200,15 @@ struct CatalogCodec {
   std::string format(const std::string& value) const { return yaml_string(value); }
 };
 
+// The dotted path of `key` inside the sections `prefix` ("robot", "port" -> "robot.port"), as
+// errors and comparisons name keys.
+inline std::string dotted_key(const std::vector<std::string>& prefix, std::string_view key) {
+  std::string text;
+  for (const std::string& part : prefix)
+    text += part + ".";
+  return text + std::string(key);
+}
+
 // "synthetic", "camera", or "recorded:DIR".
 struct SourceCodec {
   std::string expected() const { return "synthetic, camera, or recorded:DIR"; }

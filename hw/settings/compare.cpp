@@ -47,12 +47,7 @@ class Flattener {
   std::vector<std::pair<std::string, std::string>> pairs;
 
  private:
-  std::string path(std::string_view key) const {
-    std::string text;
-    for (const std::string& part : prefix_)
-      text += part + ".";
-    return text + std::string(key);
-  }
+  std::string path(std::string_view key) const { return dotted_key(prefix_, key); }
   void add(std::string key, std::string text) {
     pairs.emplace_back(std::move(key), std::move(text));
   }

@@ -7,21 +7,13 @@
 #include <sstream>
 #include <tuple>
 
+#include "metrics/table_text.hpp"
+
 namespace oasis::sim {
 namespace {
 
 std::string cell(const metrics::MeanStd& value) {
-  std::ostringstream text;
-  text << std::fixed << std::setprecision(2) << value.mean << " ± " << value.std;
-  return text.str();
-}
-
-// Pads to `width` display columns ("±" is two bytes, one column).
-std::string pad(const std::string& text, std::size_t width) {
-  std::size_t columns = 0;
-  for (unsigned char c : text)
-    if ((c & 0xC0) != 0x80) ++columns;
-  return text + std::string(columns < width ? width - columns : 0, ' ');
+  return metrics::mean_std_text(value);
 }
 
 std::string pattern_label(Pattern pattern) {
@@ -91,29 +83,33 @@ void print_table(std::ostream& out, const std::vector<RowResult>& rows,
         << " ==\n";
     if (has_paper) {
       out << "filter paper (Algorithm 1, random ties)\n";
-      out << pad("pattern", 16) << pad("noise", 11) << "| " << pad("accuracy", 13)
-          << pad("avg lag", 13) << pad("max lag", 13) << "| " << pad("paper: acc", 13)
-          << pad("avg lag", 13) << "max lag\n";
+      out << metrics::pad_columns("pattern", 16) << metrics::pad_columns("noise", 11) << "| "
+          << metrics::pad_columns("accuracy", 13) << metrics::pad_columns("avg lag", 13)
+          << metrics::pad_columns("max lag", 13) << "| " << metrics::pad_columns("paper: acc", 13)
+          << metrics::pad_columns("avg lag", 13) << "max lag\n";
       for (const auto& [pattern, noise] : lines) {
         const RowResult* row = find_row(rows, model.id, pattern, noise, FilterKind::kPaper);
         if (row == nullptr) continue;
-        out << pad(pattern_label(pattern), 16) << pad(std::string(noise_name(noise)), 11) << "| "
-            << pad(cell(row->accuracy), 13) << pad(cell(row->avg_lag), 13)
-            << pad(cell(row->max_lag), 13) << "| ";
+        out << metrics::pad_columns(pattern_label(pattern), 16)
+            << metrics::pad_columns(std::string(noise_name(noise)), 11) << "| "
+            << metrics::pad_columns(cell(row->accuracy), 13)
+            << metrics::pad_columns(cell(row->avg_lag), 13)
+            << metrics::pad_columns(cell(row->max_lag), 13) << "| ";
         if (const auto reference = paper_reference(model.id, pattern))
-          out << pad(cell(reference->accuracy), 13) << pad(cell(reference->avg_lag), 13)
-              << cell(reference->max_lag);
+          out << metrics::pad_columns(cell(reference->accuracy), 13)
+              << metrics::pad_columns(cell(reference->avg_lag), 13) << cell(reference->max_lag);
         out << "\n";
       }
     }
     out << "all filters: accuracy / avg lag / max lag (means); zero-likelihood steps per trial "
            "(mean)\n";
-    out << pad("pattern", 16) << pad("noise", 11);
+    out << metrics::pad_columns("pattern", 16) << metrics::pad_columns("noise", 11);
     for (FilterKind filter : options.filters)
-      out << "| " << pad(std::string(filter_name(filter)), 23);
+      out << "| " << metrics::pad_columns(std::string(filter_name(filter)), 23);
     out << "\n";
     for (const auto& [pattern, noise] : lines) {
-      out << pad(pattern_label(pattern), 16) << pad(std::string(noise_name(noise)), 11);
+      out << metrics::pad_columns(pattern_label(pattern), 16)
+          << metrics::pad_columns(std::string(noise_name(noise)), 11);
       for (FilterKind filter : options.filters) {
         const RowResult* row = find_row(rows, model.id, pattern, noise, filter);
         std::ostringstream text;
@@ -121,7 +117,7 @@ void print_table(std::ostream& out, const std::vector<RowResult>& rows,
           text << std::fixed << std::setprecision(2) << row->accuracy.mean << " / "
                << row->avg_lag.mean << " / " << std::setprecision(1) << row->max_lag.mean << " z"
                << std::setprecision(0) << row->zero_likelihood_steps.mean;
-        out << "| " << pad(text.str(), 23);
+        out << "| " << metrics::pad_columns(text.str(), 23);
       }
       out << "\n";
     }

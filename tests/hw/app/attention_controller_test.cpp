@@ -8,23 +8,10 @@
 #include <gtest/gtest.h>
 
 #include "go1_treat_catalog.hpp"
+#include "spec_controller_settings.hpp"
 
 namespace oasis::hw::app {
 namespace {
-
-// The spec's six actions at its speeds: 0.5 m/s forward, 0.5 rad/s turns (left positive).
-ControllerSettings spec_settings(const rt::CatalogView& catalog) {
-  ControllerSettings settings;
-  for (std::uint32_t a = 0; a < catalog.num_actions; ++a) {
-    const std::string name = catalog.action_names[a];
-    go1::VelocityCommand velocity;
-    if (name.find("straight") != std::string::npos) velocity.forward = 0.5f;
-    if (name.rfind("left", 0) == 0) velocity.yaw_rate = 0.5f;
-    if (name.rfind("right", 0) == 0) velocity.yaw_rate = -0.5f;
-    settings.action_velocity.push_back(velocity);
-  }
-  return settings;
-}
 
 PerceptionResult seen_at(double x1, double y1, double x2, double y2, double reward) {
   PerceptionResult result;

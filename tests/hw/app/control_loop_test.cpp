@@ -21,6 +21,7 @@
 #include "app/synthetic_world.hpp"
 #include "go1/fake_go1.hpp"
 #include "go1_treat_catalog.hpp"
+#include "spec_controller_settings.hpp"
 
 namespace oasis::hw::app {
 namespace {
@@ -28,19 +29,6 @@ namespace {
 using std::chrono::milliseconds;
 constexpr milliseconds kWatchdogTimeout{200};
 constexpr milliseconds kSchedulingMargin{50};
-
-ControllerSettings spec_settings(const rt::CatalogView& catalog) {
-  ControllerSettings settings;
-  for (std::uint32_t a = 0; a < catalog.num_actions; ++a) {
-    const std::string name = catalog.action_names[a];
-    go1::VelocityCommand velocity;
-    if (name.find("straight") != std::string::npos) velocity.forward = 0.5f;
-    if (name.rfind("left", 0) == 0) velocity.yaw_rate = 0.5f;
-    if (name.rfind("right", 0) == 0) velocity.yaw_rate = -0.5f;
-    settings.action_velocity.push_back(velocity);
-  }
-  return settings;
-}
 
 std::uint32_t abstraction_of(TreatHolder holder) {
   return holder == TreatHolder::kHuman1 ? 0u : 1u;  // the spec's context order
