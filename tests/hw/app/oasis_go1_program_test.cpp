@@ -98,6 +98,27 @@ TEST(OasisGo1Program, DryRunOnTheSyntheticWorldLogsEveryStepAndScores) {
   EXPECT_NE(score.output.find("\"normalized_reward\""), std::string::npos) << score.output;
 }
 
+TEST(OasisGo1Program, RunsACatalogLoadedFromItsFile) {
+  const Outcome loaded =
+      run({"run", "--dry-run", "--source", "synthetic", "--fast", "--steps", "5", "--quiet",
+           "--catalog", OASIS_SOURCE_DIR "/generated/go1_treat/go1_treat.bin"});
+  EXPECT_EQ(loaded.status, 0) << loaded.output;
+  EXPECT_NE(loaded.output.find("go1_treat.bin"), std::string::npos) << loaded.output;
+
+  const Outcome missing = run({"run", "--dry-run", "--catalog", scratch("none.bin").string()});
+  EXPECT_EQ(missing.status, 1);
+  EXPECT_NE(missing.output.find("none.bin"), std::string::npos) << missing.output;
+}
+
+TEST(OasisGo1Program, ConfigPrintsTheShippedSettings) {
+  const Outcome printed = run({"config", OASIS_SOURCE_DIR "/hw/config/go1.yaml"});
+  ASSERT_EQ(printed.status, 0) << printed.output;
+  std::ifstream shipped(OASIS_SOURCE_DIR "/hw/config/go1.yaml");
+  std::stringstream text;
+  text << shipped.rdbuf();
+  EXPECT_EQ(printed.output, text.str());
+}
+
 TEST(OasisGo1Program, RecordThenReplay) {
   const fs::path folder = scratch("recording");
   fs::remove_all(folder);
