@@ -12,6 +12,7 @@
 
 #include "oasis/rt/attention_filter.hpp"
 #include "oasis/rt/catalog_view.hpp"
+#include "oasis/rt/hedged_filter.hpp"
 
 namespace {
 
@@ -21,8 +22,11 @@ using oasis::rt::CatalogView;
 using oasis::rt::FilterMode;
 using oasis::rt::FilterOptions;
 using oasis::rt::FixedWorkspace;
+using oasis::rt::HedgedFilter;
+using oasis::rt::HedgeOptions;
 using oasis::rt::kNoAction;
 using oasis::rt::ObservationKind;
+using oasis::rt::RewardSource;
 using oasis::rt::StepStatus;
 using oasis::rt::TieRule;
 using oasis::rt::validate;
@@ -707,6 +711,115 @@ TEST(RuntimeFilter, RobustZeroLikelihoodNeverNaN) {
       ASSERT_TRUE(belief_is_distribution(f, 2));
     }
   }
+}
+
+// The reward evidence of the two steps of RobustStepMatchesHandComputation: the first step's
+// prediction puts no mass where object_at_s1 pays 1, the second's p(o = s2) is
+//   .8*.5*.15 + .8*.5*.7 + .2*.5*.15 + .2*.5*.7 = .425, of which .41 explains r = 0.
+TEST(RuntimeFilter, RewardEvidenceMatchesHandComputation) {
+  DiscreteExample ex(true, 0.7);
+  FixedWorkspace<2, 3> ws;
+  FilterOptions options;
+  options.mode = FilterMode::kRobust;
+  AttentionFilter robust(ex.view, options, ws);
+  robust.start(kS2);
+  EXPECT_EQ(robust.reward_evidence(), 1.0);
+  robust.step(kS3, 1.0, kR);
+  // The prediction is .5 * (0, .425, .575) per abstraction, p(o = s3 | s) = (.15, .15, .7),
+  // and only (object_at_s3, s3) pays 1: .5*.575*.7 over 2 * .5*(.425*.15 + .575*.7).
+  const double observed = 0.425 * 0.15 + 0.575 * 0.7;
+  EXPECT_NEAR(robust.reward_evidence(), 0.5 * 0.575 * 0.7 / observed, kEps);
+  robust.step(kS2, 0.0, kL);
+  EXPECT_NEAR(robust.reward_evidence(), 0.41 / 0.425, kEps);
+
+  FixedWorkspace<2> paper_ws;
+  AttentionFilter paper(ex.view, FilterOptions{}, paper_ws);
+  paper.start(kS3);
+  paper.step(kS3, 1.0, kR);  // only object_at_s3 pays 1 at s3; prediction (.5, .5)
+  EXPECT_NEAR(paper.reward_evidence(), 0.5, kEps);
+  paper.step(kS3, 0.0, kR);  // only object_at_s1 pays 0 at s3; its prediction is .2
+  EXPECT_NEAR(paper.reward_evidence(), 0.2, kEps);
+}
+
+// With the reward declared to follow the observed state, the detection model is applied at
+// o: at o = s2 both abstractions pay 0, so r = 0 says nothing about the context.
+TEST(RuntimeFilter, RobustRewardCanFollowTheObservedState) {
+  DiscreteExample ex(true, 0.7);
+  ex.view.observation.reward_source = RewardSource::kObservedState;
+  FixedWorkspace<2, 3> ws;
+  FilterOptions options;
+  options.mode = FilterMode::kRobust;
+  AttentionFilter f(ex.view, options, ws);
+  f.start(kS2);
+  EXPECT_EQ(f.step(kS2, 0.0, kL), StepStatus::kOk);
+  EXPECT_NEAR(f.reward_evidence(), 1.0, kEps);
+  EXPECT_NEAR(f.belief(kAtS3), 0.5, kEps);
+  // r = 1 at o = s3: only object_at_s3 pays there, whatever the true state.
+  EXPECT_EQ(f.step(kS3, 1.0, kR), StepStatus::kOk);
+  EXPECT_NEAR(f.belief(kAtS3), 1.0, kEps);
+}
+
+std::vector<double> hedged_workspace(const CatalogView& view, const HedgeOptions& options) {
+  return std::vector<double>(HedgedFilter::workspace_size(view, options));
+}
+
+TEST(HedgedFilter, NeedsAnObservationModelAndSaneOptions) {
+  DiscreteExample plain(false);
+  HedgeOptions options;
+  std::vector<double> ws = hedged_workspace(plain.view, options);
+  EXPECT_EQ(HedgedFilter(plain.view, options, ws.data(), ws.size()).error(),
+            oasis::rt::FilterError::kNoRobustSection);
+  DiscreteExample ex(true, 0.7);
+  ws = hedged_workspace(ex.view, options);
+  EXPECT_EQ(HedgedFilter(ex.view, options, ws.data(), ws.size() - 1).error(),
+            oasis::rt::FilterError::kWorkspaceTooSmall);
+  options.share = 1.0;
+  EXPECT_EQ(HedgedFilter(ex.view, options, ws.data(), ws.size()).error(),
+            oasis::rt::FilterError::kBadOptions);
+}
+
+// A wrong state with the true state's reward (the robust model's world, as in
+// RobustModeSurvivesOneWrongStateObservation): Algorithm 1 explains r = 1 at s1 only by a switch
+// it predicted with .2, the robust model by a wrong reading of s3 (p .15 against .7 for the
+// other readings' sum), so the weight moves to the robust model, which is not fooled.
+TEST(HedgedFilter, FollowsTheModelThatExplainsTheRewards) {
+  DiscreteExample ex(true, 0.7);
+  HedgeOptions options;
+  std::vector<double> ws = hedged_workspace(ex.view, options);
+  HedgedFilter f(ex.view, options, ws.data(), ws.size());
+  ASSERT_TRUE(f.ok());
+  f.start(kS3);
+  for (int k = 0; k < 5; ++k) f.step(kS3, 1.0, kR);
+  EXPECT_EQ(f.ml_abstraction(), kAtS3);
+  const double before = f.robust_weight();
+  EXPECT_EQ(f.step(kS1, 1.0, kR), StepStatus::kOk);
+  EXPECT_EQ(f.paper_filter().ml_abstraction(), kAtS1) << "Algorithm 1 is fooled";
+  EXPECT_GT(f.robust_weight(), before);
+  EXPECT_GT(f.robust_weight(), 0.7);
+  EXPECT_EQ(f.ml_abstraction(), kAtS3);
+  EXPECT_EQ(f.action(), kR);
+  double sum = 0.0;
+  for (std::uint32_t i = 0; i < 2; ++i) sum += f.belief(i);
+  EXPECT_NEAR(sum, 1.0, 1e-12);
+}
+
+// The reward follows the observed state (the paper's world): the robust model, which expects
+// the true state's reward, is surprised more often than the paper's filter, and loses weight.
+TEST(HedgedFilter, KeepsAlgorithmOneWhenItExplainsBetter) {
+  DiscreteExample ex(true, 0.7);
+  HedgeOptions options;
+  std::vector<double> ws = hedged_workspace(ex.view, options);
+  HedgedFilter f(ex.view, options, ws.data(), ws.size());
+  f.start(kS3);
+  for (int k = 0; k < 5; ++k)
+    f.step(kS3, 1.0, kR);
+  // Seen at s1 and paid as object_at_s1's s1: exactly what Algorithm 1 explains with a switch.
+  for (int k = 0; k < 5; ++k)
+    f.step(kS1, 1.0, kL);
+  EXPECT_LT(f.robust_weight(), 0.5);
+  EXPECT_EQ(f.ml_abstraction(), f.paper_filter().ml_abstraction());
+  EXPECT_EQ(f.ml_abstraction(), kAtS1);
+  EXPECT_EQ(f.action(), kL);
 }
 
 }  // namespace

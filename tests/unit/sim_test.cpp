@@ -230,15 +230,55 @@ TEST_F(SimTable1, RowsAndJsonHaveOneEntryPerConfiguration) {
     ++traces;
   });
   ASSERT_TRUE(rows) << error;
-  // 2 models x (3 noiseless + 2 noisy x 3 readings) x 5 filters.
-  EXPECT_EQ(rows->size(), 2u * 9u * 5u);
-  EXPECT_EQ(traces, 2 * 9 * 5 * 2);
+  // 2 models x (3 noiseless + 2 noisy x 3 readings) x 6 filters.
+  EXPECT_EQ(rows->size(), 2u * 9u * 6u);
+  EXPECT_EQ(traces, 2 * 9 * 6 * 2);
   const nlohmann::json json = rows_json(*rows);
   ASSERT_EQ(json.size(), rows->size());
   EXPECT_EQ(json[0]["model"], "i");
   EXPECT_EQ(json[0]["noise"], "none");
   EXPECT_TRUE(json[0]["accuracy"].contains("mean"));
   EXPECT_TRUE(json[0]["max_lag"].contains("std"));
+}
+
+// Issue 12's "never worse than Algorithm 1": the hedged filter, with every declared reading
+// (right or wrong), on every row of Table I (both transition models, every pattern and noise
+// reading), is at most 0.02 below Algorithm 1's accuracy on the same trials - and where its
+// model is right it keeps the robust filter's gain (noisy "observed" rows, declared observed).
+TEST_F(SimTable1, HedgedFilterIsNeverWorseThanAlgorithmOne) {
+  const Table1Experiment sim = experiment();
+  Table1Options options;
+  options.seeds = 5;
+  options.filters = {FilterKind::kPaper, FilterKind::kRobust, FilterKind::kHedged};
+  options.declared = {NoiseReading::kObserved, NoiseReading::kPerceived, NoiseReading::kProcess};
+  std::string error;
+  const auto rows = run_table1(sim, options, error, {});
+  ASSERT_TRUE(rows) << error;
+  auto find = [&](const RowResult& like, FilterKind filter,
+                  NoiseReading declared) -> const RowResult* {
+    for (const RowResult& row : *rows)
+      if (row.model == like.model && row.pattern == like.pattern && row.noise == like.noise &&
+          row.filter == filter && row.declared == declared)
+        return &row;
+    return nullptr;
+  };
+  int compared = 0;
+  for (const RowResult& hedged : *rows) {
+    if (hedged.filter != FilterKind::kHedged) continue;
+    const RowResult* paper = find(hedged, FilterKind::kPaper, NoiseReading::kNone);
+    ASSERT_NE(paper, nullptr);
+    EXPECT_GE(hedged.accuracy.mean, paper->accuracy.mean - 0.02)
+        << "model " << hedged.model << ", " << pattern_name(hedged.pattern) << ", noise "
+        << noise_name(hedged.noise) << ", declared " << noise_name(hedged.declared);
+    ++compared;
+    if (hedged.noise == NoiseReading::kObserved && hedged.declared == NoiseReading::kObserved) {
+      const RowResult* robust = find(hedged, FilterKind::kRobust, NoiseReading::kObserved);
+      ASSERT_NE(robust, nullptr);
+      EXPECT_GE(hedged.accuracy.mean, robust->accuracy.mean - 0.02);
+      EXPECT_GT(hedged.accuracy.mean, paper->accuracy.mean + 0.2);
+    }
+  }
+  EXPECT_EQ(compared, 2 * 9 * 3);
 }
 
 }  // namespace

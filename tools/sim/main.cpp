@@ -29,7 +29,8 @@ struct Table1Arguments {
   std::uint32_t steps = 500;
   double sigma = 0.7;
   std::vector<std::string> noises{"perceived", "process", "observed"};
-  std::vector<std::string> filters{"paper", "keep", "guard", "soft", "robust"};
+  std::vector<std::string> filters{"paper", "keep", "guard", "soft", "robust", "hedged"};
+  std::vector<std::string> declared{"observed"};
   std::string json;
   std::string csv_dir;
   std::string plot_dir;
@@ -63,10 +64,20 @@ int run_table1_command(const Table1Arguments& arguments) {
     const auto filter = sim::parse_filter(name);
     if (!filter) {
       std::cerr << "oasis-sim: unknown filter '" << name
-                << "' (paper, keep, guard, soft, robust)\n";
+                << "' (paper, keep, guard, soft, robust, hedged)\n";
       return 2;
     }
     options.filters.push_back(*filter);
+  }
+  options.declared.clear();
+  for (const std::string& name : arguments.declared) {
+    const auto declared = sim::parse_noise(name);
+    if (!declared || *declared == sim::NoiseReading::kNone) {
+      std::cerr << "oasis-sim: unknown declared reading '" << name
+                << "' (perceived, process, observed)\n";
+      return 2;
+    }
+    options.declared.push_back(*declared);
   }
 
   const std::optional<std::string> text = read_file(arguments.spec);
@@ -148,7 +159,14 @@ int main(int argc, char** argv) {
       ->add_option("--noise", table1.noises,
                    "noise readings for the noisy patterns: perceived, process, observed")
       ->capture_default_str();
-  command->add_option("--filters", table1.filters, "filters: paper, keep, guard, soft, robust")
+  command
+      ->add_option("--filters", table1.filters, "filters: paper, keep, guard, soft, robust, hedged")
+      ->capture_default_str();
+  command
+      ->add_option("--declared", table1.declared,
+                   "the noise readings the robust and hedged filters assume, one column each: "
+                   "observed (the reward follows the true state), perceived or process (it "
+                   "follows the observed state)")
       ->capture_default_str();
   command->add_option("--json", table1.json, "write the rows as JSON to this file");
   command->add_option("--csv-dir", table1.csv_dir, "write per-trial CSV traces here");

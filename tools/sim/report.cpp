@@ -33,11 +33,21 @@ std::string pattern_label(Pattern pattern) {
 }
 
 const RowResult* find_row(const std::vector<RowResult>& rows, const std::string& model,
-                          Pattern pattern, NoiseReading noise, FilterKind filter) {
+                          Pattern pattern, NoiseReading noise, FilterKind filter,
+                          NoiseReading declared = NoiseReading::kNone) {
   for (const RowResult& row : rows)
-    if (row.model == model && row.pattern == pattern && row.noise == noise && row.filter == filter)
+    if (row.model == model && row.pattern == pattern && row.noise == noise &&
+        row.filter == filter && row.declared == declared)
       return &row;
   return nullptr;
+}
+
+// "robust", or "robust:perceived" when the table runs more than one declared reading.
+std::string column_label(FilterKind filter, NoiseReading declared, const Table1Options& options) {
+  std::string label(filter_name(filter));
+  if (declared != NoiseReading::kNone && options.declared.size() > 1)
+    label += ":" + std::string(noise_name(declared));
+  return label;
 }
 
 }  // namespace
@@ -104,14 +114,15 @@ void print_table(std::ostream& out, const std::vector<RowResult>& rows,
     out << "all filters: accuracy / avg lag / max lag (means); zero-likelihood steps per trial "
            "(mean)\n";
     out << metrics::pad_columns("pattern", 16) << metrics::pad_columns("noise", 11);
-    for (FilterKind filter : options.filters)
-      out << "| " << metrics::pad_columns(std::string(filter_name(filter)), 23);
+    const auto columns = filter_columns(options);
+    for (const auto& [filter, declared] : columns)
+      out << "| " << metrics::pad_columns(column_label(filter, declared, options), 23);
     out << "\n";
     for (const auto& [pattern, noise] : lines) {
       out << metrics::pad_columns(pattern_label(pattern), 16)
           << metrics::pad_columns(std::string(noise_name(noise)), 11);
-      for (FilterKind filter : options.filters) {
-        const RowResult* row = find_row(rows, model.id, pattern, noise, filter);
+      for (const auto& [filter, declared] : columns) {
+        const RowResult* row = find_row(rows, model.id, pattern, noise, filter, declared);
         std::ostringstream text;
         if (row != nullptr)
           text << std::fixed << std::setprecision(2) << row->accuracy.mean << " / "
@@ -134,6 +145,9 @@ nlohmann::json rows_json(const std::vector<RowResult>& rows) {
                     {"pattern", std::string(pattern_name(row.pattern))},
                     {"noise", std::string(noise_name(row.noise))},
                     {"filter", std::string(filter_name(row.filter))},
+                    {"declared", row.declared == NoiseReading::kNone
+                                     ? nlohmann::json(nullptr)
+                                     : nlohmann::json(std::string(noise_name(row.declared)))},
                     {"accuracy", stat(row.accuracy)},
                     {"avg_lag", stat(row.avg_lag)},
                     {"max_lag", stat(row.max_lag)},
@@ -169,6 +183,7 @@ std::string trace_csv(const Trace& trace, const std::vector<std::string>& contex
 std::string trial_stem(const TrialSpec& spec) {
   return "model-" + spec.model.id + "_" + std::string(pattern_name(spec.pattern)) + "_" +
          std::string(noise_name(spec.noise)) + "_" + std::string(filter_name(spec.filter)) +
+         (uses_declared_model(spec.filter) ? "-" + std::string(noise_name(spec.declared)) : "") +
          "_seed" + std::to_string(spec.seed);
 }
 

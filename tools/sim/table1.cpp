@@ -4,6 +4,7 @@
 
 #include "metrics/context_metrics.hpp"
 #include "oasis/rt/attention_filter.hpp"
+#include "oasis/rt/hedged_filter.hpp"
 
 namespace oasis::sim {
 namespace {
@@ -25,11 +26,54 @@ rt::FilterOptions filter_options(FilterKind filter, std::uint64_t seed) {
       options.detection_epsilon = 0.05;
       break;
     case FilterKind::kRobust:
+    case FilterKind::kHedged:  // its robust part; the hedge sets the mode itself
       options.mode = rt::FilterMode::kRobust;
       break;
   }
   return options;
 }
+
+rt::RewardSource reward_source_of(NoiseReading declared) {
+  return declared == NoiseReading::kObserved ? rt::RewardSource::kTrueState
+                                             : rt::RewardSource::kObservedState;
+}
+
+// The robust or paper filter, or the hedge of both, behind the three calls a trial makes.
+class TrialFilter {
+ public:
+  TrialFilter(const rt::CatalogView& catalog, const TrialSpec& spec) {
+    const rt::FilterOptions options = filter_options(spec.filter, spec.seed);
+    if (spec.filter == FilterKind::kHedged) {
+      rt::HedgeOptions hedge;
+      hedge.paper = filter_options(FilterKind::kPaper, spec.seed);
+      hedge.robust = options;
+      workspace_.resize(rt::HedgedFilter::workspace_size(catalog, hedge));
+      hedged_.emplace(catalog, hedge, workspace_.data(), workspace_.size());
+    } else {
+      workspace_.resize(rt::AttentionFilter::workspace_size(catalog, options));
+      single_.emplace(catalog, options, workspace_.data(), workspace_.size());
+    }
+  }
+  rt::FilterError error() const { return hedged_ ? hedged_->error() : single_->error(); }
+  void start(std::uint32_t observed) {
+    if (hedged_)
+      hedged_->start(observed);
+    else
+      single_->start(observed);
+  }
+  rt::StepStatus step(std::uint32_t observed, double reward, std::uint32_t action) {
+    return hedged_ ? hedged_->step(observed, reward, action)
+                   : single_->step(observed, reward, action);
+  }
+  std::uint32_t ml_abstraction() const {
+    return hedged_ ? hedged_->ml_abstraction() : single_->ml_abstraction();
+  }
+
+ private:
+  std::vector<double> workspace_;
+  std::optional<rt::AttentionFilter> single_;
+  std::optional<rt::HedgedFilter> hedged_;
+};
 
 // R^c(s) for every state s under context c.
 std::vector<double> state_rewards(const rt::CatalogView& catalog, std::uint32_t context) {
@@ -94,8 +138,14 @@ std::string_view filter_name(FilterKind filter) {
       return "soft";
     case FilterKind::kRobust:
       return "robust";
+    case FilterKind::kHedged:
+      return "hedged";
   }
   return "?";
+}
+
+bool uses_declared_model(FilterKind filter) {
+  return filter == FilterKind::kRobust || filter == FilterKind::kHedged;
 }
 
 std::optional<FilterKind> parse_filter(std::string_view name) {
@@ -140,16 +190,15 @@ std::optional<pipeline::CatalogData> Table1Experiment::catalog_for(const TrialSp
 std::optional<Trace> Table1Experiment::run_trial(const TrialSpec& spec, std::string& error) const {
   std::optional<pipeline::CatalogData> data = catalog_for(spec, error);
   if (!data) return std::nullopt;
-  const rt::CatalogView catalog = data->view();
+  rt::CatalogView catalog = data->view();
+  catalog.observation.reward_source = reward_source_of(spec.declared);
   std::string why;
   if (!rt::validate(catalog, &why)) {
     error = "catalog does not validate: " + why;
     return std::nullopt;
   }
-  const rt::FilterOptions options = filter_options(spec.filter, spec.seed);
-  std::vector<double> workspace(rt::AttentionFilter::workspace_size(catalog, options));
-  rt::AttentionFilter filter(catalog, options, workspace.data(), workspace.size());
-  if (!filter.ok()) {
+  TrialFilter filter(catalog, spec);
+  if (filter.error() != rt::FilterError::kNone) {
     error = "the filter refused the catalog (error " +
             std::to_string(static_cast<std::uint32_t>(filter.error())) + ")";
     return std::nullopt;
@@ -197,6 +246,19 @@ std::optional<Trace> Table1Experiment::run_trial(const TrialSpec& spec, std::str
   return trace;
 }
 
+std::vector<std::pair<FilterKind, NoiseReading>> filter_columns(const Table1Options& options) {
+  std::vector<std::pair<FilterKind, NoiseReading>> columns;
+  for (FilterKind filter : options.filters) {
+    if (!uses_declared_model(filter)) {
+      columns.emplace_back(filter, NoiseReading::kNone);
+      continue;
+    }
+    for (NoiseReading declared : options.declared)
+      columns.emplace_back(filter, declared);
+  }
+  return columns;
+}
+
 std::optional<std::vector<RowResult>> run_table1(const Table1Experiment& experiment,
                                                  const Table1Options& options, std::string& error,
                                                  const TraceSink& sink) {
@@ -206,7 +268,7 @@ std::optional<std::vector<RowResult>> run_table1(const Table1Experiment& experim
       std::vector<NoiseReading> noises{NoiseReading::kNone};
       if (pattern_is_noisy(pattern)) noises = options.noises;
       for (NoiseReading noise : noises) {
-        for (FilterKind filter : options.filters) {
+        for (const auto& [filter, declared] : filter_columns(options)) {
           std::vector<double> accuracy, avg_lag, max_lag, zero;
           for (std::uint32_t seed = 0; seed < options.seeds; ++seed) {
             TrialSpec spec;
@@ -215,6 +277,7 @@ std::optional<std::vector<RowResult>> run_table1(const Table1Experiment& experim
             spec.noise = noise;
             spec.sigma = options.sigma;
             spec.filter = filter;
+            if (declared != NoiseReading::kNone) spec.declared = declared;
             spec.seed = seed;
             spec.steps = options.steps;
             const std::optional<Trace> trace = experiment.run_trial(spec, error);
@@ -227,7 +290,7 @@ std::optional<std::vector<RowResult>> run_table1(const Table1Experiment& experim
             zero.push_back(trace->zero_likelihood_steps);
             if (sink) sink(spec, *trace);
           }
-          rows.push_back({model.id, pattern, noise, filter, metrics::mean_std(accuracy),
+          rows.push_back({model.id, pattern, noise, filter, declared, metrics::mean_std(accuracy),
                           metrics::mean_std(avg_lag), metrics::mean_std(max_lag),
                           metrics::mean_std(zero)});
         }

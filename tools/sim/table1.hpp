@@ -24,6 +24,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include "metrics/mean_std.hpp"
@@ -41,12 +42,22 @@ namespace oasis::sim {
 //           no abstraction explains the observation);
 //  soft   - detection_epsilon = 0.05 (soft detection model);
 //  robust - FilterMode::kRobust (joint belief over abstraction and true state, observation
-//           model p_correct = 1 - sigma), random ties.
-enum class FilterKind : std::uint32_t { kPaper, kKeep, kGuard, kSoft, kRobust };
+//           model p_correct = 1 - sigma, the reward following the state the declared reading
+//           says), random ties;
+//  hedged - rt::HedgedFilter: Algorithm 1 and the robust filter of the declared reading,
+//           weighed by how well each predicts the rewards.
+// The declared reading is the noise the model-based filters assume (TrialSpec::declared):
+// `observed` - the reward follows the true state (RewardSource::kTrueState); `perceived` and
+// `process` - it follows the observed state (kObservedState). Process noise is not an
+// observation model, but to the filter it looks like one whose reward follows what is seen.
+enum class FilterKind : std::uint32_t { kPaper, kKeep, kGuard, kSoft, kRobust, kHedged };
 
 inline constexpr FilterKind kAllFilters[] = {FilterKind::kPaper, FilterKind::kKeep,
                                              FilterKind::kGuard, FilterKind::kSoft,
-                                             FilterKind::kRobust};
+                                             FilterKind::kRobust, FilterKind::kHedged};
+
+// True for the filters that run on a declared observation model (robust, hedged).
+bool uses_declared_model(FilterKind filter);
 
 std::string_view filter_name(FilterKind filter);
 std::optional<FilterKind> parse_filter(std::string_view name);
@@ -65,6 +76,7 @@ struct TrialSpec {
   NoiseReading noise = NoiseReading::kNone;
   double sigma = 0.0;  // used when noise != kNone
   FilterKind filter = FilterKind::kPaper;
+  NoiseReading declared = NoiseReading::kObserved;  // robust and hedged filters only
   std::uint64_t seed = 0;
   std::uint32_t steps = 500;
   PatternOptions pattern_options;
@@ -107,6 +119,7 @@ struct RowResult {
   Pattern pattern = Pattern::kStep;
   NoiseReading noise = NoiseReading::kNone;
   FilterKind filter = FilterKind::kPaper;
+  NoiseReading declared = NoiseReading::kNone;  // kNone for the filters without a model
   metrics::MeanStd accuracy;
   metrics::MeanStd avg_lag;
   metrics::MeanStd max_lag;
@@ -120,7 +133,13 @@ struct Table1Options {
   std::vector<NoiseReading> noises{std::begin(kNoisyReadings), std::end(kNoisyReadings)};
   std::vector<FilterKind> filters{std::begin(kAllFilters), std::end(kAllFilters)};
   std::vector<Pattern> patterns{std::begin(kAllPatterns), std::end(kAllPatterns)};
+  // The readings the robust and hedged filters are run with (each is a column).
+  std::vector<NoiseReading> declared{NoiseReading::kObserved};
 };
+
+// The filter columns of a table: every filter, the model-based ones once per declared reading
+// (the others with kNone).
+std::vector<std::pair<FilterKind, NoiseReading>> filter_columns(const Table1Options& options);
 
 // Called with every trial's spec and trace (for CSV traces and plots).
 using TraceSink = std::function<void(const TrialSpec&, const Trace&)>;

@@ -59,7 +59,9 @@ enum class FilterMode : std::uint32_t {
   ///            no successors in P^i loses its mass: the action could not have been taken
   ///            there);
   ///  weight:   b(i, s) ~ b'(i, s) * p(o_t | s) * p(r_t | phi^i, s)   (the reward depends on
-  ///            the true state, so the detection model is applied at s, not at o_t);
+  ///            the true state, so the detection model is applied at s, not at o_t; when the
+  ///            catalog's observation model says the reward follows the observed state
+  ///            (RewardSource::kObservedState) it is applied at o_t);
   ///  belief over abstractions: the marginal m(i) = sum_s b(i, s); ML over m;
   ///  abstract state for the policy: z = block_of^i(s*) with s* = argmax_s b(i, s) for the ML
   ///  abstraction i (ties: lowest state index).
@@ -199,6 +201,7 @@ class AttentionFilter {
   void reset() noexcept {
     if (!ok()) return;
     rng_state_ = options_.seed;
+    reward_evidence_ = 1.0;
     has_state_ = false;
     state_ = 0;
     ml_ = kNone_;
@@ -306,16 +309,27 @@ class AttentionFilter {
 
   /// The state the policy is evaluated at: the last observed state (paper mode) or the most
   /// likely true state under the ML abstraction (robust mode).
-  std::uint32_t policy_state() const noexcept {
+  std::uint32_t policy_state() const noexcept { return policy_state_under(ml_); }
+
+  /// The same under abstraction i (< num_abstractions): the last observed state (paper mode)
+  /// or argmax_s b(i, s) (robust mode; ties: lowest state). O(1) paper, O(S) robust.
+  std::uint32_t policy_state_under(std::uint32_t i) const noexcept {
     if (!ok() || !has_state_) return 0;
     if (!robust()) return state_;
     const std::uint32_t states = catalog_->num_states;
-    const double* row = joint_ + static_cast<std::size_t>(ml_) * states;
+    const double* row = joint_ + static_cast<std::size_t>(i) * states;
     std::uint32_t best = 0;
     for (std::uint32_t s = 1; s < states; ++s)
       if (row[s] > row[best]) best = s;
     return best;
   }
+
+  /// How well this filter's model predicted the last step's reward: p(r_t | observations up
+  /// to t, rewards before t) (paper mode: sum_i p(r_t | phi^i, s_t) b'(i); robust mode: the same
+  /// sum over (i, s) after weighting by p(o_t | s)). 0 when no hypothesis explained the reward
+  /// (StepStatus::kZeroLikelihood); 1 after reset() and start(). Comparable between filters
+  /// over the same observations: the hedged filter (hedged_filter.hpp) weighs models by it.
+  double reward_evidence() const noexcept { return ok() ? reward_evidence_ : 0.0; }
 
   /// p(phi = i | history): the belief (the marginal in robust mode). i < num_abstractions.
   double belief(std::uint32_t i) const noexcept { return ok() ? belief_[i] : 0.0; }
@@ -402,6 +416,7 @@ class AttentionFilter {
       belief_[i] = weighted;
       total += weighted;
     }
+    reward_evidence_ = total > 0.0 && std::isfinite(total) ? total : 0.0;
     if (total > 0.0 && std::isfinite(total)) {
       for (std::uint32_t i = 0; i < n; ++i)
         belief_[i] /= total;
@@ -445,18 +460,26 @@ class AttentionFilter {
     const std::size_t cells = static_cast<std::size_t>(n) * states;
     for (std::size_t k = 0; k < cells; ++k)
       predicted_total += joint_[k];
-    // 3. Weight by p(o | s) and p(r | phi^i, s).
+    // 3. Weight by p(o | s) and p(r | phi^i, s) (or p(r | phi^i, o) when the catalog says the
+    // reward follows the observed state).
+    const bool reward_follows_observed =
+        catalog_->observation.reward_source == RewardSource::kObservedState;
     double total = 0.0;
+    double observed_total = 0.0;  // p(o_t | past), up to the prediction's lost mass
     for (std::uint32_t i = 0; i < n; ++i) {
       double* row = joint_ + static_cast<std::size_t>(i) * states;
       double* kept = joint_scratch_ + static_cast<std::size_t>(i) * states;
       for (std::uint32_t s = 0; s < states; ++s) {
         kept[s] = row[s];
         if (row[s] == 0.0) continue;
-        row[s] *= observation(observed, s) * detection(i, s, reward);
+        row[s] *= observation(observed, s);
+        observed_total += row[s];
+        row[s] *= detection(i, reward_follows_observed ? observed : s, reward);
         total += row[s];
       }
     }
+    reward_evidence_ =
+        observed_total > 0.0 && total > 0.0 && std::isfinite(total) ? total / observed_total : 0.0;
     StepStatus status = StepStatus::kOk;
     if (total > 0.0 && std::isfinite(total)) {
       for (std::size_t k = 0; k < cells; ++k)
@@ -559,6 +582,7 @@ class AttentionFilter {
   double* joint_scratch_ = nullptr;  // [N*S] robust scratch
   double* located_ = nullptr;        // [N] continuous catalogs: the state's block per abstraction
   std::uint64_t rng_state_ = 0;
+  double reward_evidence_ = 1.0;
   std::uint32_t ml_ = kNone_;
   std::uint32_t state_ = 0;
   bool has_state_ = false;

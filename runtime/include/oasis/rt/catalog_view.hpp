@@ -149,6 +149,16 @@ enum class ObservationKind : std::uint32_t {
   kMatrix = 2,
 };
 
+/// Which state the reward the robot receives belongs to, when the observed state may be wrong.
+enum class RewardSource : std::uint32_t {
+  /// The reward follows the true state: R^i(s) with s the true state (the robust filter's
+  /// model; Table I's "observed" reading).
+  kTrueState = 0,
+  /// The reward follows the observed state: R^i(o), as when the reward is itself perceived
+  /// from the same wrong reading (Table I's "perceived" reading). Algorithm 1 is exact here.
+  kObservedState = 1,
+};
+
 /// The state-observation model p(observed state | true state), catalog-wide (the sensor does
 /// not depend on the context).
 struct ObservationModel {
@@ -158,6 +168,9 @@ struct ObservationModel {
   /// kMatrix only: [num_states * num_states], row-major, each row sums to 1. Must be null
   /// otherwise.
   const double* confusion = nullptr;
+  /// Which state generates the reward (declared in the spec's `observation` block; catalogs
+  /// that predate it load as kTrueState, what the robust filter has always assumed).
+  RewardSource reward_source = RewardSource::kTrueState;
 };
 
 /// The whole catalog. A generated table or a loader fills one of these; nothing is owned.
