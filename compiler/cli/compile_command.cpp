@@ -280,8 +280,13 @@ CommandRunner add_compile_command(CLI::App& app) {
       "  NAME.CONTEXT.dot   each explicit abstraction for Graphviz (bold: the policy)\n"
       "  NAME.CONTEXT.svg   each continuous abstraction as a picture\n"
       "  NAME_catalog.hpp/.cpp  (--format cpp) C++ tables to link: NAME::catalog()\n"
-      "Default formats: bin,json,dot (discrete), bin,json,svg (continuous). --robust P adds\n"
-      "what the runtime's robust filter needs (discrete only).\n\n"
+      "Default formats: bin,json,dot (discrete), bin,json,svg (continuous).\n\n"
+      "Observation model: a discrete spec's 'observation' block (docs/spec-language.md) puts\n"
+      "the robust section, what the runtime's robust filter needs, into every carrier: the\n"
+      "sensor's noise or confusion matrix, what the reward follows, and every context's\n"
+      "full-state transitions. --robust P adds that section with a symmetric model that\n"
+      "reports the true state with probability P, overriding the spec's noise (p_correct =\n"
+      "1 - noise; the spec's 'reward follows' stays); verify such a catalog with --robust P.\n\n"
       "Examples:\n"
       "  oasisc compile specs/discrete_tracking.oasis -o out\n"
       "  oasisc verify specs/discrete_tracking.oasis out/discrete_tracking.bin\n"
@@ -301,7 +306,8 @@ CommandRunner add_compile_command(CLI::App& app) {
                       "File name (without extension) of the C++ output");
   command
       ->add_option("--robust", options->p_correct,
-                   "Add the robust filter's section with this sensor accuracy (discrete)")
+                   "Add the robust filter's section with this sensor accuracy P = 1 - noise "
+                   "(discrete), overriding the spec's observation noise")
       ->check(CLI::Range(0.0, 1.0));
   command
       ->add_option("--epsilon", options->epsilon,

@@ -64,6 +64,33 @@ void add_relevance(const model::ModelIR& ir, std::size_t context, nlohmann::json
   out["failed_conditions"] = relevance.failed_conditions;
 }
 
+// The spec's observation model: null when it declares none.
+nlohmann::json observation_json(const model::ObservationSpec& observation,
+                                const model::StateSpace* states) {
+  using Kind = model::ObservationSpec::Kind;
+  if (observation.kind == Kind::kNone) return nlohmann::json();
+  nlohmann::json out;
+  if (observation.kind == Kind::kSymmetric) {
+    out["kind"] = "symmetric";
+    out["noise"] = to_string(observation.noise);
+  } else {
+    out["kind"] = "matrix";
+    const std::size_t n = states != nullptr ? states->size : 0;
+    nlohmann::json rows = nlohmann::json::object();
+    for (std::size_t s = 0; s < n; ++s) {
+      nlohmann::json row = nlohmann::json::object();
+      for (std::size_t o = 0; o < n; ++o) {
+        const Rational& p = observation.confusion[s * n + o];
+        if (p != 0) row[states->name(static_cast<model::StateIndex>(o))] = to_string(p);
+      }
+      rows[states->name(static_cast<model::StateIndex>(s))] = row;
+    }
+    out["confusion"] = rows;
+  }
+  out["reward_follows"] = observation.reward_follows_observed ? "observed" : "true";
+  return out;
+}
+
 // `stats`: context_statistics() of the explicit model, empty for continuous models; computed
 // once by the caller (it walks every choice of every context).
 nlohmann::json to_json(const LoadedModel& loaded,
@@ -105,6 +132,9 @@ nlohmann::json to_json(const LoadedModel& loaded,
     contexts.push_back(context);
   }
   out["contexts"] = contexts;
+  out["observation"] =
+      observation_json(loaded.model ? loaded.model->observation : loaded.ir->observation,
+                       loaded.model ? &loaded.model->states : nullptr);
   const model::SwitchingModel& switching =
       loaded.model ? loaded.model->switching : loaded.ir->switching;
   if (!switching.matrix.empty()) {
@@ -162,6 +192,14 @@ void print_text(const LoadedModel& loaded, const std::vector<model::ContextStati
   if (summary.contains("continuous_variables")) {
     std::cout << "  continuous variables: " << summary["continuous_variables"].size()
               << ", regions: " << summary["regions"] << '\n';
+  }
+  const nlohmann::json& observation = summary["observation"];
+  if (!observation.is_null()) {
+    std::cout << "  observation: "
+              << (observation["kind"] == "symmetric"
+                      ? "state noise " + observation["noise"].get<std::string>()
+                      : std::string("state confusion matrix"))
+              << ", reward follows " << observation["reward_follows"].get<std::string>() << '\n';
   }
   const std::vector<std::string> names = context_names(loaded);
   std::cout << "  " << std::left << std::setw(24) << "context" << std::setw(12) << "states"

@@ -4,6 +4,7 @@
 
 #include <iostream>
 #include <memory>
+#include <optional>
 
 #include "cli/commands.hpp"
 #include "cli/continuous_json_reader.hpp"
@@ -20,6 +21,7 @@ namespace {
 struct VerifyOptions {
   std::string model;
   std::string result;
+  std::optional<double> p_correct;  // the catalog was compiled with --robust P
   CommonOptions common;
 };
 
@@ -49,7 +51,7 @@ int verify_catalog(const VerifyOptions& options, const model::ExplicitModel& mod
     std::cerr << options.result << ": error: a continuous catalog, but the model is explicit\n";
     return 1;
   }
-  return print_checks(verify::check_catalog(model, view));
+  return print_checks(verify::check_catalog(model, view, {.robust_p_correct = options.p_correct}));
 }
 
 // The checks of a continuous catalog, whichever file it came from (the binary file, loaded
@@ -159,6 +161,9 @@ CommandRunner add_verify_command(CLI::App& app) {
       "  - the file: magic, format, checksum, structure; compiled from this very spec;\n"
       "  - names: the model's name, actions, states and contexts, in order;\n"
       "  - switching and prior: equal to the spec's (an imported model: the trivial one);\n"
+      "  - observation model: the spec's 'observation' block (kind, noise or confusion\n"
+      "    matrix, what the reward follows), or none when the spec has none; a catalog\n"
+      "    compiled with --robust P is checked with --robust P here too;\n"
       "  - per context: the partition is a bisimulation (Definition 1) and the coarsest;\n"
       "    block rewards, R^Z, the quotient's transitions and the robust section equal the\n"
       "    model's; the policy is optimal for its quotient, by policy evaluation, within\n"
@@ -191,6 +196,11 @@ CommandRunner add_verify_command(CLI::App& app) {
           "JSON written by 'oasisc quotient --partition', or a catalog NAME.bin written by "
           "'oasisc compile' (refused if damaged or compiled from another spec)")
       ->required();
+  command
+      ->add_option("--robust", options->p_correct,
+                   "The catalog was compiled with --robust P: expect its symmetric observation "
+                   "model with p_correct P instead of the spec's")
+      ->check(CLI::Range(0.0, 1.0));
   add_common_options(*command, options->common);
   return [options] { return run_verify(*options); };
 }

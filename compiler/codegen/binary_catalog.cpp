@@ -138,6 +138,13 @@ std::string binary_catalog(const pipeline::CatalogData& catalog) {
     const auto dimension = static_cast<std::uint32_t>(catalog.variable_names.size());
     out.section(rt::Section::kStateDimension, rt::kCatalogWide, &dimension, 1);
   }
+  if (catalog.observation == rt::ObservationKind::kMatrix)
+    out.section(rt::Section::kConfusion, rt::kCatalogWide, catalog.confusion);
+  if (catalog.observation != rt::ObservationKind::kNone ||
+      catalog.reward_source != rt::RewardSource::kTrueState) {
+    const auto source = static_cast<std::uint32_t>(catalog.reward_source);
+    out.section(rt::Section::kRewardSource, rt::kCatalogWide, &source, 1);
+  }
   out.section(rt::Section::kSwitching, rt::kCatalogWide, catalog.switching);
   out.section(rt::Section::kPrior, rt::kCatalogWide, catalog.prior);
   std::vector<std::uint32_t> blocks;

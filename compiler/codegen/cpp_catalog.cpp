@@ -151,6 +151,7 @@ CppSources cpp_catalog(const pipeline::CatalogData& catalog, std::string_view ba
                                          : strings(out, "kVariableNames", catalog.variable_names);
   const std::string switching = array(out, "double", "kSwitching", catalog.switching);
   const std::string prior = array(out, "double", "kPrior", catalog.prior);
+  const std::string confusion = array(out, "double", "kConfusion", catalog.confusion);
   std::string abstractions;
   for (std::size_t i = 0; i < catalog.abstractions.size(); ++i)
     abstractions += abstraction(out, i, catalog.abstractions[i]);
@@ -167,7 +168,8 @@ CppSources cpp_catalog(const pipeline::CatalogData& catalog, std::string_view ba
          ", kAbstractions,\n";
   out += "    {static_cast<oasis::rt::ObservationKind>(" +
          std::to_string(static_cast<std::uint32_t>(catalog.observation)) + "u), " +
-         number(catalog.p_correct) + ", nullptr},\n";
+         number(catalog.p_correct) + ", " + confusion + ", static_cast<oasis::rt::RewardSource>(" +
+         std::to_string(static_cast<std::uint32_t>(catalog.reward_source)) + "u)},\n";
   out +=
       "    " + std::to_string(catalog.variable_names.size()) + "u, " + variable_names + ",\n};\n\n";
   out +=

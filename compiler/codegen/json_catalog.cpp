@@ -38,6 +38,23 @@ nlohmann::json abstraction_json(const pipeline::CatalogData& catalog,
   return {{"context", data.context}, {"blocks", blocks}, {"transitions", std::move(transitions)}};
 }
 
+// null without an observation model; else its kind, p_correct (symmetric) or the confusion
+// matrix's rows (one per true state), and which state the reward follows.
+nlohmann::json observation_json(const pipeline::CatalogData& catalog) {
+  if (catalog.observation == rt::ObservationKind::kNone) return nlohmann::json();
+  nlohmann::json out;
+  if (catalog.observation == rt::ObservationKind::kSymmetric) {
+    out["kind"] = "symmetric";
+    out["p_correct"] = catalog.p_correct;
+  } else {
+    out["kind"] = "matrix";
+    out["confusion"] = matrix_rows_json(catalog.confusion, catalog.num_states);
+  }
+  out["reward_follows"] =
+      catalog.reward_source == rt::RewardSource::kObservedState ? "observed" : "true";
+  return out;
+}
+
 }  // namespace
 
 nlohmann::json matrix_rows_json(const std::vector<double>& matrix, std::size_t n) {
@@ -59,10 +76,7 @@ nlohmann::json catalog_json(const pipeline::CatalogData& catalog) {
   out["actions"] = catalog.action_names;
   out["switching"] = matrix_rows_json(catalog.switching, catalog.abstractions.size());
   out["prior"] = catalog.prior;
-  out["observation"] =
-      catalog.observation == rt::ObservationKind::kNone
-          ? nlohmann::json()
-          : nlohmann::json({{"kind", "symmetric"}, {"p_correct", catalog.p_correct}});
+  out["observation"] = observation_json(catalog);
   nlohmann::json abstractions = nlohmann::json::array();
   for (const pipeline::AbstractionData& data : catalog.abstractions)
     abstractions.push_back(abstraction_json(catalog, data));

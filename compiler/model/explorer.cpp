@@ -277,6 +277,7 @@ class Explorer {
     model.actions = ir_.actions;
     model.switching = ir_.switching;
     model.objective = ir_.objective;
+    model.observation = ir_.observation;
     fill_state_space(model.states);
     std::vector<std::shared_ptr<const TransitionMatrix>> matrices;
     for (Table& table : tables_) {

@@ -120,6 +120,8 @@ struct ModelIR {
   // it gives them (`epsilon e;`, `max_cells n;`).
   std::optional<Rational> epsilon;
   std::optional<std::uint64_t> max_cells;
+  // The catalog's `observation` block, checked (discrete models only).
+  ObservationSpec observation;
 };
 
 }  // namespace oasis::model

@@ -83,6 +83,8 @@ rt::CatalogView CatalogData::view() {
   view.abstractions = abstraction_views_.data();
   view.observation.kind = observation;
   view.observation.p_correct = p_correct;
+  view.observation.confusion = confusion.empty() ? nullptr : confusion.data();
+  view.observation.reward_source = reward_source;
   variable_name_pointers_.clear();
   for (const std::string& variable : variable_names)
     variable_name_pointers_.push_back(variable.c_str());

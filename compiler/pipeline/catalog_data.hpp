@@ -63,6 +63,8 @@ struct CatalogData {
   std::vector<AbstractionData> abstractions;
   rt::ObservationKind observation = rt::ObservationKind::kNone;
   double p_correct = 1.0;
+  std::vector<double> confusion;  // kMatrix only: [num_states * num_states], row = true state
+  rt::RewardSource reward_source = rt::RewardSource::kTrueState;
   // Continuous catalogs: the state vector's variables (empty for a discrete catalog, which
   // has num_states explicit states instead).
   std::vector<std::string> variable_names;

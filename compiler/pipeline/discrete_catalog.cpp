@@ -76,9 +76,36 @@ std::optional<AbstractionData> abstraction_data(const model::ExplicitModel& mode
   }
   data.policy = abstraction.policy.action;
   data.value = abstraction.policy.value;
-  if (options.p_correct)
+  if (options.p_correct || model.observation.kind != model::ObservationSpec::Kind::kNone)
     data.state_transitions = csr_of(model, *model.contexts[context].transitions);
   return data;
+}
+
+// The robust section's observation model: --robust's symmetric one, else the spec's.
+bool observation_model(const model::ExplicitModel& model, const CatalogOptions& options,
+                       CatalogData& catalog, std::string& error) {
+  const model::ObservationSpec& spec = model.observation;
+  if (spec.reward_follows_observed) catalog.reward_source = rt::RewardSource::kObservedState;
+  if (options.p_correct) {
+    catalog.observation = rt::ObservationKind::kSymmetric;
+    catalog.p_correct = *options.p_correct;
+  } else if (spec.kind == model::ObservationSpec::Kind::kSymmetric) {
+    catalog.observation = rt::ObservationKind::kSymmetric;
+    catalog.p_correct = to_double(1 - spec.noise);
+  } else if (spec.kind == model::ObservationSpec::Kind::kMatrix) {
+    catalog.observation = rt::ObservationKind::kMatrix;
+    for (const Rational& p : spec.confusion)
+      catalog.confusion.push_back(to_double(p));
+  }
+  // A factored model learns that it has a single state only now.
+  if (catalog.observation == rt::ObservationKind::kSymmetric && model.num_states() == 1 &&
+      catalog.p_correct != 1.0) {
+    error =
+        "the model has a single state, so its observed state cannot be wrong: the state "
+        "noise must be 0";
+    return false;
+  }
+  return true;
 }
 
 // An imported model (docs/formats.md) has one context and no switching model: its catalog's
@@ -147,10 +174,7 @@ std::optional<CatalogData> catalog_data(const model::ExplicitModel& model,
     if (!data) return std::nullopt;
     catalog.abstractions.push_back(std::move(*data));
   }
-  if (options.p_correct) {
-    catalog.observation = rt::ObservationKind::kSymmetric;
-    catalog.p_correct = *options.p_correct;
-  }
+  if (!observation_model(model, options, catalog, error)) return std::nullopt;
   // The last line of defence: the front ends refuse every value a catalog cannot carry, so a
   // catalog that the runtime would refuse is a bug here, reported rather than written.
   std::string why;

@@ -52,7 +52,9 @@ std::optional<std::vector<DiscreteAbstraction>> abstract_contexts(
 
 struct CatalogOptions {
   // Add the robust filter's section: the full-state transitions of every context and a
-  // symmetric observation model that reports the true state with this probability.
+  // symmetric observation model that reports the true state with this probability. It
+  // replaces the state model of the spec's `observation` block, if any (whose reward source
+  // stays); unset, the catalog carries the spec's observation model, or none.
   std::optional<double> p_correct;
 };
 

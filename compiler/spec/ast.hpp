@@ -175,11 +175,23 @@ struct PriorDecl {
   SourceRange range;
 };
 
+// `observation { state noise p; reward follows true; }`, or with
+// `state confusion { s1 -> 0.8: s1 + 0.2: s2; ... }` for the state model.
+struct ObservationDecl {
+  SourceRange keyword;                   // the word `observation`
+  ExprPtr noise;                         // `state noise p;`
+  std::optional<SourceRange> confusion;  // `state confusion { ... }`: the whole item
+  std::vector<std::pair<Name, Distribution>> rows;
+  std::optional<Name> reward_follows;  // `true` or `observed`
+  SourceRange range;
+};
+
 struct CatalogDecl {
   std::optional<Name> name;
   std::vector<ContextDecl> contexts;
   std::optional<SwitchingDecl> switching;
   std::optional<PriorDecl> prior;
+  std::optional<ObservationDecl> observation;
   SourceRange range;
 };
 

@@ -9,6 +9,7 @@
 #include "spec/affine.hpp"
 #include "spec/catalog_checker.hpp"
 #include "spec/expression_checker.hpp"
+#include "spec/observation_checker.hpp"
 #include "spec/scope.hpp"
 #include "support/double_range.hpp"
 #include "support/text.hpp"
@@ -824,6 +825,8 @@ class Checker {
     }
     if (diagnostics_.has_errors()) return;
     check_switching_and_prior(catalog, names, ir_, diagnostics_, expressions_);
+    if (catalog.observation)
+      check_observation(*catalog.observation, scope_, ir_, diagnostics_, expressions_);
   }
 
   const ast::SpecFile& spec_;

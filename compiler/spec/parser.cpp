@@ -504,8 +504,66 @@ class Parser {
         decl.prior = prior();
         return;
       default:
-        fail(peek(), "expected 'context', 'switching' or 'prior', found " + found(peek()));
+        // `observation` is contextual, like `epsilon`: no other catalog item starts with a name.
+        if (at_word("observation")) {
+          if (decl.observation) fail(peek(), "the catalog already has an observation model");
+          decl.observation = observation();
+          return;
+        }
+        fail(peek(),
+             "expected 'context', 'switching', 'prior' or 'observation', found " + found(peek()));
     }
+  }
+
+  ObservationDecl observation() {
+    ObservationDecl decl;
+    decl.keyword = range_of(advance());
+    block([&] { observation_item(decl); });
+    decl.range = span(decl.keyword, previous_range());
+    return decl;
+  }
+
+  // `state noise p;`, `state confusion { s -> distribution; ... }`, `reward follows true;`
+  // or `reward follows observed;`.
+  void observation_item(ObservationDecl& decl) {
+    const SourceRange start = range_of(peek());
+    if (accept_word("state")) {
+      if (decl.noise || decl.confusion)
+        fail(*previous_, "the observation model already has a state model");
+      if (accept_word("noise")) {
+        decl.noise = expression();
+        expect(TokenKind::Semicolon);
+        return;
+      }
+      if (!accept_word("confusion"))
+        fail(peek(), "expected 'noise' or 'confusion' after 'state', found " + found(peek()));
+      decl.confusion = start;
+      block([&] {
+        Name from = expect_name("a state name");
+        expect(TokenKind::Arrow);
+        Distribution row = distribution(/*updates=*/false);
+        expect(TokenKind::Semicolon);
+        decl.rows.emplace_back(from, std::move(row));
+      });
+      decl.confusion = span(start, previous_range());
+      return;
+    }
+    if (accept(TokenKind::KwReward)) {
+      if (decl.reward_follows)
+        fail(*previous_, "the observation model already says what the reward follows");
+      expect_word("follows", "after 'reward'");
+      if (!at(TokenKind::KwTrue) && !at_word("observed"))
+        fail(peek(),
+             "expected 'true' or 'observed' after 'reward follows', found " + found(peek()));
+      const Token& which = advance();
+      decl.reward_follows = Name{which.text, range_of(which)};
+      expect(TokenKind::Semicolon);
+      return;
+    }
+    fail(peek(),
+         "expected 'state noise', 'state confusion' or 'reward follows' in an observation "
+         "model, found " +
+             found(peek()));
   }
 
   ContextDecl context() {

@@ -76,6 +76,81 @@ std::optional<Failure> check_switching(const model::ExplicitModel& model,
   return std::nullopt;
 }
 
+// ---- observation model ----------------------------------------------------------------------
+
+const char* kind_text(rt::ObservationKind kind) {
+  switch (kind) {
+    case rt::ObservationKind::kNone:
+      return "none";
+    case rt::ObservationKind::kSymmetric:
+      return "symmetric";
+    case rt::ObservationKind::kMatrix:
+      return "a confusion matrix";
+  }
+  return "unknown";
+}
+
+const char* source_text(rt::RewardSource source) {
+  return source == rt::RewardSource::kObservedState ? "the observed state" : "the true state";
+}
+
+// The catalog's observation model against the spec's (or --robust's symmetric one), item by
+// item; `summary` says what was compared when it holds.
+std::optional<Failure> check_observation(const model::ExplicitModel& model,
+                                         const rt::CatalogView& c,
+                                         const CatalogCheckOptions& options, std::string& summary) {
+  using Kind = model::ObservationSpec::Kind;
+  const model::ObservationSpec& spec = model.observation;
+  rt::ObservationKind expected = rt::ObservationKind::kNone;
+  if (options.robust_p_correct || spec.kind == Kind::kSymmetric) {
+    expected = rt::ObservationKind::kSymmetric;
+  } else if (spec.kind == Kind::kMatrix) {
+    expected = rt::ObservationKind::kMatrix;
+  }
+  const rt::ObservationModel& obs = c.observation;
+  if (obs.kind != expected) {
+    std::string hint;
+    if (expected == rt::ObservationKind::kNone)
+      hint = " (compiled with --robust P? then verify with --robust P too)";
+    return Failure{std::string("the catalog's observation model is ") + kind_text(obs.kind) +
+                   ", the " + (options.robust_p_correct ? "command line's" : "spec's") + " " +
+                   kind_text(expected) + hint};
+  }
+  const rt::RewardSource source = spec.reward_follows_observed ? rt::RewardSource::kObservedState
+                                                               : rt::RewardSource::kTrueState;
+  if (obs.reward_source != source)
+    return Failure{std::string("the catalog's reward follows ") + source_text(obs.reward_source) +
+                   ", the spec's " + source_text(source)};
+  if (expected == rt::ObservationKind::kNone) {
+    summary = "none";
+    return std::nullopt;
+  }
+  if (expected == rt::ObservationKind::kSymmetric) {
+    const Rational p_correct =
+        options.robust_p_correct ? Rational(*options.robust_p_correct) : Rational(1 - spec.noise);
+    const std::string said = options.robust_p_correct
+                                 ? "--robust " + number_text(*options.robust_p_correct)
+                                 : "1 - noise = " + describe(p_correct);
+    if (!carried(obs.p_correct, p_correct))
+      return Failure{"the catalog's p_correct is " + number_text(obs.p_correct) + ", not " + said};
+    summary = "symmetric, p_correct " + said;
+  } else {
+    const std::size_t n = model.num_states();
+    if (spec.confusion.size() != n * n || obs.confusion == nullptr)
+      return Failure{"the confusion matrix does not match the model's states"};
+    for (std::size_t k = 0; k < n * n; ++k) {
+      if (!carried(obs.confusion[k], spec.confusion[k]))
+        return Failure{"confusion[" + model.states.name(static_cast<model::StateIndex>(k / n)) +
+                       "][" + model.states.name(static_cast<model::StateIndex>(k % n)) + "] is " +
+                       number_text(obs.confusion[k]) + ", the spec says " +
+                       describe(spec.confusion[k])};
+    }
+    summary = "confusion matrix";
+  }
+  summary += std::string(", reward follows ") + source_text(source);
+  return std::nullopt;
+}
+
 // ---- one abstraction ----------------------------------------------------------------------
 
 // The quotient from the model and the catalog's partition: per block and action, the
@@ -262,12 +337,18 @@ CatalogCheck item(std::string name, const std::optional<Failure>& failure) {
 }  // namespace
 
 std::vector<CatalogCheck> check_catalog(const model::ExplicitModel& model,
-                                        const rt::CatalogView& catalog) {
+                                        const rt::CatalogView& catalog,
+                                        const CatalogCheckOptions& options) {
   std::vector<CatalogCheck> checks;
   const std::optional<Failure> names = check_names(model, catalog);
   checks.push_back(item("names", names));
   if (names) return checks;  // the rest would compare unrelated things
   checks.push_back(item("switching and prior", check_switching(model, catalog)));
+  std::string observation;
+  const std::optional<Failure> observation_failure =
+      check_observation(model, catalog, options, observation);
+  checks.push_back(item("observation model", observation_failure));
+  if (!observation_failure) checks.back().verdict = observation;
   for (std::size_t c = 0; c < model.contexts.size(); ++c)
     checks.push_back(check_abstraction(model, c, catalog.abstractions[c]));
   return checks;

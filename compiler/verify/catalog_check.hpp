@@ -1,6 +1,7 @@
 #pragma once
 // The independent check of everything a compiled (discrete) catalog carries, against the
-// model it claims to come from: names, the switching model and prior, and per abstraction
+// model it claims to come from: names, the switching model and prior, the observation model
+// (the spec's `observation` block, or none), and per abstraction
 // the partition (verify_partition: a bisimulation, and the coarsest), the block rewards, the
 // quotient's transitions and rewards, the policy (optimal for its quotient within a stated
 // tolerance, by policy evaluation written here) and the values, and the robust section's
@@ -12,6 +13,7 @@
 // many rounded terms get their own slack). Policy and values: tol = 1e-6 max(1, max|V|).
 
 #include <cstddef>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -26,8 +28,15 @@ struct CatalogCheck {
   bool ok = false;
 };
 
+struct CatalogCheckOptions {
+  // The catalog was compiled with `--robust P`: its observation model must be the symmetric
+  // one with p_correct P instead of the spec's (whose reward source it keeps).
+  std::optional<double> robust_p_correct;
+};
+
 // One entry per item, in order; every item is checked even after a failure.
 std::vector<CatalogCheck> check_catalog(const model::ExplicitModel& model,
-                                        const rt::CatalogView& catalog);
+                                        const rt::CatalogView& catalog,
+                                        const CatalogCheckOptions& options = {});
 
 }  // namespace oasis::verify

@@ -46,6 +46,15 @@ const std::uint32_t k0_policy[] = {
 const double k0_value[] = {
     8.181818181768307, 9.999999999950125,
 };
+const std::uint32_t k0_state_transitions_rows[] = {
+    0u, 1u, 3u, 5u, 7u, 9u, 10u,
+};
+const std::uint32_t k0_state_transitions_targets[] = {
+    0u, 1u, 2u, 0u, 1u, 1u, 2u, 0u, 1u, 2u,
+};
+const double k0_state_transitions_probabilities[] = {
+    1.0, 0.5, 0.5, 0.5, 0.5, 0.5, 0.5, 0.5, 0.5, 1.0,
+};
 const std::uint32_t k1_block_of[] = {
     0u, 1u, 1u,
 };
@@ -70,18 +79,27 @@ const std::uint32_t k1_policy[] = {
 const double k1_value[] = {
     9.999999999950125, 8.181818181768307,
 };
+const std::uint32_t k1_state_transitions_rows[] = {
+    0u, 1u, 3u, 5u, 7u, 9u, 10u,
+};
+const std::uint32_t k1_state_transitions_targets[] = {
+    0u, 1u, 2u, 0u, 1u, 1u, 2u, 0u, 1u, 2u,
+};
+const double k1_state_transitions_probabilities[] = {
+    1.0, 0.5, 0.5, 0.5, 0.5, 0.5, 0.5, 0.5, 0.5, 1.0,
+};
 const oasis::rt::AbstractionView kAbstractions[] = {
-    {"object_at_s3", 2u, k0_block_of, k0_block_reward, {k0_quotient_rows, k0_quotient_targets, k0_quotient_probabilities, 5u}, k0_reward, k0_policy, k0_value, {nullptr, nullptr, nullptr, 0u},
+    {"object_at_s3", 2u, k0_block_of, k0_block_reward, {k0_quotient_rows, k0_quotient_targets, k0_quotient_probabilities, 5u}, k0_reward, k0_policy, k0_value, {k0_state_transitions_rows, k0_state_transitions_targets, k0_state_transitions_probabilities, 10u},
      {0u, nullptr, nullptr, nullptr}, nullptr, 0u, 0.0, {0u, 0u, nullptr, nullptr, nullptr, nullptr, nullptr}},
-    {"object_at_s1", 2u, k1_block_of, k1_block_reward, {k1_quotient_rows, k1_quotient_targets, k1_quotient_probabilities, 5u}, k1_reward, k1_policy, k1_value, {nullptr, nullptr, nullptr, 0u},
+    {"object_at_s1", 2u, k1_block_of, k1_block_reward, {k1_quotient_rows, k1_quotient_targets, k1_quotient_probabilities, 5u}, k1_reward, k1_policy, k1_value, {k1_state_transitions_rows, k1_state_transitions_targets, k1_state_transitions_probabilities, 10u},
      {0u, nullptr, nullptr, nullptr}, nullptr, 0u, 0.0, {0u, 0u, nullptr, nullptr, nullptr, nullptr, nullptr}},
 };
 
 const oasis::rt::CatalogView kCatalog = {
-    oasis::rt::kCatalogFormat, "discrete_tracking", 0x74fbbdf5ea929097ull, "0.1.0",
+    oasis::rt::kCatalogFormat, "discrete_tracking", 0xaea2d97af6d7b7d4ull, "0.1.0",
     3u, 2u, kActionNames, kStateNames,
     2u, kSwitching, kPrior, kAbstractions,
-    {static_cast<oasis::rt::ObservationKind>(0u), 1.0, nullptr},
+    {static_cast<oasis::rt::ObservationKind>(1u), 0.3, nullptr, static_cast<oasis::rt::RewardSource>(0u)},
     0u, nullptr,
 };
 

@@ -10710,7 +10710,7 @@ const oasis::rt::CatalogView kCatalog = {
     oasis::rt::kCatalogFormat, "go1_treat", 0xd70a80598d493891ull, "0.1.0",
     0u, 6u, kActionNames, nullptr,
     2u, kSwitching, kPrior, kAbstractions,
-    {static_cast<oasis::rt::ObservationKind>(0u), 1.0, nullptr},
+    {static_cast<oasis::rt::ObservationKind>(0u), 1.0, nullptr, static_cast<oasis::rt::RewardSource>(0u)},
     4u, kVariableNames,
 };
 

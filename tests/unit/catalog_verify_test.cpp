@@ -36,12 +36,13 @@ pipeline::CatalogData compiled(const model::ExplicitModel& model,
 // The verdicts for `catalog` after a round trip through the binary file (so the change is
 // one a file can carry: it must still load).
 std::vector<verify::CatalogCheck> verdicts(const model::ExplicitModel& model,
-                                           pipeline::CatalogData& catalog) {
+                                           pipeline::CatalogData& catalog,
+                                           const verify::CatalogCheckOptions& options = {}) {
   const std::string bytes = codegen::binary_catalog(catalog);
   const rt::LoadedCatalog loaded = rt::LoadedCatalog::from_bytes(bytes.data(), bytes.size());
   EXPECT_TRUE(loaded.ok()) << "the changed catalog must still be a sound file: " << loaded.error();
   if (!loaded.ok()) return {};
-  return verify::check_catalog(model, loaded.view());
+  return verify::check_catalog(model, loaded.view(), options);
 }
 
 // The first failing item and its verdict, or "" when everything holds.
@@ -74,15 +75,25 @@ class CatalogVerify : public ::testing::Test {
 TEST_F(CatalogVerify, AnUntouchedCatalogPasses) {
   for (const std::optional<double> p_correct : {std::optional<double>{}, std::optional(0.9)}) {
     pipeline::CatalogData catalog = compiled(model_, p_correct);
-    const auto checks = verdicts(model_, catalog);
-    ASSERT_EQ(checks.size(), 4U);
+    const auto checks = verdicts(model_, catalog, {.robust_p_correct = p_correct});
+    ASSERT_EQ(checks.size(), 5U);
     EXPECT_EQ(first_failure(checks), "");
   }
 }
 
 TEST_F(CatalogVerify, EveryChangedItemIsCaught) {
-  const pipeline::CatalogData good = compiled(model_, 0.9);
+  const pipeline::CatalogData good = compiled(model_);  // with the spec's observation model
   const std::vector<Change> changes = {
+      {"observation noise", [](auto& c) { c.p_correct = 0.5; }, "p_correct is 0.5"},
+      {"reward source", [](auto& c) { c.reward_source = rt::RewardSource::kObservedState; },
+       "reward follows the observed state"},
+      {"no observation model",
+       [](auto& c) {
+         c.observation = rt::ObservationKind::kNone;
+         for (auto& abstraction : c.abstractions)
+           abstraction.state_transitions = {};
+       },
+       "observation model is none"},
       {"policy", [](auto& c) { c.abstractions[0].policy[0] ^= 1U; }, "not optimal"},
       {"block reward", [](auto& c) { c.abstractions[0].block_reward[1] = 2.0; }, "has reward"},
       {"R^Z", [](auto& c) { c.abstractions[1].reward[0] += 0.5; }, "R^Z"},
@@ -145,6 +156,59 @@ TEST_F(CatalogVerify, EveryChangedItemIsCaught) {
     expect_rejected(model_, good, change);
 }
 
+TEST_F(CatalogVerify, ObservationModelsAreComparedWithTheSpec) {
+  // A confusion matrix: an entry moved within its row (still a distribution) is caught.
+  const model::ExplicitModel ring = test::explore_spec_text(R"(
+mdp ring {
+  states a, b;
+  actions go;
+  a, go -> b;
+  b, go -> a;
+}
+catalog {
+  context at_a { reward a : 1; }
+  context at_b { reward b : 1; }
+  switching stay 0.9;
+  observation { state confusion { a -> 3/4: a + 1/4: b; b -> b; } reward follows observed; }
+}
+)");
+  pipeline::CatalogData matrix = compiled(ring);
+  EXPECT_EQ(first_failure(verdicts(ring, matrix)), "");
+  EXPECT_EQ(verdicts(ring, matrix)[2].verdict,
+            "confusion matrix, reward follows the observed state");
+  matrix.confusion[0] = 0.5;
+  matrix.confusion[1] = 0.5;
+  EXPECT_NE(first_failure(verdicts(ring, matrix)).find("confusion[a][a] is 0.5, the spec says 3/4"),
+            std::string::npos)
+      << first_failure(verdicts(ring, matrix));
+
+  // A spec without an observation model: its catalog has none, unless compiled with --robust,
+  // which verify is then told.
+  std::string text = test::read_text_file(kSpec);
+  const std::size_t block = text.find("\n\n  // The sensor of Table I");
+  ASSERT_NE(block, std::string::npos);
+  text.erase(block + 1, text.rfind("}\n") - block - 1);
+  const model::ExplicitModel plain = test::explore_spec_text(text);
+  EXPECT_EQ(plain.observation.kind, model::ObservationSpec::Kind::kNone);
+  pipeline::CatalogData none = compiled(plain);
+  EXPECT_EQ(first_failure(verdicts(plain, none)), "");
+  pipeline::CatalogData robust = compiled(plain, 0.9);
+  EXPECT_NE(first_failure(verdicts(plain, robust))
+                .find("observation model: FAILED: the catalog's observation model is symmetric, "
+                      "the spec's none (compiled with --robust P?"),
+            std::string::npos)
+      << first_failure(verdicts(plain, robust));
+  EXPECT_EQ(first_failure(verdicts(plain, robust, {.robust_p_correct = 0.9})), "");
+  EXPECT_NE(first_failure(verdicts(plain, robust, {.robust_p_correct = 0.8})).find("--robust 0.8"),
+            std::string::npos);
+  // And the spec's own model, overridden on the command line.
+  pipeline::CatalogData overridden = compiled(model_, 0.9);
+  EXPECT_NE(first_failure(verdicts(model_, overridden)).find("not 1 - noise = 3/10"),
+            std::string::npos)
+      << first_failure(verdicts(model_, overridden));
+  EXPECT_EQ(first_failure(verdicts(model_, overridden, {.robust_p_correct = 0.9})), "");
+}
+
 TEST_F(CatalogVerify, ImportedModelsAndHorizonsAreCheckedToo) {
   SourceManager sources;
   std::ostringstream messages;
@@ -181,6 +245,30 @@ TEST_F(CatalogVerify, TheCommandLineRejectsAnEditedFile) {
   const auto failed = test::run_oasisc("verify " + kSpec + " " + bad.string());
   EXPECT_EQ(failed.status, 1) << failed.output;
   EXPECT_NE(failed.output.find("context object_at_s1: FAILED"), std::string::npos) << failed.output;
+}
+
+TEST_F(CatalogVerify, TheShippedSpecCompilesAndVerifiesWithItsObservationModel) {
+  const test::ScratchDirectory scratch("oasis_catalog_verify");
+  const std::string out = (scratch.path() / "out").string();
+  const std::string robust = (scratch.path() / "robust").string();
+  ASSERT_EQ(test::run_oasisc("compile " + kSpec + " -o " + out + " --progress never").status, 0);
+  const auto passed = test::run_oasisc("verify " + kSpec + " " + out + "/discrete_tracking.bin");
+  EXPECT_EQ(passed.status, 0) << passed.output;
+  EXPECT_NE(passed.output.find("observation model: symmetric, p_correct 1 - noise = 3/10 (0.3), "
+                               "reward follows the true state"),
+            std::string::npos)
+      << passed.output;
+  EXPECT_NE(passed.output.find("robust section ok"), std::string::npos) << passed.output;
+  ASSERT_EQ(test::run_oasisc("compile " + kSpec + " -o " + robust +
+                             " --format bin --robust 0.9 --progress never")
+                .status,
+            0);
+  const std::string robust_bin = robust + "/discrete_tracking.bin";
+  const auto refused = test::run_oasisc("verify " + kSpec + " " + robust_bin);
+  EXPECT_EQ(refused.status, 1) << refused.output;
+  EXPECT_NE(refused.output.find("observation model: FAILED"), std::string::npos) << refused.output;
+  const auto accepted = test::run_oasisc("verify --robust 0.9 " + kSpec + " " + robust_bin);
+  EXPECT_EQ(accepted.status, 0) << accepted.output;
 }
 
 }  // namespace

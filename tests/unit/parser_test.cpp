@@ -705,8 +705,8 @@ TEST(ParserErrors, BadCatalogItems) {
       "  context c { states x; }\n"
       "}\n");
   EXPECT_EQ(parsed.errors(), 3U) << parsed.output();
-  EXPECT_TRUE(
-      parsed.reported("2:3: error: expected 'context', 'switching' or 'prior', found 'states'"))
+  EXPECT_TRUE(parsed.reported(
+      "2:3: error: expected 'context', 'switching', 'prior' or 'observation', found 'states'"))
       << parsed.output();
   EXPECT_TRUE(parsed.reported(
       "3:15: error: expected 'base' after '=' (a context can only alias the base model), found "

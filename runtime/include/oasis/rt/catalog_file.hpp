@@ -167,9 +167,6 @@ class LoadedCatalog {
     view_.num_actions = read_at<std::uint32_t>(44);
     view_.num_abstractions = read_at<std::uint32_t>(48);
     const auto kind = read_at<std::uint32_t>(52);
-    if (kind == static_cast<std::uint32_t>(ObservationKind::kMatrix)) {
-      return fail("confusion-matrix observation models are not stored in catalog files");
-    }
     if (kind > static_cast<std::uint32_t>(ObservationKind::kMatrix)) {
       return fail("unknown observation kind " + std::to_string(kind));
     }
@@ -230,7 +227,30 @@ class LoadedCatalog {
       if (static_cast<std::uint32_t>(section) == tag) return true;
     for (const Section section : kContinuousSections)
       if (static_cast<std::uint32_t>(section) == tag) return true;
+    for (const Section section : kObservationSections)
+      if (static_cast<std::uint32_t>(section) == tag) return true;
     return false;
+  }
+
+  // The observation model's sections: a kMatrix model's confusion matrix (present exactly
+  // then) and the reward source (absent: the true state's).
+  bool parse_observation() {
+    ObservationModel& obs = view_.observation;
+    const bool matrix = obs.kind == ObservationKind::kMatrix;
+    const std::uint64_t states = view_.num_states;
+    const std::uint64_t cells =
+        count_of(Section::kConfusion, kCatalogWide) == 0 && !matrix ? 0 : states * states;
+    obs.confusion =
+        array<double>(Section::kConfusion, kCatalogWide, cells, "confusion matrix", !matrix);
+    const std::uint32_t* source =
+        array<std::uint32_t>(Section::kRewardSource, kCatalogWide, 1, "reward source", true);
+    if (!ok_) return false;
+    if (source != nullptr) {
+      if (*source > static_cast<std::uint32_t>(RewardSource::kObservedState))
+        return fail("unknown reward source " + std::to_string(*source));
+      obs.reward_source = static_cast<RewardSource>(*source);
+    }
+    return true;
   }
 
   // Strings: offsets into the NUL-terminated text; each must start inside it and end at a
@@ -355,7 +375,7 @@ class LoadedCatalog {
 
   void parse() {
     ok_ = true;
-    if (!parse_header() || !parse_strings()) return;
+    if (!parse_header() || !parse_strings() || !parse_observation()) return;
     const std::uint32_t n = view_.num_abstractions;
     view_.switching =
         array<double>(Section::kSwitching, kCatalogWide, std::uint64_t{n} * n, "switching");

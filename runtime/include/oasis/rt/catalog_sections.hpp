@@ -16,6 +16,11 @@
 //         56     8  p_correct (IEEE-754 double)
 //         64        section table
 //
+// The observation model (the robust section) is the header's kind and p_correct, plus two
+// catalog-wide sections: the confusion matrix of a kMatrix model (required: a runtime that
+// cannot read it must refuse the file) and the reward source (optional: a file without it,
+// or a runtime that skips it, has the reward follow the true state, as it always did).
+//
 // Format 2 (today's): each table entry is 24 bytes, u32 tag, u32 abstraction (the index of
 // the abstraction the section belongs to, or kCatalogWide), u64 offset, u64 element count.
 // Sections may come in any order; a reader looks them up by (tag, abstraction). A tag with
@@ -76,7 +81,10 @@ enum class Section : std::uint32_t {
   kStateProbabilities = kRequiredSection | 26,  ///< f64 [edges]; robust section only
   // Continuous catalogs (format 2 and later); the variable names follow the contexts in the
   // string table.
-  kStateDimension = kRequiredSection | 6,   ///< u32 [1]: the number of continuous variables
+  kStateDimension = kRequiredSection | 6,  ///< u32 [1]: the number of continuous variables
+  // The observation model beyond the header's kind and p_correct (format 2 and later).
+  kConfusion = kRequiredSection | 7,        ///< f64 [num_states^2]; only with kind kMatrix
+  kRewardSource = 8,                        ///< u32 [1]: a RewardSource; optional (kTrueState)
   kGridAxes = kRequiredSection | 32,        ///< u32 [d], per abstraction
   kGridBreakBegin = kRequiredSection | 33,  ///< u32 [d + 1]
   kGridBreaks = kRequiredSection | 34,      ///< f64 [break_begin[d]]
@@ -99,6 +107,9 @@ inline constexpr Section kContinuousSections[] = {
     Section::kEpsilon,        Section::kBspCounts, Section::kBspNormal,
     Section::kBspBound,       Section::kBspBelow,  Section::kBspAbove,
     Section::kBspCell};
+
+/// The observation model's sections (format 2 and later).
+inline constexpr Section kObservationSections[] = {Section::kConfusion, Section::kRewardSource};
 
 /// The catalog-wide sections of a format-1 file, in table order.
 inline constexpr Section kFormat1CatalogOrder[] = {Section::kNameText, Section::kStringOffsets,
