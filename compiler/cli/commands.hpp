@@ -29,5 +29,6 @@ CommandRunner add_export_command(CLI::App& app);
 CommandRunner add_quotient_command(CLI::App& app);
 CommandRunner add_compile_command(CLI::App& app);
 CommandRunner add_verify_command(CLI::App& app);
+CommandRunner add_fit_command(CLI::App& app);
 
 }  // namespace oasis::cli

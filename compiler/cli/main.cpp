@@ -29,6 +29,7 @@ int main(int argc, char** argv) {
   add(oasis::cli::add_quotient_command(app));
   add(oasis::cli::add_compile_command(app));
   add(oasis::cli::add_verify_command(app));
+  add(oasis::cli::add_fit_command(app));
 
   try {
     app.parse(argc, argv);
