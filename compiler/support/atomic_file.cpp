@@ -7,6 +7,7 @@
 #include <utility>
 
 #include <fcntl.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 namespace oasis {
@@ -71,6 +72,7 @@ AtomicFile& AtomicFile::operator=(AtomicFile&& other) noexcept {
     discard();
     path_ = std::move(other.path_);
     temporary_path_ = std::move(other.temporary_path_);
+    direct_ = std::exchange(other.direct_, false);
     fd_ = std::exchange(other.fd_, -1);
     buffer_ = std::move(other.buffer_);
     capacity_ = std::exchange(other.capacity_, 0);
@@ -89,6 +91,11 @@ bool AtomicFile::open(const std::string& path, std::string& error) {
   discard();
   error_.clear();
   path_ = path;
+  direct_ = false;
+  struct stat status {};
+  if (::stat(path.c_str(), &status) == 0 &&
+      (S_ISCHR(status.st_mode) || S_ISFIFO(status.st_mode) || S_ISSOCK(status.st_mode)))
+    return open_direct(path, error);
   const std::string prefix = directory_of(path) + "/." + base_name_of(path) + ".tmp.";
   // O_EXCL with mode 0666 is mkstemp's guarantee plus the umask's permissions, so the
   // committed file gets the same permissions a plain open() would have given it.
@@ -112,6 +119,20 @@ bool AtomicFile::open(const std::string& path, std::string& error) {
   return false;
 }
 
+bool AtomicFile::open_direct(const std::string& path, std::string& error) {
+  const int fd = ::open(path.c_str(), O_WRONLY | O_CLOEXEC);
+  if (fd < 0) {
+    error = "cannot open '" + path + "': " + reason_of(errno);
+    return false;
+  }
+  fd_ = fd;
+  direct_ = true;
+  if (!buffer_) buffer_ = std::make_unique<char[]>(kBufferSize);
+  capacity_ = kBufferSize;
+  used_ = 0;
+  return true;
+}
+
 void AtomicFile::append_slow(std::string_view text) {
   flush_buffer();
   if (text.size() < capacity_) {
@@ -132,7 +153,7 @@ void AtomicFile::write_all(const char* data, std::size_t size) {
     const ssize_t written = ::write(fd_, data, size);
     if (written < 0) {
       if (errno == EINTR) continue;
-      fail("cannot write '" + temporary_path_ + "': " + reason_of(errno));
+      fail("cannot write '" + target() + "': " + reason_of(errno));
       return;
     }
     data += written;
@@ -152,12 +173,21 @@ void AtomicFile::close_descriptor() {
 bool AtomicFile::commit(std::string& error) {
   if (fd_ < 0 && good()) fail("file '" + path_ + "' was not opened");
   flush_buffer();
-  if (good() && ::fsync(fd_) != 0)
+  if (good() && !direct_ && ::fsync(fd_) != 0)
     fail("cannot sync '" + temporary_path_ + "': " + reason_of(errno));
   if (good()) {
     const int result = ::close(fd_);
     fd_ = -1;
-    if (result != 0) fail("cannot close '" + temporary_path_ + "': " + reason_of(errno));
+    if (result != 0) fail("cannot close '" + target() + "': " + reason_of(errno));
+  }
+  if (direct_) {
+    if (!good()) {
+      error = error_;
+      discard();
+      return false;
+    }
+    capacity_ = 0;
+    return true;
   }
   if (good() && ::rename(temporary_path_.c_str(), path_.c_str()) != 0) {
     fail("cannot rename '" + temporary_path_ + "' to '" + path_ + "': " + reason_of(errno));

@@ -7,6 +7,10 @@
 // Writes are buffered in one large block and numbers are formatted with std::to_chars
 // straight into it, so writers of 10^7-line files pay no stream or allocation per number.
 //
+// A destination that is a device, FIFO or socket (/dev/null, /dev/stdout, a pipe) is written
+// directly: there is nothing to replace atomically, and renaming over it would replace the
+// device itself with a regular file (as root, /dev/null for the whole machine).
+//
 // Errors are reported as lower-case reason strings; the only exception that can escape is
 // std::bad_alloc from open() (the buffer) or from building an error message.
 
@@ -77,9 +81,12 @@ class AtomicFile {
   void write_all(const char* data, std::size_t size);
   void fail(std::string reason);
   void close_descriptor();
+  bool open_direct(const std::string& path, std::string& error);
+  const std::string& target() const { return direct_ ? path_ : temporary_path_; }
 
   std::string path_;
   std::string temporary_path_;
+  bool direct_ = false;  // writing straight to a device, FIFO or socket (no temporary)
   int fd_ = -1;
   std::unique_ptr<char[]> buffer_;
   std::size_t capacity_ = 0;  // 0 until open(), so appends before open() write nothing

@@ -95,6 +95,19 @@ TEST_F(AtomicFileTest, LargeWritesCrossTheBuffer) {
   EXPECT_EQ(contents(target()), expected);
 }
 
+// A device is written, never replaced: renaming a temporary over /dev/null would turn the
+// machine's /dev/null into a regular file (as root, which CI is).
+TEST_F(AtomicFileTest, DeviceDestinationIsWrittenNotReplaced) {
+  AtomicFile file;
+  std::string error;
+  ASSERT_TRUE(file.open("/dev/null", error)) << error;
+  EXPECT_TRUE(file.temporary_path().empty());
+  file.append("discarded by the device\n");
+  ASSERT_TRUE(file.commit(error)) << error;
+  EXPECT_TRUE(fs::is_character_file("/dev/null"));
+  EXPECT_FALSE(fs::exists("/dev/.null.tmp.0"));
+}
+
 TEST_F(AtomicFileTest, OpenInMissingDirectoryFails) {
   AtomicFile file;
   std::string error;
