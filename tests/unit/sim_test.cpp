@@ -281,5 +281,31 @@ TEST_F(SimTable1, HedgedFilterIsNeverWorseThanAlgorithmOne) {
   EXPECT_EQ(compared, 2 * 9 * 3);
 }
 
+// Issue 12, point 5: p(stay) fitted from training runs of the noisy step pattern (one switch
+// in 500 steps) is close to 1, and with it the noise-aware filters reach 0.97 under the
+// "observed" noise they model.
+TEST_F(SimTable1, FittedSwitchingModelClosesTheLoop) {
+  const Table1Experiment sim = experiment();
+  Table1Options options;
+  options.seeds = 5;
+  options.fit_runs = 20;
+  options.patterns = {Pattern::kNoisyStep};
+  options.noises = {NoiseReading::kObserved};
+  options.filters = {FilterKind::kPaper, FilterKind::kRobust, FilterKind::kHedged};
+  std::string error;
+  const auto rows = run_table1(sim, options, error, {});
+  ASSERT_TRUE(rows) << error;
+  int fitted = 0;
+  for (const RowResult& row : *rows) {
+    if (row.model != "fit") continue;
+    ++fitted;
+    EXPECT_GT(row.p_stay, 0.99);
+    if (row.filter != FilterKind::kPaper) {
+      EXPECT_GE(row.accuracy.mean, 0.97) << filter_name(row.filter);
+    }
+  }
+  EXPECT_EQ(fitted, 3);
+}
+
 }  // namespace
 }  // namespace oasis::sim

@@ -31,6 +31,7 @@ struct Table1Arguments {
   std::vector<std::string> noises{"perceived", "process", "observed"};
   std::vector<std::string> filters{"paper", "keep", "guard", "soft", "robust", "hedged"};
   std::vector<std::string> declared{"observed"};
+  std::uint32_t fit_runs = 0;
   std::string json;
   std::string csv_dir;
   std::string plot_dir;
@@ -69,6 +70,7 @@ int run_table1_command(const Table1Arguments& arguments) {
     }
     options.filters.push_back(*filter);
   }
+  options.fit_runs = arguments.fit_runs;
   options.declared.clear();
   for (const std::string& name : arguments.declared) {
     const auto declared = sim::parse_noise(name);
@@ -168,6 +170,11 @@ int main(int argc, char** argv) {
                    "observed (the reward follows the true state), perceived or process (it "
                    "follows the observed state)")
       ->capture_default_str();
+  command
+      ->add_option("--fit-switching", table1.fit_runs,
+                   "add a transition model whose p(stay) is fitted per row, by maximum "
+                   "likelihood, from this many training runs (on other seeds)")
+      ->check(CLI::Range(1, 1000));
   command->add_option("--json", table1.json, "write the rows as JSON to this file");
   command->add_option("--csv-dir", table1.csv_dir, "write per-trial CSV traces here");
   command->add_option("--plot", table1.plot_dir,

@@ -88,9 +88,15 @@ void print_table(std::ostream& out, const std::vector<RowResult>& rows,
   }
   const bool has_paper = std::find(options.filters.begin(), options.filters.end(),
                                    FilterKind::kPaper) != options.filters.end();
-  for (const TransitionModel& model : table1_models()) {
-    out << "\n== Abstraction transition model (" << model.id << "): p(stay) = " << model.p_stay
-        << " ==\n";
+  std::vector<TransitionModel> models = table1_models();
+  if (options.fit_runs > 0) models.push_back({"fit", 0.0});
+  for (const TransitionModel& model : models) {
+    if (model.id == "fit")
+      out << "\n== Abstraction transition model (fit): p(stay) fitted per row from "
+          << options.fit_runs << " training runs of its pattern and noise ==\n";
+    else
+      out << "\n== Abstraction transition model (" << model.id << "): p(stay) = " << model.p_stay
+          << " ==\n";
     if (has_paper) {
       out << "filter paper (Algorithm 1, random ties)\n";
       out << metrics::pad_columns("pattern", 16) << metrics::pad_columns("noise", 11) << "| "
@@ -108,6 +114,11 @@ void print_table(std::ostream& out, const std::vector<RowResult>& rows,
         if (const auto reference = paper_reference(model.id, pattern))
           out << metrics::pad_columns(cell(reference->accuracy), 13)
               << metrics::pad_columns(cell(reference->avg_lag), 13) << cell(reference->max_lag);
+        if (model.id == "fit") {
+          std::ostringstream fitted;
+          fitted << std::fixed << std::setprecision(4) << row->p_stay;
+          out << "fitted p(stay) = " << fitted.str();
+        }
         out << "\n";
       }
     }
@@ -148,6 +159,7 @@ nlohmann::json rows_json(const std::vector<RowResult>& rows) {
                     {"declared", row.declared == NoiseReading::kNone
                                      ? nlohmann::json(nullptr)
                                      : nlohmann::json(std::string(noise_name(row.declared)))},
+                    {"p_stay", row.p_stay},
                     {"accuracy", stat(row.accuracy)},
                     {"avg_lag", stat(row.avg_lag)},
                     {"max_lag", stat(row.max_lag)},

@@ -2,6 +2,8 @@
 
 #include <utility>
 
+#include "fit/forward_algorithm.hpp"
+#include "fit/switching_fit.hpp"
 #include "metrics/context_metrics.hpp"
 #include "oasis/rt/attention_filter.hpp"
 #include "oasis/rt/hedged_filter.hpp"
@@ -242,6 +244,7 @@ std::optional<Trace> Table1Experiment::run_trial(const TrialSpec& spec, std::str
     trace.true_state.push_back(state);
     trace.observed_state.push_back(sensed.observed_state);
     trace.reward.push_back(sensed.reward);
+    trace.action.push_back(action);
   }
   return trace;
 }
@@ -259,15 +262,56 @@ std::vector<std::pair<FilterKind, NoiseReading>> filter_columns(const Table1Opti
   return columns;
 }
 
+std::optional<double> fitted_p_stay(const Table1Experiment& experiment, Pattern pattern,
+                                    NoiseReading noise, const Table1Options& options,
+                                    std::string& error) {
+  TrialSpec spec;
+  spec.pattern = pattern;
+  spec.noise = noise;
+  spec.sigma = options.sigma;
+  spec.steps = options.steps;
+  std::vector<fit::LoggedRun> runs;
+  for (std::uint32_t k = 0; k < options.fit_runs; ++k) {
+    spec.seed = 10000 + k;
+    const std::optional<Trace> trace = experiment.run_trial(spec, error);
+    if (!trace) return std::nullopt;
+    fit::LoggedRun run;
+    for (std::size_t step = 0; step < trace->observed_state.size(); ++step)
+      run.steps.push_back({trace->observed_state[step], trace->reward[step], trace->action[step]});
+    runs.push_back(std::move(run));
+  }
+  const std::optional<pipeline::CatalogData> catalog = experiment.catalog_for(spec, error);
+  if (!catalog) return std::nullopt;
+  fit::FilterModel model = fit::filter_model(*catalog, experiment.model());
+  if (noise != NoiseReading::kNone) {
+    model.noise.kind = fit::StateNoise::Kind::kSymmetric;
+    model.noise.p_correct = 1.0 - options.sigma;
+    model.noise.reward = noise == NoiseReading::kObserved ? fit::RewardFollows::kTrueState
+                                                          : fit::RewardFollows::kObservedState;
+  }
+  const std::optional<fit::SwitchingFit> fitted = fit::fit_switching(model, runs, {}, error);
+  if (!fitted) return std::nullopt;
+  return fitted->p_stay;
+}
+
 std::optional<std::vector<RowResult>> run_table1(const Table1Experiment& experiment,
                                                  const Table1Options& options, std::string& error,
                                                  const TraceSink& sink) {
   std::vector<RowResult> rows;
-  for (const TransitionModel& model : table1_models()) {
+  std::vector<TransitionModel> models = table1_models();
+  if (options.fit_runs > 0) models.push_back({"fit", 0.0});
+  for (const TransitionModel& listed : models) {
     for (Pattern pattern : options.patterns) {
       std::vector<NoiseReading> noises{NoiseReading::kNone};
       if (pattern_is_noisy(pattern)) noises = options.noises;
       for (NoiseReading noise : noises) {
+        TransitionModel model = listed;
+        if (model.id == "fit") {
+          const std::optional<double> p_stay =
+              fitted_p_stay(experiment, pattern, noise, options, error);
+          if (!p_stay) return std::nullopt;
+          model.p_stay = *p_stay;
+        }
         for (const auto& [filter, declared] : filter_columns(options)) {
           std::vector<double> accuracy, avg_lag, max_lag, zero;
           for (std::uint32_t seed = 0; seed < options.seeds; ++seed) {
@@ -290,9 +334,9 @@ std::optional<std::vector<RowResult>> run_table1(const Table1Experiment& experim
             zero.push_back(trace->zero_likelihood_steps);
             if (sink) sink(spec, *trace);
           }
-          rows.push_back({model.id, pattern, noise, filter, declared, metrics::mean_std(accuracy),
-                          metrics::mean_std(avg_lag), metrics::mean_std(max_lag),
-                          metrics::mean_std(zero)});
+          rows.push_back({model.id, pattern, noise, filter, declared, model.p_stay,
+                          metrics::mean_std(accuracy), metrics::mean_std(avg_lag),
+                          metrics::mean_std(max_lag), metrics::mean_std(zero)});
         }
       }
     }

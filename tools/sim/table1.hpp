@@ -52,8 +52,8 @@ namespace oasis::sim {
 // observation model, but to the filter it looks like one whose reward follows what is seen.
 enum class FilterKind : std::uint32_t { kPaper, kKeep, kGuard, kSoft, kRobust, kHedged };
 
-inline constexpr FilterKind kAllFilters[] = {FilterKind::kPaper, FilterKind::kKeep,
-                                             FilterKind::kGuard, FilterKind::kSoft,
+inline constexpr FilterKind kAllFilters[] = {FilterKind::kPaper,  FilterKind::kKeep,
+                                             FilterKind::kGuard,  FilterKind::kSoft,
                                              FilterKind::kRobust, FilterKind::kHedged};
 
 // True for the filters that run on a declared observation model (robust, hedged).
@@ -88,6 +88,7 @@ struct Trace {
   std::vector<std::uint32_t> true_state;
   std::vector<std::uint32_t> observed_state;
   std::vector<double> reward;
+  std::vector<std::uint32_t> action;        // the action taken before step k's observation
   std::uint32_t zero_likelihood_steps = 0;  // steps where step() reported kZeroLikelihood
 };
 
@@ -120,6 +121,7 @@ struct RowResult {
   NoiseReading noise = NoiseReading::kNone;
   FilterKind filter = FilterKind::kPaper;
   NoiseReading declared = NoiseReading::kNone;  // kNone for the filters without a model
+  double p_stay = 0.0;                          // the transition model's (fitted for "fit")
   metrics::MeanStd accuracy;
   metrics::MeanStd avg_lag;
   metrics::MeanStd max_lag;
@@ -135,7 +137,19 @@ struct Table1Options {
   std::vector<Pattern> patterns{std::begin(kAllPatterns), std::end(kAllPatterns)};
   // The readings the robust and hedged filters are run with (each is a column).
   std::vector<NoiseReading> declared{NoiseReading::kObserved};
+  // > 0: a third transition model, "fit", whose p(stay) is fitted per row (pattern and noise)
+  // by maximum likelihood (oasisc fit switching's fit) from this many training runs of the
+  // row's own pattern and noise, on seeds the table's trials do not use (10000, 10001, ...).
+  // The true contexts follow the pattern, not a Markov chain: the fit finds the p(stay) that
+  // explains the pattern best. The training runs' filter is irrelevant (actions are random);
+  // the fit assumes the row's own noise reading as the observation model.
+  std::uint32_t fit_runs = 0;
 };
+
+// The p(stay) fitted for one row from `options.fit_runs` training runs (see fit_runs).
+std::optional<double> fitted_p_stay(const Table1Experiment& experiment, Pattern pattern,
+                                    NoiseReading noise, const Table1Options& options,
+                                    std::string& error);
 
 // The filter columns of a table: every filter, the model-based ones once per declared reading
 // (the others with kNone).
