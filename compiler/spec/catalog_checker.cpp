@@ -23,22 +23,12 @@ bool context_distribution(const ast::Distribution& distribution,
       ok = false;
       continue;
     }
-    Rational p = 1;
-    if (branch.probability) {
-      auto value = expressions.constant_number(*branch.probability, "a probability");
-      if (!value) {
-        ok = false;
-        continue;
-      }
-      p = *value;
-      if (p < 0 || p > 1) {
-        diagnostics.error(
-            branch.probability->range,
-            "probability " + describe(p) + (p < 0 ? " is negative" : " is greater than 1"));
-        ok = false;
-        continue;
-      }
+    const std::optional<Rational> probability = expressions.branch_probability(branch);
+    if (!probability) {
+      ok = false;
+      continue;
     }
+    const Rational& p = *probability;
     row[entry->value] += p;
     sum += p;
   }

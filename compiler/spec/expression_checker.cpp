@@ -323,4 +323,17 @@ std::optional<std::int64_t> ExpressionChecker::constant_integer(const ast::Expr&
   return value->get_num().get_si();
 }
 
+std::optional<Rational> ExpressionChecker::branch_probability(const ast::Branch& branch) {
+  if (!branch.probability) return Rational(1);
+  std::optional<Rational> p = constant_number(*branch.probability, "a probability");
+  if (!p) return std::nullopt;
+  if (*p < 0 || *p > 1) {
+    diagnostics_.error(
+        branch.probability->range,
+        "probability " + describe(*p) + (*p < 0 ? " is negative" : " is greater than 1"));
+    return std::nullopt;
+  }
+  return p;
+}
+
 }  // namespace oasis::spec

@@ -36,6 +36,9 @@ class ExpressionChecker {
   // (support/double_range.hpp: an error beyond the double range, a warning when subnormal).
   // `what` is used in messages.
   std::optional<Rational> constant_number(const ast::Expr& expr, std::string_view what);
+  // The probability of a branch `p: target` of a listed distribution: a constant number in
+  // [0, 1], or 1 when the branch gives none. nullopt when an error was reported.
+  std::optional<Rational> branch_probability(const ast::Branch& branch);
   // A constant integer that fits in 64 bits.
   std::optional<std::int64_t> constant_integer(const ast::Expr& expr, std::string_view what);
 

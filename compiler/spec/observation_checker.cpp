@@ -33,22 +33,12 @@ bool confusion_row(const ast::Distribution& distribution, const Scope& scope,
   bool ok = true;
   for (const ast::Branch& branch : distribution.branches) {
     const auto observed = state_index(*branch.target, scope, diagnostics);
-    Rational p = 1;
-    if (branch.probability) {
-      auto value = expressions.constant_number(*branch.probability, "a probability");
-      if (!value) {
-        ok = false;
-        continue;
-      }
-      p = *value;
-      if (p < 0 || p > 1) {
-        diagnostics.error(
-            branch.probability->range,
-            "probability " + describe(p) + (p < 0 ? " is negative" : " is greater than 1"));
-        ok = false;
-        continue;
-      }
+    const std::optional<Rational> probability = expressions.branch_probability(branch);
+    if (!probability) {
+      ok = false;
+      continue;
     }
+    const Rational& p = *probability;
     if (!observed) {
       ok = false;
       continue;

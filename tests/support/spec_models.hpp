@@ -4,6 +4,7 @@
 
 #include <fstream>
 #include <iterator>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <utility>
@@ -11,6 +12,7 @@
 #include <gtest/gtest.h>
 
 #include "model/explorer.hpp"
+#include "pipeline/discrete_catalog.hpp"
 #include "spec/frontend.hpp"
 
 namespace oasis::test {
@@ -84,6 +86,18 @@ inline model::ExplicitModel explore_spec_file(const std::string& path) {
   return detail::explore_loaded([&](SourceManager& sources, DiagnosticEngine& diagnostics) {
     return spec::load_spec(path, sources, diagnostics);
   });
+}
+
+// The catalog `oasisc compile` would build for `model` (with --robust p_correct if given);
+// fails the test and returns an empty catalog if it cannot be built.
+inline pipeline::CatalogData compiled_catalog(const model::ExplicitModel& model,
+                                              std::optional<double> p_correct = std::nullopt) {
+  pipeline::BuildOptions options;
+  options.catalog.p_correct = p_correct;
+  std::string error;
+  std::optional<pipeline::CatalogData> catalog = pipeline::build_catalog(model, 1, options, error);
+  EXPECT_TRUE(catalog) << error;
+  return catalog ? std::move(*catalog) : pipeline::CatalogData{};
 }
 
 }  // namespace oasis::test

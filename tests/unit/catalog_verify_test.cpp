@@ -23,16 +23,6 @@ namespace {
 
 const std::string kSpec = std::string(OASIS_SOURCE_DIR) + "/specs/discrete_tracking.oasis";
 
-pipeline::CatalogData compiled(const model::ExplicitModel& model,
-                               std::optional<double> p_correct = std::nullopt) {
-  pipeline::BuildOptions options;
-  options.catalog.p_correct = p_correct;
-  std::string error;
-  auto catalog = pipeline::build_catalog(model, 1, options, error);
-  EXPECT_TRUE(catalog) << error;
-  return std::move(*catalog);
-}
-
 // The verdicts for `catalog` after a round trip through the binary file (so the change is
 // one a file can carry: it must still load).
 std::vector<verify::CatalogCheck> verdicts(const model::ExplicitModel& model,
@@ -74,7 +64,7 @@ class CatalogVerify : public ::testing::Test {
 
 TEST_F(CatalogVerify, AnUntouchedCatalogPasses) {
   for (const std::optional<double> p_correct : {std::optional<double>{}, std::optional(0.9)}) {
-    pipeline::CatalogData catalog = compiled(model_, p_correct);
+    pipeline::CatalogData catalog = test::compiled_catalog(model_, p_correct);
     const auto checks = verdicts(model_, catalog, {.robust_p_correct = p_correct});
     ASSERT_EQ(checks.size(), 5U);
     EXPECT_EQ(first_failure(checks), "");
@@ -82,7 +72,8 @@ TEST_F(CatalogVerify, AnUntouchedCatalogPasses) {
 }
 
 TEST_F(CatalogVerify, EveryChangedItemIsCaught) {
-  const pipeline::CatalogData good = compiled(model_);  // with the spec's observation model
+  const pipeline::CatalogData good =
+      test::compiled_catalog(model_);  // with the spec's observation model
   const std::vector<Change> changes = {
       {"observation noise", [](auto& c) { c.p_correct = 0.5; }, "p_correct is 0.5"},
       {"reward source", [](auto& c) { c.reward_source = rt::RewardSource::kObservedState; },
@@ -172,7 +163,7 @@ catalog {
   observation { state confusion { a -> 3/4: a + 1/4: b; b -> b; } reward follows observed; }
 }
 )");
-  pipeline::CatalogData matrix = compiled(ring);
+  pipeline::CatalogData matrix = test::compiled_catalog(ring);
   EXPECT_EQ(first_failure(verdicts(ring, matrix)), "");
   EXPECT_EQ(verdicts(ring, matrix)[2].verdict,
             "confusion matrix, reward follows the observed state");
@@ -190,9 +181,9 @@ catalog {
   text.erase(block + 1, text.rfind("}\n") - block - 1);
   const model::ExplicitModel plain = test::explore_spec_text(text);
   EXPECT_EQ(plain.observation.kind, model::ObservationSpec::Kind::kNone);
-  pipeline::CatalogData none = compiled(plain);
+  pipeline::CatalogData none = test::compiled_catalog(plain);
   EXPECT_EQ(first_failure(verdicts(plain, none)), "");
-  pipeline::CatalogData robust = compiled(plain, 0.9);
+  pipeline::CatalogData robust = test::compiled_catalog(plain, 0.9);
   EXPECT_NE(first_failure(verdicts(plain, robust))
                 .find("observation model: FAILED: the catalog's observation model is symmetric, "
                       "the spec's none (compiled with --robust P?"),
@@ -202,7 +193,7 @@ catalog {
   EXPECT_NE(first_failure(verdicts(plain, robust, {.robust_p_correct = 0.8})).find("--robust 0.8"),
             std::string::npos);
   // And the spec's own model, overridden on the command line.
-  pipeline::CatalogData overridden = compiled(model_, 0.9);
+  pipeline::CatalogData overridden = test::compiled_catalog(model_, 0.9);
   EXPECT_NE(first_failure(verdicts(model_, overridden)).find("not 1 - noise = 3/10"),
             std::string::npos)
       << first_failure(verdicts(model_, overridden));
@@ -216,7 +207,7 @@ TEST_F(CatalogVerify, ImportedModelsAndHorizonsAreCheckedToo) {
   const auto coin = formats::read_model_file(
       std::string(OASIS_SOURCE_DIR) + "/tests/data/formats/coin.aut", sources, diagnostics, {});
   ASSERT_TRUE(coin) << messages.str();
-  pipeline::CatalogData catalog = compiled(*coin);
+  pipeline::CatalogData catalog = test::compiled_catalog(*coin);
   EXPECT_EQ(first_failure(verdicts(*coin, catalog)), "");
   catalog.switching = {0.5};  // not a distribution: refused by the loader itself
   const std::string bytes = codegen::binary_catalog(catalog);
@@ -225,7 +216,7 @@ TEST_F(CatalogVerify, ImportedModelsAndHorizonsAreCheckedToo) {
   std::string text = test::read_text_file(kSpec);
   text.replace(text.find("discount 0.9;"), 13, "horizon 4;");
   const model::ExplicitModel horizon = test::explore_spec_text(text);
-  pipeline::CatalogData planned = compiled(horizon);
+  pipeline::CatalogData planned = test::compiled_catalog(horizon);
   EXPECT_EQ(first_failure(verdicts(horizon, planned)), "");
   planned.abstractions[0].value[0] += 0.5;
   EXPECT_NE(first_failure(verdicts(horizon, planned)).find("4-step value"), std::string::npos);
@@ -233,7 +224,7 @@ TEST_F(CatalogVerify, ImportedModelsAndHorizonsAreCheckedToo) {
 
 TEST_F(CatalogVerify, TheCommandLineRejectsAnEditedFile) {
   const test::ScratchDirectory scratch("oasis_catalog_verify");
-  pipeline::CatalogData catalog = compiled(model_);
+  pipeline::CatalogData catalog = test::compiled_catalog(model_);
   catalog.spec_hash = rt::spec_hash(test::read_text_file(kSpec));
   const auto good = scratch.path() / "good.bin";
   const auto bad = scratch.path() / "bad.bin";

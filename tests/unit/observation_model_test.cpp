@@ -216,18 +216,8 @@ TEST(ObservationSyntax, SoundBlocksBecomeTheModel) {
 
 // ---- carriers -----------------------------------------------------------------------------
 
-pipeline::CatalogData build(const model::ExplicitModel& model,
-                            std::optional<double> p_correct = std::nullopt) {
-  pipeline::BuildOptions options;
-  options.catalog.p_correct = p_correct;
-  std::string error;
-  auto catalog = pipeline::build_catalog(model, 1, options, error);
-  EXPECT_TRUE(catalog) << error;
-  return catalog ? std::move(*catalog) : pipeline::CatalogData{};
-}
-
 TEST(ObservationCatalog, TheBinaryFileCarriesEveryKind) {
-  pipeline::CatalogData matrix = build(test::explore_spec_text(kMatrixSpec));
+  pipeline::CatalogData matrix = test::compiled_catalog(test::explore_spec_text(kMatrixSpec));
   ASSERT_EQ(matrix.observation, rt::ObservationKind::kMatrix);
   EXPECT_EQ(matrix.confusion, (std::vector<double>{0.8, 0.2, 0.0, 0.1, 0.8, 0.1, 0.0, 0.0, 1.0}));
   EXPECT_EQ(matrix.reward_source, rt::RewardSource::kObservedState);
@@ -242,7 +232,7 @@ TEST(ObservationCatalog, TheBinaryFileCarriesEveryKind) {
   EXPECT_NE(loaded.view().abstractions[1].state_transitions.choice_begin, nullptr);
 
   // The shipped spec: symmetric, p_correct 1 - 0.7.
-  pipeline::CatalogData shipped = build(
+  pipeline::CatalogData shipped = test::compiled_catalog(
       test::explore_spec_file(std::string(OASIS_SOURCE_DIR) + "/specs/discrete_tracking.oasis"));
   const std::string shipped_bytes = codegen::binary_catalog(shipped);
   const rt::LoadedCatalog symmetric =
@@ -254,7 +244,7 @@ TEST(ObservationCatalog, TheBinaryFileCarriesEveryKind) {
   EXPECT_EQ(symmetric.view().observation.reward_source, rt::RewardSource::kTrueState);
 
   // No observation block: no robust section, no observation sections.
-  pipeline::CatalogData none = build(test::explore_spec_text(explicit_spec("")));
+  pipeline::CatalogData none = test::compiled_catalog(test::explore_spec_text(explicit_spec("")));
   const std::string none_bytes = codegen::binary_catalog(none);
   EXPECT_EQ(none_bytes.find("\x08\x00\x00\x00\xff\xff\xff\xff", 0, 8), std::string::npos);
   const rt::LoadedCatalog plain =
@@ -264,7 +254,7 @@ TEST(ObservationCatalog, TheBinaryFileCarriesEveryKind) {
 }
 
 TEST(ObservationCatalog, RobustOnTheCommandLineOverridesTheSpecsNoise) {
-  pipeline::CatalogData matrix = build(test::explore_spec_text(kMatrixSpec), 0.6);
+  pipeline::CatalogData matrix = test::compiled_catalog(test::explore_spec_text(kMatrixSpec), 0.6);
   EXPECT_EQ(matrix.observation, rt::ObservationKind::kSymmetric);
   EXPECT_EQ(matrix.p_correct, 0.6);
   EXPECT_TRUE(matrix.confusion.empty());
