@@ -15,6 +15,14 @@ namespace {
 constexpr double kSigmaFloor = 1e-6;  // in units of the residuals' standard deviation
 constexpr std::size_t kMaxConstrainedDistances = 200;
 
+// c[0] + c[1] u + ... + c[terms-1] u^(terms-1).
+double poly(const double* c, std::size_t terms, double u) {
+  double value = 0.0, power = 1.0;
+  for (std::size_t k = 0; k < terms; ++k, power *= u)
+    value += c[k] * power;
+  return value;
+}
+
 // The problem in scaled units: u = d / D, e = (m - d) / R.
 class ScaledProblem {
  public:
@@ -25,13 +33,6 @@ class ScaledProblem {
   std::size_t dimension() const { return nb_ + ns_; }
   std::size_t bias_terms() const { return nb_; }
   std::size_t sigma_terms() const { return ns_; }
-
-  static double poly(const double* c, std::size_t terms, double u) {
-    double value = 0.0, power = 1.0;
-    for (std::size_t k = 0; k < terms; ++k, power *= u)
-      value += c[k] * power;
-    return value;
-  }
 
   // Negative log-likelihood without the constants; fills `gradient` when non-empty.
   double value(const std::vector<double>& x, std::vector<double>& gradient) const {
@@ -89,7 +90,7 @@ double floor_constraint(unsigned n, const double* x, double* grad, void* raw) {
     for (std::size_t j = 0; j < c->terms; ++j, power *= c->u)
       grad[c->offset + j] = -power;
   }
-  return kSigmaFloor - ScaledProblem::poly(x + c->offset, c->terms, c->u);
+  return kSigmaFloor - poly(x + c->offset, c->terms, c->u);
 }
 
 struct Solution {
@@ -160,21 +161,11 @@ bool read_calibration(const CsvTable& table, std::vector<DepthPair>& pairs,
 }
 
 double DepthNoiseFit::sigma_at(double d) const {
-  double value = 0.0, power = 1.0;
-  for (double c : sigma) {
-    value += c * power;
-    power *= d;
-  }
-  return value;
+  return poly(sigma.data(), sigma.size(), d);
 }
 
 double DepthNoiseFit::bias_at(double d) const {
-  double value = 0.0, power = 1.0;
-  for (double c : bias) {
-    value += c * power;
-    power *= d;
-  }
-  return value;
+  return poly(bias.data(), bias.size(), d);
 }
 
 std::optional<Interval> DepthNoiseFit::sigma_interval(double d) const {
@@ -236,7 +227,7 @@ std::optional<DepthNoiseFit> fit_depth_noise(const std::vector<DepthPair>& pairs
   std::vector<double> spread_fit = least_squares(u, r, std::max<std::size_t>(nb, 1));
   double ss = 0.0;
   for (std::size_t k = 0; k < u.size(); ++k) {
-    const double z = r[k] - ScaledProblem::poly(spread_fit.data(), spread_fit.size(), u[k]);
+    const double z = r[k] - poly(spread_fit.data(), spread_fit.size(), u[k]);
     ss += z * z;
   }
   const double scale_r = std::sqrt(ss / static_cast<double>(u.size()));
@@ -260,8 +251,8 @@ std::optional<DepthNoiseFit> fit_depth_noise(const std::vector<DepthPair>& pairs
   start.insert(start.end(), bias_start.begin(), bias_start.end());
   std::vector<double> absolute(e.size());
   for (std::size_t k = 0; k < e.size(); ++k)
-    absolute[k] = std::fabs(e[k] - ScaledProblem::poly(bias_start.data(), nb, u[k])) *
-                  std::sqrt(std::numbers::pi / 2.0);
+    absolute[k] =
+        std::fabs(e[k] - poly(bias_start.data(), nb, u[k])) * std::sqrt(std::numbers::pi / 2.0);
   std::vector<double> sigma_start = least_squares(u, absolute, ns);
   const double u_low = *distinct.begin() / scale_d;
   const double u_high = *distinct.rbegin() / scale_d;
@@ -273,7 +264,7 @@ std::optional<DepthNoiseFit> fit_depth_noise(const std::vector<DepthPair>& pairs
       grid.push_back(d / scale_d);
   double lowest = std::numeric_limits<double>::infinity();
   for (double g : grid)
-    lowest = std::min(lowest, ScaledProblem::poly(sigma_start.data(), ns, g));
+    lowest = std::min(lowest, poly(sigma_start.data(), ns, g));
   if (!(lowest > 0.05)) {
     sigma_start.assign(ns, 0.0);
     sigma_start[0] = 1.0;
@@ -315,8 +306,7 @@ std::optional<DepthNoiseFit> fit_depth_noise(const std::vector<DepthPair>& pairs
   fit.range_low = *distinct.begin();
   fit.range_high = *distinct.rbegin();
   for (double g : grid)
-    if (ScaledProblem::poly(best.x.data() + nb, ns, g) < 10.0 * kSigmaFloor)
-      fit.floor_active = true;
+    if (poly(best.x.data() + nb, ns, g) < 10.0 * kSigmaFloor) fit.floor_active = true;
 
   const auto gradient = [&](const std::vector<double>& x, std::vector<double>& g) {
     g.assign(p, 0.0);

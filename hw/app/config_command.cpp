@@ -5,6 +5,7 @@
 #include <string>
 
 #include "app/commands.hpp"
+#include "app/session.hpp"
 #include "settings/settings.hpp"
 
 namespace oasis::hw::app {
@@ -19,15 +20,8 @@ CommandRunner add_config_command(CLI::App& app) {
       "A file may hold only the keys that differ from the defaults; unknown keys are errors. "
       "The output is a complete settings file: 'oasis-go1 config > my.yaml' starts one.");
   return [file] {
-    try {
-      const settings::Go1Settings settings =
-          file->empty() ? settings::default_settings() : settings::load_settings(*file);
-      std::cout << settings::settings_to_yaml(settings);
-      return 0;
-    } catch (const settings::SettingsError& e) {
-      std::cerr << e.what() << '\n';
-      return 1;
-    }
+    std::cout << settings::settings_to_yaml(settings_or_defaults(*file));
+    return 0;
   };
 }
 

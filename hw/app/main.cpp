@@ -7,6 +7,7 @@
 #include <CLI/CLI.hpp>
 
 #include "app/commands.hpp"
+#include "settings/settings_error.hpp"
 
 int main(int argc, char** argv) {
   CLI::App app{

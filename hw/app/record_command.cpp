@@ -9,7 +9,6 @@
 #include "app/commands.hpp"
 #include "app/robot_link.hpp"
 #include "app/session.hpp"
-#include "camera/camera_error.hpp"
 #include "camera/recording_writer.hpp"
 #include "settings/settings.hpp"
 
@@ -25,8 +24,7 @@ struct RecordRequest {
 };
 
 int record(const RecordRequest& request) {
-  settings::Go1Settings settings = request.config.empty() ? settings::default_settings()
-                                                          : settings::load_settings(request.config);
+  settings::Go1Settings settings = settings_or_defaults(request.config);
   settings.source = source_option(request.source);
   const SessionCatalog catalog(settings.loop.catalog);
   DryRunLink standing;
@@ -61,18 +59,7 @@ CommandRunner add_record_command(CLI::App& app) {
   command->add_option("--config", request->config, "YAML settings (camera, perception)")
       ->check(CLI::ExistingFile);
   command->add_flag("--replace", request->replace, "replace an earlier recording in the folder");
-  return [request] {
-    try {
-      return record(*request);
-    } catch (const settings::SettingsError& e) {
-      std::cerr << e.what() << '\n';
-    } catch (const SetupError& e) {
-      std::cerr << "oasis-go1: error: " << e.what() << '\n';
-    } catch (const camera::CameraError& e) {
-      std::cerr << "oasis-go1: error: " << e.what() << '\n';
-    }
-    return 1;
-  };
+  return [request] { return record(*request); };
 }
 
 }  // namespace oasis::hw::app

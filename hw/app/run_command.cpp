@@ -36,8 +36,7 @@ struct RunRequest {
 };
 
 settings::Go1Settings effective_settings(const RunRequest& request) {
-  settings::Go1Settings result = request.config.empty() ? settings::default_settings()
-                                                        : settings::load_settings(request.config);
+  settings::Go1Settings result = settings_or_defaults(request.config);
   if (!request.source.empty()) result.source = source_option(request.source);
   if (!request.catalog.empty()) result.loop.catalog = request.catalog;
   if (!request.robot.empty()) {
@@ -147,17 +146,6 @@ int run_session(const RunRequest& request) {
   return result.end == LoopEnd::kSourceFailed ? 1 : 0;
 }
 
-int run_reporting_errors(const RunRequest& request) {
-  try {
-    return run_session(request);
-  } catch (const settings::SettingsError& e) {
-    std::cerr << e.what() << '\n';
-  } catch (const SetupError& e) {
-    std::cerr << "oasis-go1: error: " << e.what() << '\n';
-  }
-  return 1;
-}
-
 void add_common_options(CLI::App& command, RunRequest& request) {
   command
       .add_option("--config", request.config,
@@ -202,7 +190,7 @@ CommandRunner add_run_command(CLI::App& app) {
   return [request] {
     if (request->fast && !request->dry_run)
       throw std::invalid_argument("--fast needs --dry-run: a robot moves in real time");
-    return run_reporting_errors(*request);
+    return run_session(*request);
   };
 }
 
@@ -218,7 +206,7 @@ CommandRunner add_replay_command(CLI::App& app) {
   add_common_options(*command, *request);
   return [request, recording] {
     request->source = "recorded:" + *recording;
-    return run_reporting_errors(*request);
+    return run_session(*request);
   };
 }
 

@@ -54,6 +54,10 @@ SessionSource synthetic_source(const settings::Go1Settings& settings,
 
 }  // namespace
 
+settings::Go1Settings settings_or_defaults(const std::string& file) {
+  return file.empty() ? settings::default_settings() : settings::load_settings(file);
+}
+
 settings::FrameSourceSetting source_option(const std::string& text) {
   const std::optional<settings::FrameSourceSetting> source = settings::parse_frame_source(text);
   if (!source)

@@ -25,6 +25,10 @@ class SetupError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+// The settings in `file`, or the built-in defaults (equal to hw/config/go1.yaml) when it is
+// empty. Throws settings::SettingsError.
+settings::Go1Settings settings_or_defaults(const std::string& file);
+
 // The value of a --source option: synthetic, camera or recorded:DIR. Throws SetupError.
 settings::FrameSourceSetting source_option(const std::string& text);
 

@@ -789,7 +789,8 @@ TEST(HedgedFilter, FollowsTheModelThatExplainsTheRewards) {
   HedgedFilter f(ex.view, options, ws.data(), ws.size());
   ASSERT_TRUE(f.ok());
   f.start(kS3);
-  for (int k = 0; k < 5; ++k) f.step(kS3, 1.0, kR);
+  for (int k = 0; k < 5; ++k)
+    f.step(kS3, 1.0, kR);
   EXPECT_EQ(f.ml_abstraction(), kAtS3);
   const double before = f.robust_weight();
   EXPECT_EQ(f.step(kS1, 1.0, kR), StepStatus::kOk);
@@ -799,7 +800,8 @@ TEST(HedgedFilter, FollowsTheModelThatExplainsTheRewards) {
   EXPECT_EQ(f.ml_abstraction(), kAtS3);
   EXPECT_EQ(f.action(), kR);
   double sum = 0.0;
-  for (std::uint32_t i = 0; i < 2; ++i) sum += f.belief(i);
+  for (std::uint32_t i = 0; i < 2; ++i)
+    sum += f.belief(i);
   EXPECT_NEAR(sum, 1.0, 1e-12);
 }
 
