@@ -95,6 +95,35 @@ void read_blocks(const json& blocks, const pipeline::CatalogData& catalog,
   }
 }
 
+// The "observation" object (absent or null: none), as continuous_json.cpp writes it.
+void read_observation(const json& document, pipeline::CatalogData& catalog) {
+  if (!document.contains("observation") || document.at("observation").is_null()) return;
+  const json& observation = document.at("observation");
+  if (observation.at("reward_follows").get<std::string>() == "observed")
+    catalog.reward_source = rt::RewardSource::kObservedState;
+  pipeline::PositionNoiseData& noise = catalog.position;
+  const auto& objects = observation.at("objects");
+  if (objects.empty()) return;
+  noise.object_of.assign(catalog.variable_names.size(), rt::kExactVariable);
+  for (const json& object : objects) {
+    const auto k = static_cast<std::uint32_t>(noise.detection.size());
+    noise.object_names.push_back(object.at("name").get<std::string>());
+    for (const json& name : object.at("variables")) {
+      const auto at = std::find(catalog.variable_names.begin(), catalog.variable_names.end(),
+                                name.get<std::string>());
+      if (at == catalog.variable_names.end())
+        throw std::out_of_range("object '" + noise.object_names.back() +
+                                "' measures an unknown variable " + name.dump());
+      noise.object_of[static_cast<std::size_t>(at - catalog.variable_names.begin())] = k;
+    }
+    const auto sigma = object.at("sigma").get<std::vector<double>>();
+    if (sigma.size() != 3)
+      throw std::out_of_range("object '" + noise.object_names.back() + "': sigma needs 3 numbers");
+    noise.sigma.insert(noise.sigma.end(), sigma.begin(), sigma.end());
+    noise.detection.push_back(object.at("detection").get<double>());
+  }
+}
+
 pipeline::CatalogData catalog_of(const json& document) {
   pipeline::CatalogData catalog;
   if (document.at("format").get<std::uint32_t>() != rt::kCatalogFormat)
@@ -110,6 +139,7 @@ pipeline::CatalogData catalog_of(const json& document) {
     for (const json& p : row)
       catalog.switching.push_back(p.get<double>());
   catalog.prior = document.at("prior").get<std::vector<double>>();
+  read_observation(document, catalog);
   for (const json& abstraction : document.at("abstractions")) {
     pipeline::AbstractionData data;
     data.context = abstraction.at("context").get<std::string>();

@@ -64,10 +64,32 @@ void add_relevance(const model::ModelIR& ir, std::size_t context, nlohmann::json
   out["failed_conditions"] = relevance.failed_conditions;
 }
 
+// A continuous model's measured objects: name, variables, sigma(d) = a + b d + c d^2 as exact
+// numbers [a, b, c], detection probability.
+nlohmann::json objects_json(const model::ModelIR& ir) {
+  nlohmann::json objects = nlohmann::json::array();
+  for (const model::MeasuredObject& object : ir.observation.objects) {
+    nlohmann::json variables = nlohmann::json::array();
+    for (const std::uint32_t v : object.variables)
+      variables.push_back(ir.continuous[v].name);
+    objects.push_back(
+        {{"name", object.name},
+         {"variables", variables},
+         {"sigma",
+          {to_string(object.sigma[0]), to_string(object.sigma[1]), to_string(object.sigma[2])}},
+         {"detection", to_string(object.detection)}});
+  }
+  return objects;
+}
+
 // The spec's observation model: null when it declares none.
 nlohmann::json observation_json(const model::ObservationSpec& observation,
-                                const model::StateSpace* states) {
+                                const model::StateSpace* states, const model::ModelIR* ir) {
   using Kind = model::ObservationSpec::Kind;
+  if (!observation.objects.empty() && ir != nullptr)
+    return {{"kind", "objects"},
+            {"objects", objects_json(*ir)},
+            {"reward_follows", observation.reward_follows_observed ? "observed" : "true"}};
   if (observation.kind == Kind::kNone) return nlohmann::json();
   nlohmann::json out;
   if (observation.kind == Kind::kSymmetric) {
@@ -132,9 +154,9 @@ nlohmann::json to_json(const LoadedModel& loaded,
     contexts.push_back(context);
   }
   out["contexts"] = contexts;
-  out["observation"] =
-      observation_json(loaded.model ? loaded.model->observation : loaded.ir->observation,
-                       loaded.model ? &loaded.model->states : nullptr);
+  out["observation"] = observation_json(
+      loaded.model ? loaded.model->observation : loaded.ir->observation,
+      loaded.model ? &loaded.model->states : nullptr, loaded.ir ? &*loaded.ir : nullptr);
   const model::SwitchingModel& switching =
       loaded.model ? loaded.model->switching : loaded.ir->switching;
   if (!switching.matrix.empty()) {
@@ -194,7 +216,17 @@ void print_text(const LoadedModel& loaded, const std::vector<model::ContextStati
               << ", regions: " << summary["regions"] << '\n';
   }
   const nlohmann::json& observation = summary["observation"];
-  if (!observation.is_null()) {
+  if (!observation.is_null() && observation["kind"] == "objects") {
+    std::cout << "  observation: reward follows "
+              << observation["reward_follows"].get<std::string>() << '\n';
+    for (const auto& object : observation["objects"]) {
+      const auto& sigma = object["sigma"];
+      std::cout << "    object " << object["name"].get<std::string>() << " ("
+                << joined(object["variables"]) << "): sigma(d) = " << sigma[0].get<std::string>()
+                << " + " << sigma[1].get<std::string>() << " d + " << sigma[2].get<std::string>()
+                << " d^2, detection " << object["detection"].get<std::string>() << '\n';
+    }
+  } else if (!observation.is_null()) {
     std::cout << "  observation: "
               << (observation["kind"] == "symmetric"
                       ? "state noise " + observation["noise"].get<std::string>()

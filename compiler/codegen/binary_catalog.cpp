@@ -145,6 +145,11 @@ std::string binary_catalog(const pipeline::CatalogData& catalog) {
     const auto source = static_cast<std::uint32_t>(catalog.reward_source);
     out.section(rt::Section::kRewardSource, rt::kCatalogWide, &source, 1);
   }
+  if (!catalog.position.empty()) {
+    out.section(rt::Section::kObjectOf, rt::kCatalogWide, catalog.position.object_of);
+    out.section(rt::Section::kObjectSigma, rt::kCatalogWide, catalog.position.sigma);
+    out.section(rt::Section::kObjectDetection, rt::kCatalogWide, catalog.position.detection);
+  }
   out.section(rt::Section::kSwitching, rt::kCatalogWide, catalog.switching);
   out.section(rt::Section::kPrior, rt::kCatalogWide, catalog.prior);
   std::vector<std::uint32_t> blocks;

@@ -180,6 +180,27 @@ void write_abstraction(JsonWriter& out, const pipeline::ContinuousCatalog& catal
   out.end_object();
 }
 
+// null without an observation block; else what the reward follows and the objects the
+// sensor measures: their variables, sigma(d) coefficients [a, b, c] and detection probability.
+nlohmann::json observation_json(const pipeline::ContinuousCatalog& catalog) {
+  const pipeline::PositionNoiseData& noise = catalog.position;
+  if (noise.empty() && catalog.reward_source == rt::RewardSource::kTrueState) return nullptr;
+  nlohmann::json objects = nlohmann::json::array();
+  for (std::size_t k = 0; k < noise.detection.size(); ++k) {
+    std::vector<std::string> variables;
+    for (std::size_t v = 0; v < noise.object_of.size(); ++v)
+      if (noise.object_of[v] == k) variables.push_back(catalog.variable_names[v]);
+    objects.push_back(
+        {{"name", noise.object_names[k]},
+         {"variables", variables},
+         {"sigma", {noise.sigma[3 * k], noise.sigma[3 * k + 1], noise.sigma[3 * k + 2]}},
+         {"detection", noise.detection[k]}});
+  }
+  return {{"reward_follows",
+           catalog.reward_source == rt::RewardSource::kObservedState ? "observed" : "true"},
+          {"objects", std::move(objects)}};
+}
+
 }  // namespace
 
 void write_continuous_catalog_json(JsonWriter& out, const pipeline::ContinuousCatalog& catalog,
@@ -201,6 +222,8 @@ void write_continuous_catalog_json(JsonWriter& out, const pipeline::ContinuousCa
   out.embed(matrix_rows_json(catalog.switching, catalog.abstractions.size()));
   out.key("prior");
   out.embed(nlohmann::json(catalog.prior));
+  out.key("observation");
+  out.embed(observation_json(catalog));
   out.key("abstractions");
   out.begin_array();
   for (const pipeline::ContinuousAbstraction& abstraction : catalog.abstractions)

@@ -152,6 +152,10 @@ CppSources cpp_catalog(const pipeline::CatalogData& catalog, std::string_view ba
   const std::string switching = array(out, "double", "kSwitching", catalog.switching);
   const std::string prior = array(out, "double", "kPrior", catalog.prior);
   const std::string confusion = array(out, "double", "kConfusion", catalog.confusion);
+  const pipeline::PositionNoiseData& noise = catalog.position;
+  const std::string object_of = array(out, "std::uint32_t", "kObjectOf", noise.object_of);
+  const std::string object_sigma = array(out, "double", "kObjectSigma", noise.sigma);
+  const std::string object_detection = array(out, "double", "kObjectDetection", noise.detection);
   std::string abstractions;
   for (std::size_t i = 0; i < catalog.abstractions.size(); ++i)
     abstractions += abstraction(out, i, catalog.abstractions[i]);
@@ -169,7 +173,9 @@ CppSources cpp_catalog(const pipeline::CatalogData& catalog, std::string_view ba
   out += "    {static_cast<oasis::rt::ObservationKind>(" +
          std::to_string(static_cast<std::uint32_t>(catalog.observation)) + "u), " +
          number(catalog.p_correct) + ", " + confusion + ", static_cast<oasis::rt::RewardSource>(" +
-         std::to_string(static_cast<std::uint32_t>(catalog.reward_source)) + "u)},\n";
+         std::to_string(static_cast<std::uint32_t>(catalog.reward_source)) + "u), {" +
+         std::to_string(noise.detection.size()) + "u, " + object_of + ", " + object_sigma + ", " +
+         object_detection + "}},\n";
   out +=
       "    " + std::to_string(catalog.variable_names.size()) + "u, " + variable_names + ",\n};\n\n";
   out +=

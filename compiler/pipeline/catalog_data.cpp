@@ -85,6 +85,11 @@ rt::CatalogView CatalogData::view() {
   view.observation.p_correct = p_correct;
   view.observation.confusion = confusion.empty() ? nullptr : confusion.data();
   view.observation.reward_source = reward_source;
+  if (!position.empty()) {
+    view.observation.position = {static_cast<std::uint32_t>(position.detection.size()),
+                                 position.object_of.data(), position.sigma.data(),
+                                 position.detection.data()};
+  }
   variable_name_pointers_.clear();
   for (const std::string& variable : variable_names)
     variable_name_pointers_.push_back(variable.c_str());

@@ -50,6 +50,16 @@ struct AbstractionData {
   std::vector<std::uint32_t> bsp_cell;  // rt::kInternalNode for internal nodes
 };
 
+// Continuous catalogs: the position noise (rt::PositionNoise); all empty without one.
+struct PositionNoiseData {
+  std::vector<std::string> object_names;  // [objects], for the JSON and messages
+  std::vector<std::uint32_t> object_of;   // [state_dimension]: an object or rt::kExactVariable
+  std::vector<double> sigma;              // [objects * 3] a, b, c of sigma(d)
+  std::vector<double> detection;          // [objects]
+
+  [[nodiscard]] bool empty() const { return detection.empty(); }
+};
+
 struct CatalogData {
   std::string name;
   std::uint64_t spec_hash = 0;
@@ -68,6 +78,7 @@ struct CatalogData {
   // Continuous catalogs: the state vector's variables (empty for a discrete catalog, which
   // has num_states explicit states instead).
   std::vector<std::string> variable_names;
+  PositionNoiseData position;  // continuous catalogs
 
   // A view into this object: valid until it is changed, moved or destroyed. Not const: the
   // view's name tables are kept here.

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "model/model_ir.hpp"
+#include "pipeline/catalog_data.hpp"
 #include "pipeline/continuous_abstraction.hpp"
 
 namespace oasis::pipeline {
@@ -22,12 +23,18 @@ struct ContinuousCatalog {
   std::vector<double> switching;  // [N * N] row-major
   std::vector<double> prior;      // [N]
   std::vector<ContinuousAbstraction> abstractions;
+  // The spec's observation block: the position noise and what the reward follows.
+  PositionNoiseData position;
+  rt::RewardSource reward_source = rt::RewardSource::kTrueState;
 };
 
 struct ContinuousCatalogOptions {
   ContinuousOptions abstraction;
   unsigned jobs = 0;  // threads; 0: one per hardware thread, at most one per context
 };
+
+// The IR's position noise as the catalog carries it (empty without objects).
+PositionNoiseData position_noise(const model::ModelIR& ir);
 
 // nullopt with `error` naming the first context that failed.
 std::optional<ContinuousCatalog> build_continuous_catalog(const model::ModelIR& ir,

@@ -66,6 +66,8 @@ CatalogData continuous_catalog_data(const pipeline::ContinuousCatalog& catalog,
   data.switching = catalog.switching;
   data.prior = catalog.prior;
   data.variable_names = catalog.variable_names;
+  data.position = catalog.position;
+  data.reward_source = catalog.reward_source;
   for (const pipeline::ContinuousAbstraction& abstraction : catalog.abstractions)
     data.abstractions.push_back(abstraction_data(abstraction, data.num_actions, with_transitions));
   return data;

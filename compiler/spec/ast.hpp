@@ -175,14 +175,26 @@ struct PriorDecl {
   SourceRange range;
 };
 
+// `object NAME (x, y) { noise a + b * d + c * d * d; detection p; }` in a continuous
+// model's observation block.
+struct ObjectDecl {
+  Name name;
+  std::vector<Name> variables;
+  ExprPtr noise;      // sigma(d), an expression in the distance `d`
+  ExprPtr detection;  // the probability of a detection
+  SourceRange range;
+};
+
 // `observation { state noise p; reward follows true; }`, or with
-// `state confusion { s1 -> 0.8: s1 + 0.2: s2; ... }` for the state model.
+// `state confusion { s1 -> 0.8: s1 + 0.2: s2; ... }` for the state model; continuous models
+// list `object` items instead.
 struct ObservationDecl {
   SourceRange keyword;                   // the word `observation`
   ExprPtr noise;                         // `state noise p;`
   std::optional<SourceRange> confusion;  // `state confusion { ... }`: the whole item
   std::vector<std::pair<Name, Distribution>> rows;
   std::optional<Name> reward_follows;  // `true` or `observed`
+  std::vector<ObjectDecl> objects;
   SourceRange range;
 };
 

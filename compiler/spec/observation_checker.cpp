@@ -4,6 +4,7 @@
 #include <string>
 #include <vector>
 
+#include "spec/object_checker.hpp"
 #include "support/text.hpp"
 
 namespace oasis::spec {
@@ -122,14 +123,38 @@ bool matrix(const ast::ObservationDecl& decl, const Scope& scope, const model::M
   return true;
 }
 
+// A continuous model's sensor: objects only.
+void continuous_observation(const ast::ObservationDecl& decl, const Scope& scope,
+                            model::ModelIR& ir, DiagnosticEngine& diagnostics,
+                            ExpressionChecker& expressions) {
+  if (decl.noise || decl.confusion) {
+    diagnostics.error(decl.noise ? decl.noise->range : *decl.confusion,
+                      "a continuous model's sensor is described per object: 'object NAME (x, y) "
+                      "{ noise a + b * d + c * d * d; detection p; }'");
+  }
+  if (decl.objects.empty()) {
+    diagnostics.error(decl.keyword,
+                      "the observation model has no objects: add 'object NAME (x, y) { noise "
+                      "sigma; }' for the variables the sensor measures");
+    return;
+  }
+  check_objects(decl, scope, ir, diagnostics, expressions);
+}
+
 }  // namespace
 
 void check_observation(const ast::ObservationDecl& decl, const Scope& scope, model::ModelIR& ir,
                        DiagnosticEngine& diagnostics, ExpressionChecker& expressions) {
+  const bool follows_observed = decl.reward_follows && decl.reward_follows->text == "observed";
   if (ir.kind == model::ModelKind::Continuous) {
-    diagnostics.error(decl.keyword,
-                      "continuous observation models are not supported yet: this observation "
-                      "model describes the explicit states of a discrete model");
+    continuous_observation(decl, scope, ir, diagnostics, expressions);
+    ir.observation.reward_follows_observed = follows_observed;
+    return;
+  }
+  if (!decl.objects.empty()) {
+    diagnostics.error(decl.objects.front().range,
+                      "objects measure continuous variables; a discrete model's sensor is "
+                      "'state noise p;' or 'state confusion { ... }'");
     return;
   }
   if (!decl.noise && !decl.confusion) {
@@ -142,8 +167,7 @@ void check_observation(const ast::ObservationDecl& decl, const Scope& scope, mod
   const bool ok = decl.noise ? symmetric(decl, ir, observation, diagnostics, expressions)
                              : matrix(decl, scope, ir, observation, diagnostics, expressions);
   if (!ok) return;
-  observation.reward_follows_observed =
-      decl.reward_follows && decl.reward_follows->text == "observed";
+  observation.reward_follows_observed = follows_observed;
   ir.observation = std::move(observation);
 }
 

@@ -523,10 +523,14 @@ class Parser {
     return decl;
   }
 
-  // `state noise p;`, `state confusion { s -> distribution; ... }`, `reward follows true;`
-  // or `reward follows observed;`.
+  // `state noise p;`, `state confusion { s -> distribution; ... }`, `reward follows true;`,
+  // `reward follows observed;` or `object NAME (x, y) { ... }`.
   void observation_item(ObservationDecl& decl) {
     const SourceRange start = range_of(peek());
+    if (accept_word("object")) {
+      decl.objects.push_back(measured_object(start));
+      return;
+    }
     if (accept_word("state")) {
       if (decl.noise || decl.confusion)
         fail(*previous_, "the observation model already has a state model");
@@ -561,9 +565,33 @@ class Parser {
       return;
     }
     fail(peek(),
-         "expected 'state noise', 'state confusion' or 'reward follows' in an observation "
-         "model, found " +
+         "expected 'state noise', 'state confusion', 'object' or 'reward follows' in an "
+         "observation model, found " +
              found(peek()));
+  }
+
+  // After `object`: `NAME (x, y) { noise EXPR; detection EXPR; }`.
+  ObjectDecl measured_object(SourceRange start) {
+    ObjectDecl object;
+    object.name = expect_name("an object name after 'object'");
+    expect(TokenKind::LeftParen, "before the object's variables");
+    do {
+      object.variables.push_back(expect_name("a continuous variable"));
+    } while (accept(TokenKind::Comma));
+    expect(TokenKind::RightParen, "after the object's variables");
+    block([&] {
+      const Token& item = peek();
+      ExprPtr* target = accept_word("noise")       ? &object.noise
+                        : accept_word("detection") ? &object.detection
+                                                   : nullptr;
+      if (target == nullptr)
+        fail(peek(), "expected 'noise' or 'detection' in an object, found " + found(peek()));
+      if (*target) fail(item, "the object already has a " + std::string(item.text));
+      *target = expression();
+      expect(TokenKind::Semicolon);
+    });
+    object.range = span(start, previous_range());
+    return object;
   }
 
   ContextDecl context() {

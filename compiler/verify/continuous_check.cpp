@@ -338,6 +338,38 @@ CatalogCheck check_abstraction(const model::ModelIR& ir, std::size_t context,
   return check;
 }
 
+// The catalog's position noise and reward source against the spec's observation block: the
+// same objects, each over the same variables with sigma(d)'s coefficients and the detection
+// probability the nearest doubles to the spec's numbers.
+Problem check_position_noise(const model::ModelIR& ir, const rt::CatalogView& catalog) {
+  const model::ObservationSpec& spec = ir.observation;
+  const rt::ObservationModel& obs = catalog.observation;
+  const rt::RewardSource source = spec.reward_follows_observed ? rt::RewardSource::kObservedState
+                                                               : rt::RewardSource::kTrueState;
+  if (obs.reward_source != source) return "the reward follows another state than the spec says";
+  const rt::PositionNoise& noise = obs.position;
+  if (noise.num_objects != spec.objects.size())
+    return "the catalog has " + std::to_string(noise.num_objects) + " measured objects, the spec " +
+           std::to_string(spec.objects.size());
+  for (std::uint32_t k = 0; k < noise.num_objects; ++k) {
+    const model::MeasuredObject& object = spec.objects[k];
+    const std::string which = "object '" + object.name + "'";
+    for (std::uint32_t v = 0; v < catalog.state_dimension; ++v) {
+      const bool in_spec =
+          std::find(object.variables.begin(), object.variables.end(), v) != object.variables.end();
+      if (in_spec != (noise.object_of[v] == k))
+        return which + ": variable '" + ir.continuous[v].name + "' " +
+               (in_spec ? "is not measured by it in the catalog" : "is not in the spec's object");
+    }
+    for (std::size_t c = 0; c < 3; ++c)
+      if (noise.sigma[3 * k + c] != to_double(object.sigma[c]))
+        return which + ": sigma(d) coefficient " + std::to_string(c) + " differs";
+    if (noise.detection[k] != to_double(object.detection))
+      return which + ": the detection probability differs";
+  }
+  return std::nullopt;
+}
+
 }  // namespace
 
 std::vector<CatalogCheck> check_continuous_catalog(const model::ModelIR& ir,
@@ -369,6 +401,14 @@ std::vector<CatalogCheck> check_continuous_catalog(const model::ModelIR& ir,
     if (std::fabs(catalog.prior[i] - to_double(ir.switching.prior[i])) > 1e-15)
       switching = "prior[" + std::to_string(i) + "] differs";
   checks.push_back({"switching and prior", switching ? "FAILED: " + *switching : "ok", !switching});
+  const Problem observation = check_position_noise(ir, catalog);
+  checks.push_back({"observation model",
+                    observation ? "FAILED: " + *observation
+                    : ir.observation.objects.empty()
+                        ? std::string("none")
+                        : std::to_string(ir.observation.objects.size()) +
+                              " measured objects, sigma(d) and detection as the spec says",
+                    !observation});
   for (std::size_t c = 0; c < n; ++c)
     checks.push_back(check_abstraction(ir, c, catalog.abstractions[c], catalog.num_actions));
   return checks;

@@ -99,7 +99,7 @@ const oasis::rt::CatalogView kCatalog = {
     oasis::rt::kCatalogFormat, "discrete_tracking", 0xaea2d97af6d7b7d4ull, "0.1.0",
     3u, 2u, kActionNames, kStateNames,
     2u, kSwitching, kPrior, kAbstractions,
-    {static_cast<oasis::rt::ObservationKind>(1u), 0.3, nullptr, static_cast<oasis::rt::RewardSource>(0u)},
+    {static_cast<oasis::rt::ObservationKind>(1u), 0.3, nullptr, static_cast<oasis::rt::RewardSource>(0u), {0u, nullptr, nullptr, nullptr}},
     0u, nullptr,
 };
 

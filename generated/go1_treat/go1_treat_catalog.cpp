@@ -27,6 +27,15 @@ const double kSwitching[] = {
 const double kPrior[] = {
     0.5, 0.5,
 };
+const std::uint32_t kObjectOf[] = {
+    0u, 0u, 1u, 1u,
+};
+const double kObjectSigma[] = {
+    0.002, 0.002, 0.005, 0.002, 0.002, 0.005,
+};
+const double kObjectDetection[] = {
+    0.9, 0.9,
+};
 const double k0_block_reward[] = {
     0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0,
     0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0,
@@ -10707,10 +10716,10 @@ const oasis::rt::AbstractionView kAbstractions[] = {
 };
 
 const oasis::rt::CatalogView kCatalog = {
-    oasis::rt::kCatalogFormat, "go1_treat", 0xd70a80598d493891ull, "0.1.0",
+    oasis::rt::kCatalogFormat, "go1_treat", 0x8b73c5aabd717338ull, "0.1.0",
     0u, 6u, kActionNames, nullptr,
     2u, kSwitching, kPrior, kAbstractions,
-    {static_cast<oasis::rt::ObservationKind>(0u), 1.0, nullptr, static_cast<oasis::rt::RewardSource>(0u)},
+    {static_cast<oasis::rt::ObservationKind>(0u), 1.0, nullptr, static_cast<oasis::rt::RewardSource>(0u), {2u, kObjectOf, kObjectSigma, kObjectDetection}},
     4u, kVariableNames,
 };
 

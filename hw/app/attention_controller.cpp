@@ -69,6 +69,8 @@ std::string status_name(rt::StepStatus status) {
       return "bad_action";
     case rt::StepStatus::kNotReady:
       return "not_ready";
+    case rt::StepStatus::kMissingObservation:
+      return "missing_observation";
   }
   return "unknown";
 }

@@ -105,8 +105,9 @@ TEST(ObservationSyntax, ParserErrorsSayWhatWasExpected) {
             std::vector<std::string>{
                 "11:55: the observation model already says what the reward follows"});
   EXPECT_EQ(errors_of(explicit_spec("  observation { noise 0.1; }\n")),
-            std::vector<std::string>{"11:17: expected 'state noise', 'state confusion' or "
-                                     "'reward follows' in an observation model, found 'noise'"});
+            std::vector<std::string>{"11:17: expected 'state noise', 'state confusion', 'object' "
+                                     "or 'reward follows' in an observation model, found "
+                                     "'noise'"});
 }
 
 TEST(ObservationSyntax, CheckerErrorsAreExactAndPlaced) {
@@ -145,7 +146,7 @@ TEST(ObservationSyntax, CheckerErrorsAreExactAndPlaced) {
             std::vector<std::string>{"11:51: unknown state 'a'"});
 }
 
-TEST(ObservationSyntax, OnlyDiscreteModelsForNow) {
+TEST(ObservationSyntax, EachKindOfModelHasItsOwnSensor) {
   const std::string one_state =
       "mdp m { states s; actions a; s, a -> s; }\n"
       "catalog { context c = base; observation { state noise 0.1; } }\n";
@@ -171,9 +172,15 @@ TEST(ObservationSyntax, OnlyDiscreteModelsForNow) {
       "}\n"
       "catalog { context c { reward r : 1; } observation { state noise 0.1; } }\n";
   EXPECT_EQ(errors_of(continuous),
-            std::vector<std::string>{"7:39: continuous observation models are not supported yet: "
-                                     "this observation model describes the explicit states of a "
-                                     "discrete model"});
+            (std::vector<std::string>{
+                "7:65: a continuous model's sensor is described per object: 'object NAME (x, y) "
+                "{ noise a + b * d + c * d * d; detection p; }'",
+                "7:39: the observation model has no objects: add 'object NAME (x, y) { noise "
+                "sigma; }' for the variables the sensor measures"}));
+  EXPECT_EQ(errors_of(explicit_spec("  observation { object o (s1) { detection 0.5; } }\n")),
+            std::vector<std::string>{"11:17: objects measure continuous variables; a discrete "
+                                     "model's sensor is 'state noise p;' or 'state confusion { "
+                                     "... }'"});
 }
 
 TEST(ObservationSyntax, TheWordsAreContextual) {

@@ -107,11 +107,18 @@ TEST(AttentionController, RefusesVelocitiesThatDoNotCoverTheActions) {
   EXPECT_THROW(AttentionController(catalog, settings), std::invalid_argument);
 }
 
-TEST(AttentionController, RefusesRobustModeOnACatalogWithoutObservationModel) {
+TEST(AttentionController, RobustModeNeedsTheCatalogsObservationModel) {
   const rt::CatalogView& catalog = go1_treat::catalog();
   ControllerSettings settings = spec_settings(catalog);
   settings.filter.mode = rt::FilterMode::kRobust;
-  EXPECT_THROW(AttentionController(catalog, settings), std::invalid_argument);
+  AttentionController noise_aware(catalog, settings);  // the spec declares its camera
+  noise_aware.decide(seen_at(0.6, 0.0, 2.0, -0.5, 1.0), 0.0, {});
+  const log::StepRecord second = noise_aware.decide(seen_at(0.6, 0.0, 2.0, -0.5, 1.0), 0.2, {});
+  EXPECT_EQ(second.filter_status, "ok");
+  EXPECT_EQ(second.abstraction, abstraction_named(catalog, "human1_holds_treat"));
+  rt::CatalogView without = catalog;
+  without.observation.position = {};
+  EXPECT_THROW(AttentionController(without, settings), std::invalid_argument);
 }
 
 }  // namespace

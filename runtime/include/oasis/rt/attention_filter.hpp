@@ -34,6 +34,7 @@
 #include "oasis/rt/bsp_locator.hpp"
 #include "oasis/rt/catalog_view.hpp"
 #include "oasis/rt/grid_locator.hpp"
+#include "oasis/rt/reward_mass.hpp"
 
 namespace oasis::rt {
 
@@ -66,6 +67,15 @@ enum class FilterMode : std::uint32_t {
   ///  abstract state for the policy: z = block_of^i(s*) with s* = argmax_s b(i, s) for the ML
   ///  abstraction i (ties: lowest state index).
   /// The first observation (start()) sets b(i, s) ~ prior(i) * p(o_0 | s).
+  ///
+  /// On a continuous catalog it needs the catalog's position noise (PositionNoise) and runs
+  /// Algorithm 1 with the noise-aware likelihood
+  ///   p(r_t | phi^i, s_obs) = P(true state in a cell of phi^i whose reward matches r_t | s_obs)
+  /// under the Gaussian sigma(d) of each variable (reward_mass.hpp: exact on grids, within a
+  /// reported error on polytope cells), softened by detection_epsilon like the paper's model.
+  /// A reading with a missed object (a non-finite relevant coordinate) skips the measurement
+  /// update: the belief is the prediction alone (StepStatus::kMissingObservation). The policy
+  /// is evaluated at the reading's block, as in Algorithm 1.
   kRobust = 1,
 };
 
@@ -102,6 +112,10 @@ struct FilterOptions {
   /// Either way step() reports StepStatus::kZeroLikelihood and the belief stays a
   /// distribution: the filter never produces a NaN.
   bool zero_likelihood_guard = false;
+
+  /// Robust mode on a continuous catalog: when the reward-region integration stops refining
+  /// (reward_mass.hpp).
+  MassLimits mass_limits;
 };
 
 /// What step() did.
@@ -111,13 +125,16 @@ enum class StepStatus : std::uint32_t {
   kBadState = 2,        ///< observed_state >= num_states: input rejected, filter unchanged
   kBadAction = 3,       ///< action_taken >= num_actions: input rejected, filter unchanged
   kNotReady = 4,        ///< the filter could not be constructed (see error()); nothing done
+  /// Continuous robust mode: the reading missed an object the abstractions attend to, so only
+  /// the dynamics update ran (the belief is the prediction).
+  kMissingObservation = 5,
 };
 
 /// Why construction failed.
 enum class FilterError : std::uint32_t {
   kNone = 0,
   kWorkspaceTooSmall = 1,  ///< fewer doubles than workspace_size() asks for
-  kNoRobustSection = 2,    ///< kRobust requested on a catalog without a robust section
+  kNoRobustSection = 2,    ///< kRobust requested on a catalog without an observation model
   kBadOptions = 3,         ///< an option out of range (epsilon, tolerances)
   kEmptyCatalog = 4,       ///< num_abstractions, num_states or num_actions is 0
 };
@@ -140,13 +157,14 @@ class AttentionFilter {
  public:
   /// Number of doubles the workspace must hold for `catalog` under `options`:
   /// 2N in paper mode (3N on a continuous catalog), 2N + 2NS in robust mode (N abstractions,
-  /// S states).
+  /// S states), 4N + RewardMass::workspace_size() in robust mode on a continuous catalog.
   static std::size_t workspace_size(const CatalogView& catalog,
                                     const FilterOptions& options) noexcept {
     const std::size_t n = catalog.num_abstractions;
-    if (options.mode == FilterMode::kRobust)
-      return 2 * n + 2 * n * static_cast<std::size_t>(catalog.num_states);
-    if (catalog.is_continuous()) return 3 * n;  // and the block of the state in each
+    const bool robust = options.mode == FilterMode::kRobust;
+    if (catalog.is_continuous())  // and the block of the state in each
+      return robust ? 4 * n + RewardMass::workspace_size(catalog) : 3 * n;
+    if (robust) return 2 * n + 2 * n * static_cast<std::size_t>(catalog.num_states);
     return 2 * n;
   }
 
@@ -163,9 +181,11 @@ class AttentionFilter {
         (catalog.num_states == 0 && !catalog.is_continuous())) {
       error_ = FilterError::kEmptyCatalog;
     } else if (!(options.detection_epsilon >= 0.0 && options.detection_epsilon < 1.0) ||
-               !(options.reward_tolerance >= 0.0) || !(options.tie_tolerance >= 0.0)) {
+               !(options.reward_tolerance >= 0.0) || !(options.tie_tolerance >= 0.0) ||
+               !(options.mass_limits.tolerance > 0.0 && options.mass_limits.tolerance < 1.0) ||
+               options.mass_limits.max_boxes == 0) {
       error_ = FilterError::kBadOptions;
-    } else if (options.mode == FilterMode::kRobust && !catalog.has_robust_section()) {
+    } else if (options.mode == FilterMode::kRobust && !catalog.has_noise_model()) {
       error_ = FilterError::kNoRobustSection;
     } else if (workspace == nullptr || workspace_doubles < workspace_size(catalog, options)) {
       error_ = FilterError::kWorkspaceTooSmall;
@@ -174,8 +194,13 @@ class AttentionFilter {
     const std::size_t n = catalog.num_abstractions;
     belief_ = workspace;
     scratch_ = workspace + n;
-    if (catalog.is_continuous()) located_ = workspace + 2 * n;
-    if (options.mode == FilterMode::kRobust) {
+    if (catalog.is_continuous()) {
+      located_ = workspace + 2 * n;
+      if (options.mode == FilterMode::kRobust) {
+        likelihood_ = workspace + 3 * n;
+        mass_ = RewardMass(catalog, options.mass_limits, workspace + 4 * n);
+      }
+    } else if (options.mode == FilterMode::kRobust) {
       joint_ = workspace + 2 * n;
       joint_scratch_ = joint_ + n * catalog.num_states;
     }
@@ -202,13 +227,14 @@ class AttentionFilter {
     if (!ok()) return;
     rng_state_ = options_.seed;
     reward_evidence_ = 1.0;
+    mass_error_ = 0.0;
     has_state_ = false;
     state_ = 0;
     ml_ = kNone_;
     const std::uint32_t n = catalog_->num_abstractions;
     for (std::uint32_t i = 0; i < n; ++i)
       belief_[i] = catalog_->prior[i];
-    if (robust()) {
+    if (joint_robust()) {
       const std::uint32_t states = catalog_->num_states;
       for (std::uint32_t i = 0; i < n; ++i)
         for (std::uint32_t s = 0; s < states; ++s)
@@ -272,8 +298,10 @@ class AttentionFilter {
 
   /// Continuous catalogs: one iteration of Algorithm 1 with the observed state vector. The
   /// detection model compares the reward with block_reward of the state's block in each
-  /// abstraction. Inputs are checked as by the discrete step(); a NaN coordinate puts the
-  /// state outside. Cost O(N^2 + N sum_i log cells_i). No allocation.
+  /// abstraction (robust mode: the noise-aware likelihood, see FilterMode::kRobust). Inputs
+  /// are checked as by the discrete step(); a NaN coordinate puts the state outside (robust
+  /// mode: a missed observation). Cost O(N^2 + N sum_i log cells_i), plus in robust mode one
+  /// RewardMass::match_mass() per abstraction. No allocation.
   StepStatus step(const double* state, std::size_t size, double observed_reward,
                   std::uint32_t action_taken) noexcept {
     if (!ok()) return StepStatus::kNotReady;
@@ -281,8 +309,10 @@ class AttentionFilter {
       return StepStatus::kBadState;
     if (action_taken >= catalog_->num_actions) return StepStatus::kBadAction;
     locate(state, size);
-    const StepStatus status = paper_update(
-        [&](std::uint32_t i) { return detection_at(i, located_block(i), observed_reward); });
+    const StepStatus status =
+        robust() ? noise_aware_update(state, observed_reward) : paper_update([&](std::uint32_t i) {
+          return detection_at(i, located_block(i), observed_reward);
+        });
     has_state_ = true;
     select_ml();
     return status;
@@ -315,7 +345,7 @@ class AttentionFilter {
   /// or argmax_s b(i, s) (robust mode; ties: lowest state). O(1) paper, O(S) robust.
   std::uint32_t policy_state_under(std::uint32_t i) const noexcept {
     if (!ok() || !has_state_) return 0;
-    if (!robust()) return state_;
+    if (!joint_robust()) return state_;
     const std::uint32_t states = catalog_->num_states;
     const double* row = joint_ + static_cast<std::size_t>(i) * states;
     std::uint32_t best = 0;
@@ -331,6 +361,10 @@ class AttentionFilter {
   /// over the same observations: the hedged filter (hedged_filter.hpp) weighs models by it.
   double reward_evidence() const noexcept { return ok() ? reward_evidence_ : 0.0; }
 
+  /// Continuous robust mode: the largest error bound of the last step's likelihoods
+  /// (MassResult::error); 0 otherwise.
+  double likelihood_error() const noexcept { return ok() ? mass_error_ : 0.0; }
+
   /// p(phi = i | history): the belief (the marginal in robust mode). i < num_abstractions.
   double belief(std::uint32_t i) const noexcept { return ok() ? belief_[i] : 0.0; }
 
@@ -339,7 +373,7 @@ class AttentionFilter {
 
   /// Robust mode only: b(i, s), the joint belief (0 in paper mode).
   double joint_belief(std::uint32_t i, std::uint32_t s) const noexcept {
-    if (!ok() || !robust()) return 0.0;
+    if (!ok() || !joint_robust()) return 0.0;
     return joint_[static_cast<std::size_t>(i) * catalog_->num_states + s];
   }
 
@@ -350,6 +384,8 @@ class AttentionFilter {
   static constexpr std::uint32_t kNone_ = std::numeric_limits<std::uint32_t>::max();
 
   bool robust() const noexcept { return options_.mode == FilterMode::kRobust; }
+  /// The joint filter over (abstraction, state): robust mode on a discrete catalog.
+  bool joint_robust() const noexcept { return robust() && !catalog_->is_continuous(); }
 
   /// p(r | phi^i, s) under the deterministic or soft detection model.
   double detection(std::uint32_t i, std::uint32_t s, double reward) const noexcept {
@@ -399,6 +435,36 @@ class AttentionFilter {
   }
   std::uint32_t located_block(std::uint32_t i) const noexcept {
     return static_cast<std::uint32_t>(located_[i]);
+  }
+
+  // Robust mode on a continuous catalog: Algorithm 1 with p(r | phi^i, s_obs) integrated
+  // over the reading's Gaussian noise; the prediction alone when an object was missed.
+  StepStatus noise_aware_update(const double* state, double reward) noexcept {
+    const std::uint32_t n = catalog_->num_abstractions;
+    if (catalog_->observation.reward_source == RewardSource::kObservedState)
+      return paper_update(
+          [&](std::uint32_t i) { return detection_at(i, located_block(i), reward); });
+    mass_.measure(state);
+    mass_error_ = 0.0;
+    for (std::uint32_t i = 0; i < n; ++i) {
+      const AbstractionView& abs = catalog_->abstractions[i];
+      const MassResult mass = mass_.match_mass(abs, state, [&](std::uint32_t block) {
+        return std::isfinite(reward) &&
+               std::fabs(reward - abs.block_reward[block]) <= options_.reward_tolerance;
+      });
+      if (mass.missing) {
+        switch_predict(belief_, scratch_, 1);
+        for (std::uint32_t k = 0; k < n; ++k)
+          belief_[k] = scratch_[k];
+        reward_evidence_ = 1.0;
+        mass_error_ = 0.0;
+        return StepStatus::kMissingObservation;
+      }
+      if (mass.error > mass_error_) mass_error_ = mass.error;
+      const double eps = options_.detection_epsilon;
+      likelihood_[i] = (1.0 - eps) * mass.probability + eps * (1.0 - mass.probability);
+    }
+    return paper_update([&](std::uint32_t i) { return likelihood_[i]; });
   }
 
   StepStatus paper_step(std::uint32_t state, double reward) noexcept {
@@ -581,8 +647,11 @@ class AttentionFilter {
   double* joint_ = nullptr;          // [N*S] robust joint belief, row i = abstraction
   double* joint_scratch_ = nullptr;  // [N*S] robust scratch
   double* located_ = nullptr;        // [N] continuous catalogs: the state's block per abstraction
+  double* likelihood_ = nullptr;     // [N] continuous robust mode: p(r_t | phi^i, s_obs)
+  RewardMass mass_;                  // continuous robust mode: the likelihoods' integrator
   std::uint64_t rng_state_ = 0;
   double reward_evidence_ = 1.0;
+  double mass_error_ = 0.0;
   std::uint32_t ml_ = kNone_;
   std::uint32_t state_ = 0;
   bool has_state_ = false;

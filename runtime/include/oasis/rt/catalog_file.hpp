@@ -250,7 +250,25 @@ class LoadedCatalog {
         return fail("unknown reward source " + std::to_string(*source));
       obs.reward_source = static_cast<RewardSource>(*source);
     }
-    return true;
+    return parse_position_noise();
+  }
+
+  // A continuous catalog's position noise: all three sections or none (validate() checks
+  // the numbers).
+  bool parse_position_noise() {
+    PositionNoise& noise = view_.observation.position;
+    const std::uint64_t sigmas = count_of(Section::kObjectSigma, kCatalogWide);
+    if (sigmas == 0) return true;
+    if (sigmas % 3 != 0 || sigmas / 3 >= kExactVariable)
+      return fail("position noise: " + std::to_string(sigmas) + " sigma coefficients");
+    const std::uint64_t objects = sigmas / 3;
+    noise.sigma = array<double>(Section::kObjectSigma, kCatalogWide, sigmas, "object sigma");
+    noise.detection =
+        array<double>(Section::kObjectDetection, kCatalogWide, objects, "object detection");
+    noise.object_of = array<std::uint32_t>(Section::kObjectOf, kCatalogWide, view_.state_dimension,
+                                           "object of each variable");
+    noise.num_objects = static_cast<std::uint32_t>(objects);
+    return ok_;
   }
 
   // Strings: offsets into the NUL-terminated text; each must start inside it and end at a

@@ -16,10 +16,11 @@
 //         56     8  p_correct (IEEE-754 double)
 //         64        section table
 //
-// The observation model (the robust section) is the header's kind and p_correct, plus two
+// The observation model (the robust section) is the header's kind and p_correct, plus
 // catalog-wide sections: the confusion matrix of a kMatrix model (required: a runtime that
-// cannot read it must refuse the file) and the reward source (optional: a file without it,
-// or a runtime that skips it, has the reward follow the true state, as it always did).
+// cannot read it must refuse the file), the reward source (optional: a file without it, or a
+// runtime that skips it, has the reward follow the true state, as it always did) and, in
+// continuous catalogs, the position noise (optional: without it the state reads as exact).
 //
 // Format 2 (today's): each table entry is 24 bytes, u32 tag, u32 abstraction (the index of
 // the abstraction the section belongs to, or kCatalogWide), u64 offset, u64 element count.
@@ -83,8 +84,13 @@ enum class Section : std::uint32_t {
   // string table.
   kStateDimension = kRequiredSection | 6,  ///< u32 [1]: the number of continuous variables
   // The observation model beyond the header's kind and p_correct (format 2 and later).
-  kConfusion = kRequiredSection | 7,        ///< f64 [num_states^2]; only with kind kMatrix
-  kRewardSource = 8,                        ///< u32 [1]: a RewardSource; optional (kTrueState)
+  kConfusion = kRequiredSection | 7,  ///< f64 [num_states^2]; only with kind kMatrix
+  kRewardSource = 8,                  ///< u32 [1]: a RewardSource; optional (kTrueState)
+  // Continuous catalogs' position noise (PositionNoise), optional as a whole: a runtime that
+  // skips it reads the state as exact, as Algorithm 1 does.
+  kObjectOf = 9,          ///< u32 [state_dimension]: each variable's object, or kExactVariable
+  kObjectSigma = 10,      ///< f64 [objects * 3]: a, b, c of sigma(d)
+  kObjectDetection = 11,  ///< f64 [objects]: detection probability
   kGridAxes = kRequiredSection | 32,        ///< u32 [d], per abstraction
   kGridBreakBegin = kRequiredSection | 33,  ///< u32 [d + 1]
   kGridBreaks = kRequiredSection | 34,      ///< f64 [break_begin[d]]
@@ -109,7 +115,9 @@ inline constexpr Section kContinuousSections[] = {
     Section::kBspCell};
 
 /// The observation model's sections (format 2 and later).
-inline constexpr Section kObservationSections[] = {Section::kConfusion, Section::kRewardSource};
+inline constexpr Section kObservationSections[] = {Section::kConfusion, Section::kRewardSource,
+                                                   Section::kObjectOf, Section::kObjectSigma,
+                                                   Section::kObjectDetection};
 
 /// The catalog-wide sections of a format-1 file, in table order.
 inline constexpr Section kFormat1CatalogOrder[] = {Section::kNameText, Section::kStringOffsets,

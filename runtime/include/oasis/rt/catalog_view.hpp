@@ -159,6 +159,35 @@ enum class RewardSource : std::uint32_t {
   kObservedState = 1,
 };
 
+/// Marks, in PositionNoise::object_of, a continuous variable that no object measures: it is
+/// observed exactly.
+inline constexpr std::uint32_t kExactVariable = 0xFFFFFFFFu;
+
+/// Continuous catalogs: how the sensor measures the state vector. The variables are grouped
+/// into objects (a person's x and y), each detected or missed as a whole. A detected object's
+/// variables are read with independent Gaussian errors of standard deviation
+/// sigma(d) = a + b d + c d^2 (negative values read as 0), where d is the object's distance:
+/// the Euclidean norm of its variables (the distance from the robot when, as in the Go1 spec,
+/// positions are relative to the robot). A missed object's variables are NaN.
+struct PositionNoise {
+  /// Number of objects; 0 means no model (every variable observed exactly, always).
+  std::uint32_t num_objects = 0;
+  /// [state_dimension] the object measuring each variable, or kExactVariable.
+  const std::uint32_t* object_of = nullptr;
+  /// [num_objects * 3] a, b, c of each object's sigma(d), metres (or the variables' unit).
+  /// Finite, a >= 0.
+  const double* sigma = nullptr;
+  /// [num_objects] the probability that the object is detected in a frame, in (0, 1].
+  const double* detection = nullptr;
+};
+
+/// sigma(d) of object k (k < noise.num_objects).
+inline double object_sigma(const PositionNoise& noise, std::uint32_t k, double distance) noexcept {
+  const double* c = noise.sigma + static_cast<std::size_t>(k) * 3;
+  const double sigma = c[0] + distance * (c[1] + distance * c[2]);
+  return sigma > 0.0 ? sigma : 0.0;
+}
+
 /// The state-observation model p(observed state | true state), catalog-wide (the sensor does
 /// not depend on the context).
 struct ObservationModel {
@@ -171,6 +200,9 @@ struct ObservationModel {
   /// Which state generates the reward (declared in the spec's `observation` block; catalogs
   /// that predate it load as kTrueState, what the robust filter has always assumed).
   RewardSource reward_source = RewardSource::kTrueState;
+  /// Continuous catalogs only: the Gaussian measurement model of the state vector (none when
+  /// num_objects is 0). Independent of `kind`, which describes discrete states.
+  PositionNoise position;
 };
 
 /// The whole catalog. A generated table or a loader fills one of these; nothing is owned.
@@ -234,6 +266,12 @@ struct CatalogView {
 
   /// True for a catalog over continuous states.
   bool is_continuous() const noexcept { return state_dimension > 0; }
+
+  /// True if the noise-aware filter (FilterMode::kRobust) can run on this catalog: a discrete
+  /// catalog with a robust section, or a continuous one with a position-noise model.
+  bool has_noise_model() const noexcept {
+    return is_continuous() ? observation.position.num_objects > 0 : has_robust_section();
+  }
 };
 
 namespace detail {
@@ -381,6 +419,30 @@ inline bool validate_observation(const CatalogView& catalog, std::string* why) {
   return fail(why, "unknown observation kind");
 }
 
+inline bool validate_position_noise(const CatalogView& catalog, std::string* why) {
+  const PositionNoise& noise = catalog.observation.position;
+  if (noise.num_objects == 0) {
+    if (noise.object_of != nullptr || noise.sigma != nullptr || noise.detection != nullptr)
+      return fail(why, "position noise arrays given without objects");
+    return true;
+  }
+  if (!catalog.is_continuous()) return fail(why, "position noise in a discrete catalog");
+  if (noise.object_of == nullptr || noise.sigma == nullptr || noise.detection == nullptr)
+    return fail(why, "position noise: a required array is null");
+  for (std::uint32_t v = 0; v < catalog.state_dimension; ++v)
+    if (noise.object_of[v] != kExactVariable && noise.object_of[v] >= noise.num_objects)
+      return fail(why, "position noise: object_of[" + std::to_string(v) + "] out of range");
+  for (std::uint32_t k = 0; k < noise.num_objects; ++k) {
+    const std::string where = "position noise: object " + std::to_string(k);
+    const double* c = noise.sigma + static_cast<std::size_t>(k) * 3;
+    if (!std::isfinite(c[0]) || !std::isfinite(c[1]) || !std::isfinite(c[2]) || c[0] < 0.0)
+      return fail(why, where + ": sigma(d) coefficients not finite with a >= 0");
+    if (!(noise.detection[k] > 0.0 && noise.detection[k] <= 1.0))
+      return fail(why, where + ": detection probability not in (0, 1]");
+  }
+  return true;
+}
+
 // block_of in range and every block holding a state, counted with a byte map (a std::string,
 // the only allocation validate() makes besides the message). O(num_states).
 inline bool validate_blocks(const AbstractionView& abs, std::uint32_t num_states,
@@ -524,7 +586,7 @@ inline bool validate_abstraction(const CatalogView& catalog, std::uint32_t i, st
 /// call it at load time, not in a control loop. O(size of the catalog).
 inline bool validate(const CatalogView& catalog, std::string* why = nullptr) {
   if (!detail::validate_names(catalog, why) || !detail::validate_switching(catalog, why) ||
-      !detail::validate_observation(catalog, why))
+      !detail::validate_observation(catalog, why) || !detail::validate_position_noise(catalog, why))
     return false;
   if (catalog.abstractions == nullptr) return detail::fail(why, "abstractions is null");
   for (std::uint32_t i = 0; i < catalog.num_abstractions; ++i)
