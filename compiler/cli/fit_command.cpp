@@ -53,7 +53,8 @@ struct DepthOptions {
   std::uint32_t degree = 2;
   std::string bias = "constant";
   std::vector<double> at;
-  std::string variable = "x1";
+  std::string object = "human1";
+  std::vector<std::string> variables{"x1", "y1"};
   std::string output;
   std::size_t max_errors = 20;
 };
@@ -72,10 +73,11 @@ std::string files_text(std::size_t count) {
   return std::to_string(count) + (count == 1 ? " file" : " files");
 }
 
-// Prints the fragment and writes it to `path` when one is given. false on a write error.
+// Prints the fragment and writes it to `path` when one is given ("-": standard output,
+// where it already is). false on a write error.
 bool deliver_fragment(const std::string& fragment, const std::string& path) {
   std::cout << '\n' << fragment;
-  if (path.empty()) return true;
+  if (path.empty() || path == "-") return true;
   AtomicFile file;
   std::string error;
   if (!file.open(path, error)) {
@@ -406,10 +408,9 @@ int run_depth(const DepthOptions& options) {
   std::string fragment =
       "// fitted by oasisc fit depth-noise from " + std::to_string(fitted->pairs) + " pairs, " +
       range.str() +
-      " (valid on that range).\n// The spec has no syntax for continuous "
-      "observation noise yet: keep these lines as a comment\n// until docs/spec-language.md "
-      "describes it.\n// observation noise " +
-      options.variable + ": sigma(d) = " + polynomial_text(fitted->sigma, "d") + "\n";
+      " (valid on that range);\n// paste into the catalog's observation block "
+      "(docs/spec-language.md):\n" +
+      fit::object_noise_fragment(options.object, options.variables, fitted->sigma);
   if (!fitted->bias.empty()) {
     fragment += "// bias: measured - true = " + polynomial_text(fitted->bias, "d") +
                 " m (subtract it in perception; the observation model has no bias)\n";
@@ -456,7 +457,9 @@ CommandRunner add_fit_command(CLI::App& app) {
       ->check(CLI::IsMember({"true", "observed"}));
   sw->add_flag("--paper", switching->paper,
                "Ignore the spec's observation model: Algorithm 1's likelihood");
-  sw->add_option("-o,--output", switching->output, "Also write the spec fragment to this file");
+  sw->add_option(
+      "-o,--output", switching->output,
+      "Also write the spec fragment to this file (-: only the standard output it is printed on)");
   add_common_options(*sw, switching->common);
   sw->footer(
       "Examples:\n"
@@ -481,7 +484,9 @@ CommandRunner add_fit_command(CLI::App& app) {
                  "What the fragment declares: the reward belongs to the true or observed state")
       ->capture_default_str()
       ->check(CLI::IsMember({"true", "observed"}));
-  ns->add_option("-o,--output", noise->output, "Also write the spec fragment to this file");
+  ns->add_option(
+      "-o,--output", noise->output,
+      "Also write the spec fragment to this file (-: only the standard output it is printed on)");
   add_common_options(*ns, noise->common);
 
   auto depth = std::make_shared<DepthOptions>();
@@ -498,9 +503,15 @@ CommandRunner add_fit_command(CLI::App& app) {
       ->check(CLI::IsMember({"none", "constant", "linear"}));
   dn->add_option("--at", depth->at, "Distances (m) at which to print sigma(d) with its interval")
       ->delimiter(',');
-  dn->add_option("--variable", depth->variable, "The state variable the fragment names")
+  dn->add_option("--object", depth->object, "The object the fragment declares")
       ->capture_default_str();
-  dn->add_option("-o,--output", depth->output, "Also write the spec fragment to this file");
+  dn->add_option("--variables", depth->variables,
+                 "The continuous variables the object's position is (comma-separated)")
+      ->delimiter(',')
+      ->capture_default_str();
+  dn->add_option(
+      "-o,--output", depth->output,
+      "Also write the spec fragment to this file (-: only the standard output it is printed on)");
   dn->add_option("--max-errors", depth->max_errors, "Stop after this many errors")
       ->capture_default_str()
       ->check(CLI::Range(std::size_t{1}, std::size_t{100000}));

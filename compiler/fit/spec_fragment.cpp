@@ -97,6 +97,21 @@ std::string confusion_fragment(const std::vector<double>& matrix,
   return out + "  }\n  reward follows " + reward_follows + ";\n}\n";
 }
 
+std::string object_noise_fragment(const std::string& name,
+                                  const std::vector<std::string>& variables,
+                                  const std::vector<double>& sigma, int digits) {
+  std::string out = "object " + name + " (";
+  for (std::size_t v = 0; v < variables.size(); ++v)
+    out += (v ? ", " : "") + variables[v];
+  out += ") { noise " + significant_text(sigma.empty() ? 0.0 : sigma[0], digits);
+  const char* powers[] = {"", " * d", " * d * d"};
+  for (std::size_t k = 1; k < sigma.size() && k < 3; ++k) {
+    out += sigma[k] < 0 ? " - " : " + ";
+    out += significant_text(std::fabs(sigma[k]), digits) + powers[k];
+  }
+  return out + "; }\n";
+}
+
 std::string significant_text(double value, int digits) {
   std::ostringstream out;
   out << std::setprecision(digits) << value;

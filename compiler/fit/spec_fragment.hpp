@@ -33,6 +33,12 @@ std::string confusion_fragment(const std::vector<double>& matrix,
                                const std::vector<std::string>& states,
                                const std::string& reward_follows, int decimals = 4);
 
+// A continuous observation model's object (docs/spec-language.md):
+// `object NAME (x, y) { noise a + b * d + c * d * d; }`, `sigma` being a, b, c (or fewer).
+std::string object_noise_fragment(const std::string& name,
+                                  const std::vector<std::string>& variables,
+                                  const std::vector<double>& sigma, int digits = 4);
+
 // A number with `digits` significant digits, for coefficients ("0.00254", "1.2e-06").
 std::string significant_text(double value, int digits = 4);
 

@@ -140,7 +140,19 @@ TEST(FitCli, NoisePrintsTheClosedFormAndAFragment) {
   expect_pastes("switching stay 0.8;\n" + confusion, "switching stay 0.8;\n");
 }
 
-TEST(FitCli, DepthNoisePrintsSigmaAndACommentedFragment) {
+// The Go1 spec with its first object replaced by `object` checks.
+void expect_object_pastes(const std::string& object) {
+  std::string spec = test::read_text_file(std::string(OASIS_SOURCE_DIR) + "/specs/go1_treat.oasis");
+  const std::string first =
+      "object human1 (x1, y1) { noise 0.002 + 0.002 * d + 0.005 * d * d; "
+      "detection 0.9; }\n";
+  const std::size_t at = spec.find(first);
+  ASSERT_NE(at, std::string::npos);
+  spec.replace(at, first.size(), object);
+  test::check_spec_text_ir(spec);
+}
+
+TEST(FitCli, DepthNoisePrintsSigmaAndAnObjectToPaste) {
   const auto result = test::run_oasisc("fit depth-noise " + data("calibration.csv") + " --at 1,3");
   ASSERT_EQ(result.status, 0) << result.output;
   EXPECT_NE(result.output.find("50 pairs (1 file), 5 distinct true distances in [1, 5] m"),
@@ -148,13 +160,13 @@ TEST(FitCli, DepthNoisePrintsSigmaAndACommentedFragment) {
       << result.output;
   EXPECT_NE(result.output.find("(Wald, observed information)"), std::string::npos) << result.output;
   // (Parsed by hand: std::regex trips a false -Wmaybe-uninitialized in the ASan build.)
-  const std::string fragment = "// observation noise x1: sigma(d) = ";
-  const std::size_t at = result.output.find(fragment);
+  const std::string start = "object human1 (x1, y1) { noise ";
+  const std::size_t at = result.output.find(start);
   ASSERT_NE(at, std::string::npos) << result.output;
-  const std::string formula = result.output.substr(
-      at + fragment.size(), result.output.find('\n', at) - at - fragment.size());
-  EXPECT_NE(formula.find("*d "), std::string::npos) << formula;
-  EXPECT_EQ(formula.substr(formula.size() - 4), "*d^2") << formula;
+  const std::string object = result.output.substr(at, result.output.find('\n', at) + 1 - at);
+  EXPECT_NE(object.find(" * d "), std::string::npos) << object;
+  EXPECT_NE(object.find(" * d * d; }"), std::string::npos) << object;
+  expect_object_pastes(object);
   const std::string sigma_at_3 = "  d = 3 m: ";
   const std::size_t at_3 = result.output.find(sigma_at_3);
   ASSERT_NE(at_3, std::string::npos) << result.output;
@@ -162,9 +174,10 @@ TEST(FitCli, DepthNoisePrintsSigmaAndACommentedFragment) {
   EXPECT_GE(sigma, 0.03) << result.output;
   EXPECT_LT(sigma, 0.08) << result.output;
   const auto named = test::run_oasisc("fit depth-noise " + data("calibration.csv") +
-                                      " --degree 1 --variable x2 -o /dev/null");
+                                      " --degree 1 --object person --variables x2,y2 -o /dev/null");
   ASSERT_EQ(named.status, 0) << named.output;
-  EXPECT_NE(named.output.find("// observation noise x2: sigma(d) = "), std::string::npos);
+  EXPECT_NE(named.output.find("object person (x2, y2) { noise "), std::string::npos)
+      << named.output;
 }
 
 struct BadInput {
