@@ -5,6 +5,8 @@
 //                      rewards chosen so that most observations keep several abstractions alive.
 //   BM_RobustDiscrete  robust joint filter on the paper's discrete example (3 states, 2
 //                      abstractions, p_correct 0.7).
+//   BM_HedgedDiscrete  HedgedFilter (Algorithm 1 + the robust filter, weighed by their reward
+//                      evidence) on the same example.
 //   BM_Go1Step/mode    the shipped Go1 catalog (generated/go1_treat/go1_treat.bin: 2
 //                      abstractions, 84 x 101 cells each) on a walk of readings, paper mode (0)
 //                      and the noise-aware robust mode (1) with the spec's sigma(d); the
@@ -22,6 +24,7 @@
 #include "oasis/rt/catalog_file.hpp"
 #include "oasis/rt/catalog_view.hpp"
 #include "oasis/rt/grid_locator.hpp"
+#include "oasis/rt/hedged_filter.hpp"
 #include "oasis/rt/reward_mass.hpp"
 
 namespace {
@@ -117,7 +120,32 @@ void BM_PaperStep(benchmark::State& state) {
 }
 BENCHMARK(BM_PaperStep)->Arg(2)->Arg(64);
 
-void BM_RobustDiscrete(benchmark::State& state) {
+// The filter a discrete benchmark runs: the robust joint filter, or the hedge of it with
+// Algorithm 1 (hedged_filter.hpp).
+template <bool Hedged>
+struct DiscreteFilter;
+template <>
+struct DiscreteFilter<false> {
+  FixedWorkspace<2, 3> workspace;
+  AttentionFilter filter;
+  explicit DiscreteFilter(const CatalogView& view) : filter(view, options(), workspace) {}
+  static FilterOptions options() {
+    FilterOptions robust;
+    robust.mode = FilterMode::kRobust;
+    return robust;
+  }
+};
+template <>
+struct DiscreteFilter<true> {
+  std::vector<double> workspace;
+  HedgedFilter filter;
+  explicit DiscreteFilter(const CatalogView& view)
+      : workspace(HedgedFilter::workspace_size(view, {})),
+        filter(view, {}, workspace.data(), workspace.size()) {}
+};
+
+template <bool Hedged>
+void BM_Discrete(benchmark::State& state) {
   static const char* action_names[2] = {"L", "R"};
   static const double switching[4] = {0.8, 0.2, 0.2, 0.8};
   static const double prior[2] = {0.5, 0.5};
@@ -185,10 +213,8 @@ void BM_RobustDiscrete(benchmark::State& state) {
     state.SkipWithError(why.c_str());
     return;
   }
-  FilterOptions options;
-  options.mode = FilterMode::kRobust;
-  FixedWorkspace<2, 3> workspace;
-  AttentionFilter filter(view, options, workspace);
+  DiscreteFilter<Hedged> discrete(view);
+  auto& filter = discrete.filter;
   filter.start(1);
   // A fixed cycle of plausible (action, observed state, reward) triples.
   static const std::uint32_t cycle_action[6] = {1, 1, 1, 0, 0, 0};
@@ -202,7 +228,14 @@ void BM_RobustDiscrete(benchmark::State& state) {
   }
   state.SetItemsProcessed(state.iterations());
 }
+void BM_RobustDiscrete(benchmark::State& state) {
+  BM_Discrete<false>(state);
+}
+void BM_HedgedDiscrete(benchmark::State& state) {
+  BM_Discrete<true>(state);
+}
 BENCHMARK(BM_RobustDiscrete);
+BENCHMARK(BM_HedgedDiscrete);
 
 // 4096 points of [0, 5]^dimension, one after the other (xorshift: no <random> needed in the
 // runtime's benchmark).
