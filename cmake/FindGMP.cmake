@@ -2,8 +2,9 @@
 # Debian ships pkg-config files (gmp.pc, gmpxx.pc) but no CMake package, so we wrap them.
 # Defines GMP::gmp and GMP::gmpxx.
 find_package(PkgConfig REQUIRED QUIET)
-pkg_check_modules(PC_GMP QUIET IMPORTED_TARGET gmp)
-pkg_check_modules(PC_GMPXX QUIET IMPORTED_TARGET gmpxx)
+# GLOBAL: the compiler finds GMP and the tests and tools link it too.
+pkg_check_modules(PC_GMP QUIET IMPORTED_TARGET GLOBAL gmp)
+pkg_check_modules(PC_GMPXX QUIET IMPORTED_TARGET GLOBAL gmpxx)
 
 include(FindPackageHandleStandardArgs)
 find_package_handle_standard_args(GMP
@@ -11,7 +12,8 @@ find_package_handle_standard_args(GMP
   VERSION_VAR PC_GMP_VERSION)
 
 if(GMP_FOUND AND NOT TARGET GMP::gmp)
-  add_library(GMP::gmp ALIAS PkgConfig::PC_GMP)
-  add_library(GMP::gmpxx INTERFACE IMPORTED)
+  add_library(GMP::gmp INTERFACE IMPORTED GLOBAL)
+  target_link_libraries(GMP::gmp INTERFACE PkgConfig::PC_GMP)
+  add_library(GMP::gmpxx INTERFACE IMPORTED GLOBAL)
   target_link_libraries(GMP::gmpxx INTERFACE PkgConfig::PC_GMPXX PkgConfig::PC_GMP)
 endif()

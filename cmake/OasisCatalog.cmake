@@ -11,8 +11,20 @@
 # and then `#include "go1_treat_catalog.hpp"` and `go1_treat::catalog()`. The files are
 # generated in the build tree (never the source tree) and regenerated when the spec or
 # oasisc changes. BASENAME names the files (default: the spec's file name + "_catalog").
+#
+# In this repository the compiler is the `oasisc` target; in an installed package (find_package
+# (oasis)) it is the imported oasis::oasisc.
 function(oasis_add_catalog target spec)
   cmake_parse_arguments(PARSE_ARGV 2 ARG "" "BASENAME" "")
+  if(TARGET oasisc)
+    set(compiler oasisc)
+  elseif(TARGET oasis::oasisc)
+    set(compiler oasis::oasisc)
+  else()
+    message(FATAL_ERROR "oasis_add_catalog(${target}) needs oasisc, the compiler: this oasis was "
+                        "built or installed without it (OASIS_BUILD_COMPILER=OFF). Compile the "
+                        "catalog elsewhere and load its .bin with rt::LoadedCatalog instead.")
+  endif()
   get_filename_component(spec_path "${spec}" ABSOLUTE)
   get_filename_component(stem "${spec}" NAME_WE)
   if(NOT ARG_BASENAME)
@@ -23,13 +35,13 @@ function(oasis_add_catalog target spec)
   set(outputs "${out_dir}/${ARG_BASENAME}.hpp" "${out_dir}/${ARG_BASENAME}.cpp")
   add_custom_command(
     OUTPUT ${outputs}
-    COMMAND oasisc compile "${spec_path}" -o "${out_dir}" --format cpp --basename "${ARG_BASENAME}"
-            --progress never
-    DEPENDS oasisc "${spec_path}"
+    COMMAND "$<TARGET_FILE:${compiler}>" compile "${spec_path}" -o "${out_dir}" --format cpp
+            --basename "${ARG_BASENAME}" --progress never
+    DEPENDS ${compiler} "${spec_path}"
     COMMENT "oasisc: compiling the catalog of ${spec}"
     VERBATIM)
   add_library(${target} STATIC ${outputs})
   target_include_directories(${target} PUBLIC "${out_dir}")
-  target_link_libraries(${target} PUBLIC oasis_runtime)
+  target_link_libraries(${target} PUBLIC oasis::runtime)
   target_compile_features(${target} PUBLIC cxx_std_17)
 endfunction()

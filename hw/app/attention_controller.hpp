@@ -19,6 +19,7 @@
 #include <string>
 #include <vector>
 
+#include "app/loop_controller.hpp"
 #include "go1/motion_limits.hpp"
 #include "go1/planar_pose.hpp"
 #include "log/step_record.hpp"
@@ -35,7 +36,7 @@ struct ControllerSettings {
   bool clamp_to_domain = true;
 };
 
-class AttentionController {
+class AttentionController final : public LoopController {
  public:
   // Throws std::invalid_argument when the catalog is not a 4-variable continuous one, the
   // velocities do not cover its actions, or the filter refuses the options.
@@ -46,7 +47,8 @@ class AttentionController {
   // The first call starts the filter (Algorithm 1's initialisation: the prior, the state
   // located); later calls run one filter step with the previous decision's action.
   // `robot` is the robot's odometry pose when the frame was taken.
-  log::StepRecord decide(const PerceptionResult& seen, double time_s, const go1::Pose& robot);
+  log::StepRecord decide(const PerceptionResult& seen, double time_s,
+                         const go1::Pose& robot) override;
 
   const rt::CatalogView& catalog() const { return catalog_; }
 

@@ -15,5 +15,6 @@ CommandRunner add_replay_command(CLI::App& app);
 CommandRunner add_record_command(CLI::App& app);
 CommandRunner add_score_command(CLI::App& app);
 CommandRunner add_config_command(CLI::App& app);
+CommandRunner add_sim_command(CLI::App& app);
 
 }  // namespace oasis::hw::app

@@ -18,11 +18,11 @@
 #include <optional>
 #include <string>
 
-#include "app/attention_controller.hpp"
+#include "app/loop_controller.hpp"
 #include "app/robot_link.hpp"
 #include "log/step_record.hpp"
 #include "perception/frame.hpp"
-#include "perception/perception.hpp"
+#include "perception/perception_stage.hpp"
 
 namespace oasis::hw::app {
 
@@ -35,8 +35,8 @@ struct LoopOptions {
 
 struct LoopParts {
   FrameSource& source;
-  Perception& perception;
-  AttentionController& controller;
+  PerceptionStage& perception;  // the real Perception, or a simulator's (hw/sim)
+  LoopController& controller;   // the AttentionController, or a baseline
   RobotLink& link;
   // The ground truth of the frame just taken, when the source knows it (a simulator).
   std::function<std::optional<log::GroundTruth>()> truth;

@@ -19,6 +19,7 @@ int main(int argc, char** argv) {
       "Start with a dry run on the synthetic world, which needs neither robot nor camera:\n"
       "  oasis-go1 run --dry-run --source synthetic --steps 150 --log run.jsonl\n"
       "  oasis-go1 score run.jsonl\n"
+      "Table II in the simulated hallway, per controller: oasis-go1 sim --trials 12\n"
       "Before the real robot, read hw/README.md (\"On the robot\"). Run 'oasis-go1 COMMAND "
       "--help' for a command's options.");
 
@@ -31,6 +32,7 @@ int main(int argc, char** argv) {
   add(oasis::hw::app::add_record_command(app));
   add(oasis::hw::app::add_score_command(app));
   add(oasis::hw::app::add_config_command(app));
+  add(oasis::hw::app::add_sim_command(app));
 
   try {
     app.parse(argc, argv);

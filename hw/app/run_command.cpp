@@ -51,18 +51,6 @@ settings::Go1Settings effective_settings(const RunRequest& request) {
   return result;
 }
 
-ControllerSettings controller_settings(const settings::Go1Settings& settings,
-                                       const rt::CatalogView& catalog) {
-  const std::string mismatch = settings::validate_against_catalog(settings, catalog);
-  if (!mismatch.empty()) throw SetupError(mismatch);
-  ControllerSettings result;
-  result.filter = settings.filter;
-  result.action_velocity = settings::velocity_table(settings, catalog);
-  result.hold_last_seen = settings.loop.missing_human == settings::MissingHuman::kHoldLast;
-  result.clamp_to_domain = settings.loop.clamp_to_domain;
-  return result;
-}
-
 const char* end_text(LoopEnd end) {
   switch (end) {
     case LoopEnd::kStepLimit:

@@ -1,9 +1,8 @@
 #include "app/session.hpp"
 
-#include <cstring>
-
 #include "app/go1_link.hpp"
 #include "app/synthetic_world.hpp"
+#include "app/treat_contexts.hpp"
 #include "camera/camera_error.hpp"
 #include "camera/live_camera.hpp"
 #include "camera/recorded_source.hpp"
@@ -12,14 +11,6 @@
 
 namespace oasis::hw::app {
 namespace {
-
-// The catalog's index of the context "human N holds the treat" (the Go1 spec's names).
-std::optional<std::uint32_t> context_of(const rt::CatalogView& catalog, TreatHolder holder) {
-  const char* name = holder == TreatHolder::kHuman1 ? "human1_holds_treat" : "human2_holds_treat";
-  for (std::uint32_t i = 0; i < catalog.num_abstractions; ++i)
-    if (std::strcmp(catalog.abstractions[i].context, name) == 0) return i;
-  return std::nullopt;
-}
 
 SessionSource synthetic_source(const settings::Go1Settings& settings,
                                const rt::CatalogView& catalog, RobotLink& link) {
@@ -32,8 +23,8 @@ SessionSource synthetic_source(const settings::Go1Settings& settings,
   auto source = std::make_unique<SyntheticWorld>(world, [&link] { return link.pose(); });
   SessionSource session;
   session.description = "synthetic world (two people, the treat handed over at 12 s and 24 s)";
-  const std::optional<std::uint32_t> human1 = context_of(catalog, TreatHolder::kHuman1);
-  const std::optional<std::uint32_t> human2 = context_of(catalog, TreatHolder::kHuman2);
+  const std::optional<std::uint32_t> human1 = context_index(catalog, TreatHolder::kHuman1);
+  const std::optional<std::uint32_t> human2 = context_index(catalog, TreatHolder::kHuman2);
   if (human1 && human2) {
     session.truth = [world = source.get(), one = *human1,
                      two = *human2]() -> std::optional<log::GroundTruth> {
@@ -63,6 +54,18 @@ settings::FrameSourceSetting source_option(const std::string& text) {
   if (!source)
     throw SetupError("--source: expected synthetic, camera or recorded:DIR, got \"" + text + "\"");
   return *source;
+}
+
+ControllerSettings controller_settings(const settings::Go1Settings& settings,
+                                       const rt::CatalogView& catalog) {
+  const std::string mismatch = settings::validate_against_catalog(settings, catalog);
+  if (!mismatch.empty()) throw SetupError(mismatch);
+  ControllerSettings result;
+  result.filter = settings.filter;
+  result.action_velocity = settings::velocity_table(settings, catalog);
+  result.hold_last_seen = settings.loop.missing_human == settings::MissingHuman::kHoldLast;
+  result.clamp_to_domain = settings.loop.clamp_to_domain;
+  return result;
 }
 
 SessionCatalog::SessionCatalog(const std::string& setting) {

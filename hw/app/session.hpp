@@ -10,6 +10,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "app/attention_controller.hpp"
 #include "app/robot_link.hpp"
 #include "log/step_record.hpp"
 #include "oasis/rt/catalog_file.hpp"
@@ -44,6 +45,11 @@ class SessionCatalog {
   const rt::CatalogView* view_ = nullptr;
   std::string description_;
 };
+
+// The controller's settings (filter options, action velocities, missing people) from the
+// settings. Throws SetupError when the actions do not match the catalog's.
+ControllerSettings controller_settings(const settings::Go1Settings& settings,
+                                       const rt::CatalogView& catalog);
 
 // The Go1 link after the robot answered, or a dry run. Throws SetupError when the robot does
 // not answer within `robot_timeout` (the sender meanwhile only ever commanded stand).

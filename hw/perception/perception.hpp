@@ -10,6 +10,8 @@
 #include "perception/camera_mount.hpp"
 #include "perception/frame.hpp"
 #include "perception/human_estimate.hpp"
+#include "perception/perception_result.hpp"
+#include "perception/perception_stage.hpp"
 #include "perception/reach_region.hpp"
 #include "perception/shirt_localisation.hpp"
 #include "perception/shirt_segmentation.hpp"
@@ -29,17 +31,10 @@ struct PerceptionConfig {
   ReachRegion reach;
 };
 
-struct PerceptionResult {
-  std::array<HumanEstimate, 2> humans;  // [0] human 1 (red shirt), [1] human 2 (yellow shirt)
-  TreatHolder holder = TreatHolder::kNone;
-  std::optional<TagDetection> treat_tag;  // the tag that decided the holder
-  double reward = 0.0;                    // 1 when the holder stands within config.reach
-};
-
-class Perception {
+class Perception final : public PerceptionStage {
  public:
   explicit Perception(PerceptionConfig config = {});
-  PerceptionResult step(const Frame& frame);
+  PerceptionResult step(const Frame& frame) override;
 
   const PerceptionConfig& config() const { return config_; }
 

@@ -279,6 +279,10 @@ TEST(NoiseAwareFilter, AMissedObjectOnlyPredicts) {
   EXPECT_EQ(robust.filter.step(missed, 2, 1.0, 0), rt::StepStatus::kMissingObservation);
   EXPECT_NEAR(robust.filter.belief(0), 0.8 * before + 0.2 * (1 - before), 1e-12);
   EXPECT_EQ(robust.filter.action(), 0U);  // the outside block's policy
+  // No reward observed (the robot could not tell): the same, with the reading in view.
+  const double in_view = robust.filter.belief(0);
+  EXPECT_EQ(robust.filter.step(seen, 2, std::nan(""), 0), rt::StepStatus::kMissingObservation);
+  EXPECT_NEAR(robust.filter.belief(0), 0.8 * in_view + 0.2 * (1 - in_view), 1e-12);
 }
 
 TEST(NoiseAwareFilter, NeedsAPositionNoiseModel) {

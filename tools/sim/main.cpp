@@ -23,8 +23,20 @@ namespace {
 
 using namespace oasis;
 
+// The paper's discrete example: in the source tree the program was built from, or where
+// `cmake --install` put it (PREFIX/share/oasis/specs, next to PREFIX/bin/oasis-sim).
+std::string default_spec() {
+  namespace fs = std::filesystem;
+  std::error_code error;
+  if (fs::exists(OASIS_SIM_DEFAULT_SPEC, error)) return OASIS_SIM_DEFAULT_SPEC;
+  const fs::path program = fs::read_symlink("/proc/self/exe", error);
+  const fs::path installed =
+      program.parent_path().parent_path() / "share/oasis/specs/discrete_tracking.oasis";
+  return !error && fs::exists(installed, error) ? installed.string() : OASIS_SIM_DEFAULT_SPEC;
+}
+
 struct Table1Arguments {
-  std::string spec = OASIS_SIM_DEFAULT_SPEC;
+  std::string spec = default_spec();
   std::uint32_t seeds = 5;
   std::uint32_t steps = 500;
   double sigma = 0.7;

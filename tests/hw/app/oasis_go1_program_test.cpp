@@ -187,6 +187,36 @@ TEST(OasisGo1Program, MalformedConfigNamesTheKey) {
   EXPECT_NE(outcome.output.find("bad.yaml:2:"), std::string::npos) << outcome.output;
 }
 
+TEST(OasisGo1Program, SimWritesTable2JsonPerControllerAndLogsThatScoreReads) {
+  const fs::path logs = scratch("sim_logs");
+  const fs::path plots = scratch("sim_plots");
+  const Outcome sim = run({"sim", "--trials", "2", "--steps", "60", "--json", "--logs",
+                           logs.string(), "--plots", plots.string()});
+  ASSERT_EQ(sim.status, 0) << sim.output;
+  for (const char* controller : {"\"oracle\"", "\"paper\"", "\"ours\""})
+    EXPECT_NE(sim.output.find(controller), std::string::npos) << controller;
+  for (const char* key : {"\"accuracy\"", "\"avg_lag_s\"", "\"max_lag_s\"", "\"normalized_reward\"",
+                          "\"mean\"", "\"std\""})
+    EXPECT_NE(sim.output.find(key), std::string::npos) << key;
+  EXPECT_EQ(lines_in(logs / "ours_trial02.jsonl"), 60u);
+  EXPECT_TRUE(fs::exists(plots / "oracle_trial01.svg"));
+
+  const Outcome score = run(
+      {"score", (logs / "ours_trial01.jsonl").string(), (logs / "ours_trial02.jsonl").string()});
+  ASSERT_EQ(score.status, 0) << score.output;
+  EXPECT_NE(score.output.find("reward: truth (truth.reward in 2 of 2 trials)"), std::string::npos)
+      << score.output;
+  EXPECT_EQ(score.output.find("unavailable"), std::string::npos) << score.output;
+}
+
+TEST(OasisGo1Program, SimRefusesAnUnknownController) {
+  const Outcome sim = run({"sim", "--controllers", "oracle,psychic"});
+  EXPECT_EQ(sim.status, 1);
+  EXPECT_NE(sim.output.find("no controller \"psychic\"; there are oracle, paper, guard, ours"),
+            std::string::npos)
+      << sim.output;
+}
+
 TEST(OasisGo1Program, MissingCameraNamesTheDevice) {
   const fs::path config = write_config("camera.yaml",
                                        "camera:\n  colour_device: /dev/oasis-no-such-camera\n  "

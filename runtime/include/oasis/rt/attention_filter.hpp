@@ -73,9 +73,10 @@ enum class FilterMode : std::uint32_t {
   ///   p(r_t | phi^i, s_obs) = P(true state in a cell of phi^i whose reward matches r_t | s_obs)
   /// under the Gaussian sigma(d) of each variable (reward_mass.hpp: exact on grids, within a
   /// reported error on polytope cells), softened by detection_epsilon like the paper's model.
-  /// A reading with a missed object (a non-finite relevant coordinate) skips the measurement
-  /// update: the belief is the prediction alone (StepStatus::kMissingObservation). The policy
-  /// is evaluated at the reading's block, as in Algorithm 1.
+  /// A reading with a missed object (a non-finite relevant coordinate), or no reward observed
+  /// (a non-finite reward: the robot could not see whether it was rewarded), skips the
+  /// measurement update: the belief is the prediction alone (StepStatus::kMissingObservation).
+  /// The policy is evaluated at the reading's block, as in Algorithm 1.
   kRobust = 1,
 };
 
@@ -441,6 +442,7 @@ class AttentionFilter {
   // over the reading's Gaussian noise; the prediction alone when an object was missed.
   StepStatus noise_aware_update(const double* state, double reward) noexcept {
     const std::uint32_t n = catalog_->num_abstractions;
+    if (!std::isfinite(reward)) return predict_only();
     if (catalog_->observation.reward_source == RewardSource::kObservedState)
       return paper_update(
           [&](std::uint32_t i) { return detection_at(i, located_block(i), reward); });
@@ -452,19 +454,22 @@ class AttentionFilter {
         return std::isfinite(reward) &&
                std::fabs(reward - abs.block_reward[block]) <= options_.reward_tolerance;
       });
-      if (mass.missing) {
-        switch_predict(belief_, scratch_, 1);
-        for (std::uint32_t k = 0; k < n; ++k)
-          belief_[k] = scratch_[k];
-        reward_evidence_ = 1.0;
-        mass_error_ = 0.0;
-        return StepStatus::kMissingObservation;
-      }
+      if (mass.missing) return predict_only();
       if (mass.error > mass_error_) mass_error_ = mass.error;
       const double eps = options_.detection_epsilon;
       likelihood_[i] = (1.0 - eps) * mass.probability + eps * (1.0 - mass.probability);
     }
     return paper_update([&](std::uint32_t i) { return likelihood_[i]; });
+  }
+
+  // The dynamics update alone: nothing was observed that the models could weigh.
+  StepStatus predict_only() noexcept {
+    switch_predict(belief_, scratch_, 1);
+    for (std::uint32_t k = 0; k < catalog_->num_abstractions; ++k)
+      belief_[k] = scratch_[k];
+    reward_evidence_ = 1.0;
+    mass_error_ = 0.0;
+    return StepStatus::kMissingObservation;
   }
 
   StepStatus paper_step(std::uint32_t state, double reward) noexcept {

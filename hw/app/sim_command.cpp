@@ -1,0 +1,193 @@
+// `oasis-go1 sim`: the Go1 treat experiment in the hallway simulator (hw/sim), Table II over
+// seeded trials for each controller, all on the same trials, through oasis-go1's own loop,
+// step log and score.
+
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+#include <memory>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "app/commands.hpp"
+#include "app/session.hpp"
+#include "app/sim_controllers.hpp"
+#include "app/sim_trial.hpp"
+#include "log/step_log_writer.hpp"
+#include "log/table2_metrics.hpp"
+#include "log/table2_report.hpp"
+#include "sim/trial_svg.hpp"
+
+namespace oasis::hw::app {
+namespace {
+
+struct SimRequest {
+  std::string config;    // oasis-go1 settings; empty: the defaults (hw/config/go1.yaml)
+  std::string scenario;  // empty: the defaults (hw/config/hallway.yaml)
+  std::string catalog;
+  int trials = 12;
+  std::uint64_t seed = 1;
+  std::vector<std::string> controllers{"oracle", "paper", "guard", "ours"};
+  std::string perception = "fast";
+  std::optional<std::uint64_t> steps;
+  std::string logs;
+  std::string plots;
+  bool json = false;
+  bool print_scenario = false;
+  bool quiet = false;
+};
+
+// Trial k of a run seeded S: the same for every controller, so they face the same people.
+std::uint64_t trial_seed(std::uint64_t seed, int trial) {
+  return seed * 1000u + static_cast<std::uint64_t>(trial);
+}
+
+std::string trial_name(const std::string& controller, int trial) {
+  char text[64];
+  std::snprintf(text, sizeof text, "%s_trial%02d", controller.c_str(), trial + 1);
+  return text;
+}
+
+SimTrialSetup trial_setup(const SimRequest& request, const settings::Go1Settings& settings,
+                          const rt::CatalogView& catalog) {
+  SimTrialSetup setup;
+  setup.scenario =
+      request.scenario.empty() ? sim::HallwayScenario{} : sim::load_scenario(request.scenario);
+  setup.path = request.perception == "rendered" ? sim::ObservationPath::kRendered
+                                                : sim::ObservationPath::kFast;
+  setup.period_s = 1.0 / settings.loop.rate_hz;
+  setup.intrinsics = settings.camera.intrinsics;
+  setup.depth_scale_m_per_unit = settings.camera.depth_scale_m_per_unit;
+  setup.perception = settings.perception;
+  setup.controller = controller_settings(settings, catalog);
+  setup.max_steps = request.steps;
+  return setup;
+}
+
+void write_outputs(const SimRequest& request, const std::string& name, const SimTrialResult& result,
+                   double hallway_width_m) {
+  if (!request.logs.empty()) {
+    log::StepLogWriter writer(std::filesystem::path(request.logs) / (name + ".jsonl"));
+    for (const log::StepRecord& record : result.records)
+      writer.write(record);
+  }
+  if (!request.plots.empty())
+    sim::write_file_atomically(std::filesystem::path(request.plots) / (name + ".svg"),
+                               sim::trial_svg(result.trace, name, hallway_width_m));
+}
+
+log::Table2Summary run_controller(const SimRequest& request, const SimTrialSetup& setup,
+                                  const rt::CatalogView& catalog, const SimControllerKind& kind) {
+  std::vector<log::TrialScore> scores;
+  for (int trial = 0; trial < request.trials; ++trial) {
+    const SimTrialResult result =
+        run_sim_trial(catalog, setup, kind, trial_seed(request.seed, trial));
+    write_outputs(request, trial_name(kind.name, trial), result, setup.scenario.hallway.width_m);
+    log::ScoreOptions options;
+    options.period_s = setup.period_s;
+    scores.push_back(log::score_trial(result.records, options));
+    if (!request.quiet && !request.json)
+      std::cerr << "oasis-go1 sim: " << kind.name << " trial " << trial + 1 << "/" << request.trials
+                << ": accuracy " << (scores.back().accuracy ? *scores.back().accuracy : 0.0)
+                << ", reward " << scores.back().normalized_reward.value_or(0.0) << '\n';
+  }
+  return log::summarize_trials(scores);
+}
+
+void check_request(const SimRequest& request) {
+  for (const std::string& name : request.controllers)
+    if (!find_sim_controller(name)) {
+      std::string known;
+      for (const SimControllerKind& kind : sim_controller_kinds())
+        known += (known.empty() ? "" : ", ") + kind.name;
+      throw SetupError("--controllers: no controller \"" + name + "\"; there are " + known);
+    }
+  for (const std::string& folder : {request.logs, request.plots})
+    if (!folder.empty()) std::filesystem::create_directories(folder);
+}
+
+int simulate(const SimRequest& request) {
+  if (request.print_scenario) {
+    std::cout << sim::scenario_to_yaml(
+        request.scenario.empty() ? sim::HallwayScenario{} : sim::load_scenario(request.scenario));
+    return 0;
+  }
+  check_request(request);
+  settings::Go1Settings settings = settings_or_defaults(request.config);
+  if (!request.catalog.empty()) settings.loop.catalog = request.catalog;
+  const SessionCatalog catalog(settings.loop.catalog);
+  const SimTrialSetup setup = trial_setup(request, settings, catalog.view());
+  if (!request.quiet && !request.json)
+    std::cerr << "oasis-go1 sim: " << catalog.describe() << "; " << request.trials
+              << " trial(s) from seed " << request.seed << "; perception " << request.perception
+              << '\n';
+
+  nlohmann::ordered_json json = nlohmann::ordered_json::object();
+  for (const std::string& name : request.controllers) {
+    const SimControllerKind& kind = *find_sim_controller(name);
+    const log::Table2Summary summary = run_controller(request, setup, catalog.view(), kind);
+    if (request.json) {
+      json[name] = log::table2_json(summary);
+      continue;
+    }
+    std::cout << "\n== " << name << ": " << kind.description << '\n';
+    log::print_table2(std::cout, summary);
+  }
+  if (request.json) std::cout << json.dump(2) << '\n';
+  return 0;
+}
+
+std::string controller_help() {
+  std::string text = "comma-separated, in the order run:";
+  for (const SimControllerKind& kind : sim_controller_kinds())
+    text += "\n  " + kind.name + ": " + kind.description;
+  return text;
+}
+
+}  // namespace
+
+CommandRunner add_sim_command(CLI::App& app) {
+  auto request = std::make_shared<SimRequest>();
+  CLI::App* command = app.add_subcommand(
+      "sim",
+      "the Go1 treat experiment in a simulated hallway: Table II per controller over seeded "
+      "trials, through the loop, log and score of run");
+  command
+      ->add_option("--scenario", request->scenario,
+                   "the hallway scenario (hw/config/hallway.yaml documents every key); default: "
+                   "the built-in defaults, which equal that file")
+      ->check(CLI::ExistingFile);
+  command
+      ->add_option("--config", request->config,
+                   "oasis-go1 settings: actions, loop rate, camera, perception, reach")
+      ->check(CLI::ExistingFile);
+  command->add_option("--catalog", request->catalog, "'linked' or a .bin catalog");
+  command->add_option("--trials", request->trials, "seeded trials per controller")
+      ->check(CLI::Range(1, 100000));
+  command->add_option("--seed", request->seed, "trial k uses seed * 1000 + k");
+  command->add_option("--controllers", request->controllers, controller_help())->delimiter(',');
+  command
+      ->add_option("--perception", request->perception,
+                   "fast (noisy positions drawn directly) or rendered (each frame rendered "
+                   "and run through the real perception)")
+      ->check(CLI::IsMember({"fast", "rendered"}));
+  command->add_option("--steps", request->steps, "cut each trial after this many steps");
+  command->add_option(
+      "--logs", request->logs,
+      "write each trial's step log (hw/log/README.md) to DIR/CONTROLLER_trialNN.jsonl");
+  command->add_option("--plots", request->plots,
+                      "write each trial's picture to DIR/CONTROLLER_trialNN.svg");
+  command->add_flag("--json", request->json,
+                    "print {CONTROLLER: {accuracy, avg_lag_s, max_lag_s, normalized_reward, "
+                    "...}} with each statistic {mean, std}");
+  command->add_flag("--print-scenario", request->print_scenario,
+                    "print the scenario (every key, commented) and stop");
+  command->add_flag("--quiet", request->quiet, "no line per trial");
+  command->footer(
+      "Every controller runs the same trials (the same people, hand-offs, hiding and noise "
+      "for a seed); 'oasis-go1 score DIR/ours_trial*.jsonl' scores the logs again.");
+  return [request] { return simulate(*request); };
+}
+
+}  // namespace oasis::hw::app

@@ -1,0 +1,44 @@
+#pragma once
+// The controllers `oasis-go1 sim` compares on the same seeded trials, by name:
+//   oracle  told the true context (oracle_controller.hpp): the upper bound
+//   paper   OAS with Algorithm 1's defaults (rt::FilterOptions{}: on a zero likelihood the
+//           belief restarts from the prior)
+//   guard   OAS with the zero-likelihood guard alone
+//   ours    OAS with our options: the zero-likelihood guard on (the belief keeps its
+//           prediction when no context explains the observation) and the noise-aware filter
+//           (rt::FilterMode::kRobust on the catalog's position noise)
+// A baseline is one more entry: a name, a line for --help, and how to build it from the
+// trial's catalog, settings and truth. A "no-attention" entry would load its own catalog (one
+// policy on the full state).
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "app/attention_controller.hpp"
+#include "app/loop_controller.hpp"
+
+namespace oasis::hw::app {
+
+struct SimControllerInputs {
+  const rt::CatalogView& catalog;
+  ControllerSettings settings;  // action velocities and missing people from oasis-go1's settings
+  // The index of the true context of the frame just taken; only the oracle may call it.
+  std::function<std::optional<std::uint32_t>()> truth;
+};
+
+struct SimControllerKind {
+  std::string name;
+  std::string description;
+  std::function<std::unique_ptr<LoopController>(const SimControllerInputs&)> make;
+};
+
+// Every controller, in the order the tables list them.
+const std::vector<SimControllerKind>& sim_controller_kinds();
+
+// The kind called `name`; nothing if there is none.
+const SimControllerKind* find_sim_controller(const std::string& name);
+
+}  // namespace oasis::hw::app

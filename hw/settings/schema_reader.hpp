@@ -1,0 +1,424 @@
+// The schema reader shared by every YAML file of hw/ (the oasis-go1 settings, the hallway
+// scenario of hw/sim): yaml-cpp builds the node tree, the Reader visitor walks a schema's
+// describe() over it, and every problem becomes a Diagnostic at the node's line and column.
+// A schema is a function template describe(visitor, values) calling section() and value()
+// (and, for the Go1 settings, bands() and actions()); see schema.hpp.
+#pragma once
+
+#include <algorithm>
+#include <filesystem>
+#include <map>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+#include <yaml-cpp/yaml.h>
+
+#include "settings/checks.hpp"
+#include "settings/codecs.hpp"
+#include "settings/settings_error.hpp"
+#include "settings/suggest.hpp"
+
+namespace oasis::hw::settings::detail {
+
+std::vector<std::string> split_lines(std::string_view text);
+std::string in_quotes(std::string_view text);
+std::string what_node_is(const YAML::Node& node);
+std::string join(const std::vector<std::string>& words);
+Diagnostic at_mark(const YAML::Mark& mark, const std::vector<std::string>& lines,
+                   std::string message);
+
+// The text of a YAML file. Throws SettingsError (no such file, a directory, unreadable).
+std::string read_yaml_file(const std::filesystem::path& file);
+
+// Every section and key path of the schema ("robot", "robot.port", ...), for telling a user
+// that a key they put in the wrong section belongs in another.
+class KeyLister {
+ public:
+  template <class Body>
+  void section(std::string_view key, std::string_view, Body&& body) {
+    add(key);
+    prefix_.push_back(std::string(key));
+    body();
+    prefix_.pop_back();
+  }
+  template <class T, class Codec>
+  void value(std::string_view key, const T&, const Codec&, std::string_view) {
+    add(key);
+  }
+  template <class T>
+  void bands(std::string_view key, const T&, std::string_view) {
+    add(key);
+  }
+  template <class T>
+  void actions(std::string_view key, const T&, std::string_view) {
+    add(key);
+  }
+
+  std::vector<std::string> paths;
+
+ private:
+  void add(std::string_view key) {
+    std::string path;
+    for (const std::string& part : prefix_)
+      path += part + ".";
+    paths.push_back(path + std::string(key));
+  }
+  std::vector<std::string> prefix_;
+};
+
+// Every key path of a schema: `describe(lister)` walks it.
+template <class Describe>
+std::vector<std::string> schema_paths(Describe&& describe) {
+  KeyLister lister;
+  describe(lister);
+  return lister.paths;
+}
+
+class Reader {
+ public:
+  struct Entry {
+    std::string key;
+    YAML::Mark key_mark;
+    YAML::Node value;
+  };
+
+  Reader(std::string_view text, std::vector<std::string> schema_paths)
+      : lines_(split_lines(text)), schema_paths_(std::move(schema_paths)) {}
+
+  // `describe(visitor)` walks the schema with this reader as the visitor; `sections` lists the
+  // top-level keys for the message when the file is not a mapping ("robot:, limits:, ...").
+  template <class Describe>
+  void read(const YAML::Node& root, Describe&& describe, std::string_view sections) {
+    if (!root.IsMap()) {
+      error(root.Mark(), "",
+            "expected a mapping of sections (" + std::string(sections) + "), got " +
+                what_node_is(root));
+      return;
+    }
+    if (!open("", root)) return;
+    describe(*this);
+    close();
+  }
+
+  // ---- the schema visitor ----
+
+  template <class Body>
+  void section(std::string_view key, std::string_view, Body&& body) {
+    const std::optional<Entry> entry = take(key);
+    if (!entry) return;
+    // "robot:" with every key commented out is an empty section, not an error.
+    if (!open(path_of(key), entry->value, /*null_is_empty=*/true)) return;
+    body();
+    close();
+  }
+
+  template <class T, class Codec>
+  void value(std::string_view key, T& field, const Codec& codec, std::string_view) {
+    const std::optional<Entry> entry = take(key);
+    if (entry) read_scalar(path_of(key), *entry, field, codec);
+  }
+
+  void bands(std::string_view key, std::vector<HsvBand>& field, std::string_view) {
+    const std::optional<Entry> entry = take(key);
+    if (!entry) return;
+    const std::string path = path_of(key);
+    const YAML::Node& node = entry->value;
+    if (!node.IsSequence() || node.size() == 0) {
+      error(at(*entry), path,
+            "expected a list of HSV bands such as [{low: [0, 120, 70], high: [10, 255, 255]}], "
+            "got " +
+                what_node_is(node));
+      return;
+    }
+    std::vector<HsvBand> bands;
+    bool all_ok = true;
+    std::size_t index = 0;
+    for (const YAML::Node& item : node) {
+      const std::string item_path = path + "[" + std::to_string(index++) + "]";
+      HsvBand band;
+      const bool ok = read_band(item_path, item, band);
+      all_ok = all_ok && ok;
+      bands.push_back(band);
+    }
+    if (all_ok) field = std::move(bands);
+  }
+
+  void actions(std::string_view key, std::vector<ActionVelocity>& field, std::string_view) {
+    const std::optional<Entry> entry = take(key);
+    if (!entry) return;
+    const std::string path = path_of(key);
+    if (!open(path, entry->value)) return;
+    std::vector<ActionVelocity> actions;
+    bool all_ok = true;
+    for (const Entry& action : accept_every_key()) {
+      ActionVelocity parsed{action.key, {}};
+      const bool ok = read_action(path + "." + action.key, action, parsed);
+      all_ok = all_ok && ok;
+      actions.push_back(parsed);
+    }
+    close();
+    if (all_ok && actions.empty()) {
+      error(at(*entry), path,
+            "expected at least one action: a mapping of action name -> {forward, lateral, "
+            "yaw_rate}");
+    } else if (all_ok) {
+      field = std::move(actions);
+    }
+  }
+
+  // ---- results ----
+
+  // Reports a cross-key problem at whichever of its two keys the file wrote.
+  void report(const CrossProblem& problem) {
+    for (const std::string* key : {&problem.key, &problem.other_key}) {
+      const auto mark = marks_.find(*key);
+      if (mark == marks_.end()) continue;
+      error(mark->second, problem.key, problem.message);
+      return;
+    }
+    error(YAML::Mark::null_mark(), problem.key, problem.message);
+  }
+
+  const std::vector<Diagnostic>& diagnostics() const { return diagnostics_; }
+
+ private:
+  struct Frame {
+    std::string path;
+    std::vector<Entry> entries;
+    std::vector<std::string> known;  // the keys the schema asked for here
+  };
+
+  std::string path_of(std::string_view key) const {
+    const std::string& parent = frames_.back().path;
+    return parent.empty() ? std::string(key) : parent + "." + std::string(key);
+  }
+
+  // Where to point at a value: the value itself, or its key when there is no value.
+  static YAML::Mark at(const Entry& entry) {
+    if (entry.value.IsNull() || entry.value.Mark().is_null()) return entry.key_mark;
+    return entry.value.Mark();
+  }
+
+  void error(const YAML::Mark& mark, std::string key, std::string message) {
+    Diagnostic diagnostic{0, 0, std::move(key), std::move(message), {}};
+    if (!mark.is_null()) {
+      diagnostic.line = mark.line + 1;
+      diagnostic.column = mark.column + 1;
+      if (static_cast<std::size_t>(mark.line) < lines_.size())
+        diagnostic.source_line = lines_[static_cast<std::size_t>(mark.line)];
+    }
+    diagnostics_.push_back(std::move(diagnostic));
+  }
+
+  // Enters a mapping; false (and an error) if `node` is not one.
+  bool open(std::string path, const YAML::Node& node, bool null_is_empty = false) {
+    if (!node.IsMap() && !(null_is_empty && node.IsNull())) {
+      error(node.Mark().is_null() ? YAML::Mark() : node.Mark(), path,
+            "expected a mapping, got " + what_node_is(node));
+      return false;
+    }
+    Frame frame{std::move(path), {}, {}};
+    std::map<std::string, int> first_line;
+    if (node.IsMap()) {
+      for (const auto& pair : node) {
+        const YAML::Node& key = pair.first;
+        const std::string key_path = frame.path.empty() ? "" : frame.path + ".";
+        if (!key.IsScalar()) {
+          error(key.Mark(), frame.path, "expected a key name, got " + what_node_is(key));
+          continue;
+        }
+        const auto [previous, inserted] = first_line.emplace(key.Scalar(), key.Mark().line + 1);
+        if (!inserted) {
+          error(key.Mark(), key_path + key.Scalar(),
+                "listed twice (first at line " + std::to_string(previous->second) + ")");
+          continue;
+        }
+        frame.entries.push_back({key.Scalar(), key.Mark(), pair.second});
+      }
+    }
+    frames_.push_back(std::move(frame));
+    return true;
+  }
+
+  // Leaves the current mapping, reporting every key the schema did not ask for.
+  void close() {
+    const Frame& frame = frames_.back();
+    for (const Entry& entry : frame.entries) {
+      if (std::find(frame.known.begin(), frame.known.end(), entry.key) != frame.known.end())
+        continue;
+      const std::string path = frame.path.empty() ? entry.key : frame.path + "." + entry.key;
+      error(entry.key_mark, path, unknown_key_message(frame, entry.key));
+    }
+    frames_.pop_back();
+  }
+
+  std::string unknown_key_message(const Frame& frame, const std::string& key) const {
+    if (const auto close = closest_candidate(key, frame.known))
+      return "unknown key; did you mean \"" + *close + "\"?";
+    for (const std::string& path : schema_paths_) {
+      const std::size_t dot = path.rfind('.');
+      const std::string leaf = dot == std::string::npos ? path : path.substr(dot + 1);
+      const std::string parent = dot == std::string::npos ? "" : path.substr(0, dot);
+      if (leaf == key && parent != frame.path)
+        return "unknown key here; it belongs in " + (parent.empty() ? "the top level" : parent) +
+               " (" + path + ")";
+    }
+    const std::string where = frame.path.empty() ? "the file" : frame.path;
+    return "unknown key; " + where + " takes " + join(frame.known);
+  }
+
+  std::optional<Entry> take(std::string_view key) {
+    Frame& frame = frames_.back();
+    frame.known.push_back(std::string(key));
+    for (const Entry& entry : frame.entries) {
+      if (entry.key != key) continue;
+      marks_[path_of(key)] = at(entry);
+      return entry;
+    }
+    return std::nullopt;
+  }
+
+  // For a mapping whose keys are data (actions:): every key is accepted.
+  std::vector<Entry> accept_every_key() {
+    Frame& frame = frames_.back();
+    for (const Entry& entry : frame.entries) {
+      frame.known.push_back(entry.key);
+      marks_[path_of(entry.key)] = entry.key_mark;
+    }
+    return frame.entries;
+  }
+
+  template <class T, class Codec>
+  bool read_scalar(const std::string& path, const Entry& entry, T& field, const Codec& codec) {
+    const YAML::Node& node = entry.value;
+    if (node.IsScalar()) {
+      T parsed = field;
+      if (codec.parse(node.Scalar(), parsed)) {
+        field = std::move(parsed);
+        return true;
+      }
+    }
+    std::string message = "expected " + codec.expected() + ", got " + what_node_is(node);
+    if constexpr (requires { codec.spellings(); }) {
+      if (node.IsScalar())
+        if (const auto close = closest_candidate(node.Scalar(), codec.spellings()))
+          message += "; did you mean \"" + *close + "\"?";
+    }
+    error(at(entry), path, std::move(message));
+    return false;
+  }
+
+  bool read_band(const std::string& path, const YAML::Node& item, HsvBand& band) {
+    if (!open(path, item)) return false;
+    bool ok = true;
+    for (const std::string_view bound : {"low", "high"}) {
+      const std::optional<Entry> entry = take(bound);
+      if (!entry) {
+        error(item.Mark(), path,
+              "missing " + std::string(bound) + ": a band is {low: [h, s, v], high: [h, s, v]}");
+        ok = false;
+      } else if (!read_hsv(path + "." + std::string(bound), *entry,
+                           bound == "low" ? band.low : band.high)) {
+        ok = false;
+      }
+    }
+    close();
+    if (!ok) return false;
+    const std::string problem = band_problem(band);
+    if (problem.empty()) return true;
+    error(item.Mark(), path, problem);
+    return false;
+  }
+
+  bool read_hsv(const std::string& path, const Entry& entry, cv::Scalar& hsv) {
+    const YAML::Node& node = entry.value;
+    if (!node.IsSequence() || node.size() != 3) {
+      error(at(entry), path,
+            "expected [hue, saturation, value] such as [0, 120, 70], got " + what_node_is(node));
+      return false;
+    }
+    constexpr std::string_view kChannels[] = {"a hue", "a saturation", "a value"};
+    constexpr int kMax[] = {179, 255, 255};
+    bool ok = true;
+    for (int c = 0; c < 3; ++c) {
+      const YAML::Node element = node[static_cast<std::size_t>(c)];
+      const IntegerCodec<int> codec{0, kMax[c]};
+      int channel = 0;
+      if (element.IsScalar() && codec.parse(element.Scalar(), channel)) {
+        hsv[c] = channel;
+        continue;
+      }
+      error(element.Mark(), path,
+            "expected " + std::string(kChannels[c]) + " in 0.." + std::to_string(kMax[c]) +
+                ", got " + what_node_is(element));
+      ok = false;
+    }
+    return ok;
+  }
+
+  bool read_action(const std::string& path, const Entry& entry, ActionVelocity& action) {
+    if (!is_action_name(entry.key)) {
+      error(entry.key_mark, path,
+            "an action name is a letter or _ followed by letters, digits or _, as in the spec");
+      return false;
+    }
+    if (!open(path, entry.value, /*null_is_empty=*/true)) return false;
+    float* components[] = {&action.velocity.forward, &action.velocity.lateral,
+                           &action.velocity.yaw_rate};
+    bool ok = true;
+    for (std::size_t c = 0; c < 3; ++c) {
+      const std::optional<Entry> component = take(kActionComponents[c]);
+      if (component && !read_scalar(path_of(kActionComponents[c]), *component, *components[c],
+                                    RealCodec<float>{}))
+        ok = false;
+    }
+    close();
+    return ok;
+  }
+
+  std::vector<std::string> lines_;
+  std::vector<std::string> schema_paths_;
+  std::vector<Frame> frames_;
+  std::map<std::string, YAML::Mark> marks_;  // path -> where the file wrote it
+  std::vector<Diagnostic> diagnostics_;
+};
+
+// Parses `yaml_text` into `values` (which start as the defaults) through the schema.
+// `cross_check(values)` returns the CrossProblems between keys; it runs only when every key is
+// valid on its own, since a failed key's default would only add confusing follow-up errors.
+// Throws SettingsError with every problem found.
+template <class Values, class Describe, class CrossCheck>
+void parse_with_schema(std::string_view yaml_text, std::string_view file_name, Values& values,
+                       Describe&& describe, CrossCheck&& cross_check, std::string_view sections) {
+  const std::string file(file_name);
+  std::vector<YAML::Node> documents;
+  try {
+    documents = YAML::LoadAll(std::string(yaml_text));
+  } catch (const YAML::Exception& e) {
+    throw SettingsError(file, {at_mark(e.mark, split_lines(yaml_text), "invalid YAML: " + e.msg)});
+  }
+  if (documents.empty())
+    throw SettingsError(file, {{0,
+                                0,
+                                "",
+                                "the file holds no settings; expected a mapping of sections (" +
+                                    std::string(sections) + "); write {} to keep every default",
+                                {}}});
+  if (documents.size() > 1)
+    throw SettingsError(file, {at_mark(documents[1].Mark(), split_lines(yaml_text),
+                                       "a second YAML document; the settings are one mapping")});
+
+  const Values defaults = values;
+  Reader reader(yaml_text, schema_paths([&](auto& lister) { describe(lister, defaults); }));
+  reader.read(
+      documents[0], [&](auto& visitor) { describe(visitor, values); }, sections);
+  if (reader.diagnostics().empty())
+    for (const CrossProblem& problem : cross_check(values))
+      reader.report(problem);
+  if (!reader.diagnostics().empty()) throw SettingsError(file, reader.diagnostics());
+}
+
+}  // namespace oasis::hw::settings::detail
