@@ -26,9 +26,10 @@ struct SimRequest {
   std::string config;    // oasis-go1 settings; empty: the defaults (hw/config/go1.yaml)
   std::string scenario;  // empty: the defaults (hw/config/hallway.yaml)
   std::string catalog;
+  std::string no_attention_catalog = OASIS_NO_ATTENTION_CATALOG;
   int trials = 12;
   std::uint64_t seed = 1;
-  std::vector<std::string> controllers{"oracle", "paper", "guard", "ours"};
+  std::vector<std::string> controllers{"oracle", "paper", "guard", "no-attention", "ours"};
   std::string perception = "fast";
   std::optional<std::uint64_t> steps;
   std::string logs;
@@ -117,16 +118,20 @@ int simulate(const SimRequest& request) {
   settings::Go1Settings settings = settings_or_defaults(request.config);
   if (!request.catalog.empty()) settings.loop.catalog = request.catalog;
   const SessionCatalog catalog(settings.loop.catalog);
-  const SimTrialSetup setup = trial_setup(request, settings, catalog.view());
   if (!request.quiet && !request.json)
     std::cerr << "oasis-go1 sim: " << catalog.describe() << "; " << request.trials
               << " trial(s) from seed " << request.seed << "; perception " << request.perception
               << '\n';
 
+  // The no-attention catalog, loaded when a controller runs on it.
+  std::optional<SessionCatalog> full_state;
   nlohmann::ordered_json json = nlohmann::ordered_json::object();
   for (const std::string& name : request.controllers) {
     const SimControllerKind& kind = *find_sim_controller(name);
-    const log::Table2Summary summary = run_controller(request, setup, catalog.view(), kind);
+    if (kind.full_state_catalog && !full_state) full_state.emplace(request.no_attention_catalog);
+    const rt::CatalogView& view = kind.full_state_catalog ? full_state->view() : catalog.view();
+    const log::Table2Summary summary =
+        run_controller(request, trial_setup(request, settings, view), view, kind);
     if (request.json) {
       json[name] = log::table2_json(summary);
       continue;
@@ -163,6 +168,11 @@ CommandRunner add_sim_command(CLI::App& app) {
                    "oasis-go1 settings: actions, loop rate, camera, perception, reach")
       ->check(CLI::ExistingFile);
   command->add_option("--catalog", request->catalog, "'linked' or a .bin catalog");
+  command
+      ->add_option("--no-attention-catalog", request->no_attention_catalog,
+                   "the catalog the no-attention controller runs on (oasisc compile "
+                   "--no-attention; scripts/regen makes the shipped one)")
+      ->capture_default_str();
   command->add_option("--trials", request->trials, "seeded trials per controller")
       ->check(CLI::Range(1, 100000));
   command->add_option("--seed", request->seed, "trial k uses seed * 1000 + k");

@@ -4,12 +4,13 @@
 //   paper   OAS with Algorithm 1's defaults (rt::FilterOptions{}: on a zero likelihood the
 //           belief restarts from the prior)
 //   guard   OAS with the zero-likelihood guard alone
+//   no-attention  OAS (with the guard) on a catalog whose every abstraction partitions the
+//           full 4-D state: what the ignored person does to a policy without attention
 //   ours    OAS with our options: the zero-likelihood guard on (the belief keeps its
 //           prediction when no context explains the observation) and the noise-aware filter
 //           (rt::FilterMode::kRobust on the catalog's position noise)
 // A baseline is one more entry: a name, a line for --help, and how to build it from the
-// trial's catalog, settings and truth. A "no-attention" entry would load its own catalog (one
-// policy on the full state).
+// trial's catalog, settings and truth.
 #include <cstdint>
 #include <functional>
 #include <memory>
@@ -32,6 +33,9 @@ struct SimControllerInputs {
 struct SimControllerKind {
   std::string name;
   std::string description;
+  // Runs on the no-attention catalog (every context's policy over the full state, compiled
+  // with `oasisc compile --no-attention`) instead of the session's.
+  bool full_state_catalog = false;
   std::function<std::unique_ptr<LoopController>(const SimControllerInputs&)> make;
 };
 

@@ -212,7 +212,7 @@ TEST(OasisGo1Program, SimWritesTable2JsonPerControllerAndLogsThatScoreReads) {
 TEST(OasisGo1Program, SimRefusesAnUnknownController) {
   const Outcome sim = run({"sim", "--controllers", "oracle,psychic"});
   EXPECT_EQ(sim.status, 1);
-  EXPECT_NE(sim.output.find("no controller \"psychic\"; there are oracle, paper, guard, ours"),
+  EXPECT_NE(sim.output.find("no controller \"psychic\"; there are oracle, paper, guard, no-attention, ours"),
             std::string::npos)
       << sim.output;
 }

@@ -90,7 +90,7 @@ TEST(SimTrial, AShortRenderedTrialRunsTheRealPerception) {
 }
 
 TEST(SimTrial, ControllersAreFoundByName) {
-  for (const char* name : {"oracle", "paper", "guard", "ours"})
+  for (const char* name : {"oracle", "paper", "guard", "no-attention", "ours"})
     EXPECT_NE(find_sim_controller(name), nullptr) << name;
   EXPECT_EQ(find_sim_controller("no-such"), nullptr);
 }
