@@ -80,7 +80,27 @@ void FakeGo1::accept(const Datagram& datagram, Clock::time_point now) {
     ++counts_.dropped;
     return;
   }
-  pending_.push_back(Pending{now + options_.delay, decoded.packet(), datagram.from});
+  // Every draw is made for every packet, so one fault's rate does not shift another's stream.
+  const bool duplicate = loss_.next_uniform() < options_.duplicate_probability;
+  const bool spike = loss_.next_uniform() < options_.spike_probability;
+  Clock::time_point due = now + options_.delay;
+  if (spike) {
+    due += options_.spike;
+    ++counts_.spiked;
+  }
+  schedule(Pending{due, decoded.packet(), datagram.from});
+  if (duplicate) {
+    schedule(Pending{due + std::chrono::milliseconds(1), decoded.packet(), datagram.from});
+    ++counts_.duplicated;
+  }
+}
+
+// Keeps pending_ sorted by due time; equal times keep their arrival order.
+void FakeGo1::schedule(Pending pending) {
+  const auto at =
+      std::upper_bound(pending_.begin(), pending_.end(), pending.due,
+                       [](Clock::time_point due, const Pending& other) { return due < other.due; });
+  pending_.insert(at, std::move(pending));
 }
 
 void FakeGo1::apply_due(Clock::time_point now) {

@@ -1,9 +1,10 @@
 #pragma once
 // A stand-in Go1 on loopback for tests: it receives HighCmd packets, refuses and counts bad ones,
-// loses some on purpose (seeded) and delays the rest, then "executes" each: the commanded body
-// velocity (walking mode only; every other mode stands still) is integrated into a planar pose
-// between the times packets take effect, and a HighState carrying that pose is sent back to the
-// packet's source, as the robot does (NOTES §1 "Addresses").
+// loses some on purpose (seeded), duplicates some, delays the rest (some by a spike, which
+// reorders them: a spiked packet takes effect after later ones), then "executes" each: the
+// commanded body velocity (walking mode only; every other mode stands still) is integrated into a
+// planar pose between the times packets take effect, and a HighState carrying that pose is sent
+// back to the packet's source, as the robot does (NOTES §1 "Addresses").
 
 #include <chrono>
 #include <cstdint>
@@ -28,6 +29,9 @@ struct FakeGo1Options {
   std::uint8_t state_level_flag = kLevelFlagHighLevel;
   double loss_probability = 0.0;
   std::chrono::milliseconds delay{0};  // from receipt until the command takes effect
+  double duplicate_probability = 0.0;  // a kept packet takes effect twice, 1 ms apart
+  double spike_probability = 0.0;      // a kept packet is delayed by `spike` more
+  std::chrono::milliseconds spike{0};
   std::uint64_t seed = 1;
 };
 
@@ -35,7 +39,9 @@ struct FakeGo1Counts {
   std::uint64_t received = 0;  // datagrams of any kind
   std::uint64_t refused = 0;   // bad length, head, level flag or CRC
   std::uint64_t dropped = 0;   // lost on purpose
-  std::uint64_t applied = 0;   // took effect
+  std::uint64_t duplicated = 0;
+  std::uint64_t spiked = 0;   // delayed by a spike (and so possibly reordered)
+  std::uint64_t applied = 0;  // took effect
 };
 
 struct AppliedCommand {
@@ -68,6 +74,7 @@ class FakeGo1 {
   void run();
   void accept(const Datagram& datagram, Clock::time_point now);
   void apply_due(Clock::time_point now);
+  void schedule(Pending pending);
   void apply(const Pending& pending);
   void integrate_until(Clock::time_point at);
   void reply(const Endpoint& to);
@@ -75,7 +82,7 @@ class FakeGo1 {
   const FakeGo1Options options_;
   UdpSocket socket_;
   LossModel loss_;
-  std::deque<Pending> pending_;  // thread-only; due times are increasing (constant delay)
+  std::deque<Pending> pending_;  // thread-only; sorted by due time
 
   mutable std::mutex mutex_;
   bool quitting_ = false;

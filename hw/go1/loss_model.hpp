@@ -14,6 +14,9 @@ class LossModel {
   // Whether the next packet is lost.
   bool drop_next();
 
+  // The next number of the same stream, uniform in [0, 1): the fake's other faults draw here.
+  double next_uniform();
+
  private:
   double loss_probability_;
   std::uint64_t state_;

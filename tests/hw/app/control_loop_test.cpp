@@ -11,6 +11,7 @@
 #include <condition_variable>
 #include <mutex>
 #include <optional>
+#include <stdexcept>
 #include <string>
 #include <thread>
 #include <vector>
@@ -219,6 +220,51 @@ TEST(ControlLoop, DrivesTheFakeGo1TowardTheHolderAndStopsWhenTheLoopStalls) {
   link.shut_down();
   const std::lock_guard lock(records_mutex);
   EXPECT_GE(records.size(), 15u);
+}
+
+// Perception that works for a while, then throws (a driver error, a bad frame).
+class FailingPerception final : public PerceptionStage {
+ public:
+  explicit FailingPerception(int good_frames) : good_frames_(good_frames) {}
+  PerceptionResult step(const Frame& frame) override {
+    if (good_frames_-- <= 0) throw std::runtime_error("perception failed");
+    return perception_.step(frame);
+  }
+
+ private:
+  Perception perception_;
+  int good_frames_;
+};
+
+// Fault injection (issue 15): perception throws mid-run. The loop does not swallow it, and the
+// robot stops on the watchdog alone, before anyone calls shut_down().
+TEST(ControlLoop, APerceptionExceptionEndsTheLoopAndTheWatchdogStopsTheRobot) {
+  const rt::CatalogView& catalog = go1_treat::catalog();
+  go1::FakeGo1 robot;
+  Go1Link go1_link(loopback_sender(robot.endpoint()));
+  ASSERT_TRUE(go1_link.wait_for_robot(milliseconds(1000))) << go1_link.silence_report();
+  TimedLink link(go1_link);
+  SyntheticWorld world({}, [&link] { return link.pose(); });
+  FailingPerception perception(10);  // two seconds of driving
+  AttentionController controller(catalog, spec_settings(catalog));
+  LoopParts parts{world, perception, controller, link, truth_of(world), {}, {}};
+  std::string error;
+  try {
+    run_loop(parts, LoopOptions{});
+  } catch (const std::runtime_error& thrown) {
+    error = thrown.what();
+  }
+  EXPECT_EQ(error, "perception failed");
+  EXPECT_GT(std::hypot(robot.pose().x, robot.pose().y), 0.1) << "it drove before the failure";
+  std::this_thread::sleep_for(kWatchdogTimeout + kSchedulingMargin + milliseconds(200));
+  const std::vector<go1::AppliedCommand> applied = robot.applied_commands();
+  const auto stopped_at = stopped_for_good(applied);
+  ASSERT_TRUE(stopped_at.has_value()) << "the fake Go1 was never stopped";
+  EXPECT_LE(std::chrono::duration_cast<milliseconds>(*stopped_at - link.last_command()).count(),
+            (kWatchdogTimeout + kSchedulingMargin).count());
+  link.shut_down();
+  std::this_thread::sleep_for(milliseconds(100));
+  EXPECT_EQ(robot.applied_commands().back().command.mode, go1::Mode::kIdle);
 }
 
 }  // namespace
