@@ -12,6 +12,13 @@ std::unique_ptr<LoopController> attention_with(const SimControllerInputs& inputs
   return std::make_unique<AttentionController>(inputs.catalog, std::move(settings));
 }
 
+// Algorithm 1 with the zero-likelihood guard on.
+rt::FilterOptions guarded() {
+  rt::FilterOptions options;
+  options.zero_likelihood_guard = true;
+  return options;
+}
+
 // Our options: the zero-likelihood guard, and the noise-aware filter on the catalog's
 // position-noise model (rt::FilterMode::kRobust, specs/go1_treat.oasis's camera), with beliefs
 // within 0.05 of each other counted as tied (the current choice kept). Why the tie band: the
@@ -19,8 +26,7 @@ std::unique_ptr<LoopController> attention_with(const SimControllerInputs& inputs
 // region moves a 50/50 belief by 1e-5 and, with the default band of 1e-12, flips the choice on
 // no real evidence (docs/RESULTS.md).
 rt::FilterOptions ours() {
-  rt::FilterOptions options;
-  options.zero_likelihood_guard = true;
+  rt::FilterOptions options = guarded();
   options.mode = rt::FilterMode::kRobust;
   options.tie_tolerance = 0.05;
   return options;
@@ -38,20 +44,11 @@ const std::vector<SimControllerKind>& sim_controller_kinds() {
        false, [](const SimControllerInputs& inputs) { return attention_with(inputs, {}); }},
       {"guard",
        "OAS with the zero-likelihood guard on (keep the prediction), Algorithm 1 otherwise", false,
-       [](const SimControllerInputs& inputs) {
-         rt::FilterOptions guard;
-         guard.zero_likelihood_guard = true;
-         return attention_with(inputs, guard);
-       }},
+       [](const SimControllerInputs& inputs) { return attention_with(inputs, guarded()); }},
       {"no-attention",
        "OAS with the guard on the no-attention catalog (every policy over the full state: "
        "oasisc compile --no-attention)",
-       true,
-       [](const SimControllerInputs& inputs) {
-         rt::FilterOptions guard;
-         guard.zero_likelihood_guard = true;
-         return attention_with(inputs, guard);
-       }},
+       true, [](const SimControllerInputs& inputs) { return attention_with(inputs, guarded()); }},
       {"ours",
        "OAS with the zero-likelihood guard on (keep the prediction) and the noise-aware filter "
        "(the catalog's sigma(d)), ties within 0.05 kept",

@@ -5,26 +5,16 @@
 #include <map>
 
 #include "settings/schema.hpp"
+#include "settings/schema_flattener.hpp"
 
 namespace oasis::hw::settings {
 
 namespace detail {
 namespace {
 
-class Flattener {
+// The settings' entries beyond plain values: colour bands and the action table.
+class Flattener : public SchemaFlattener {
  public:
-  template <class Body>
-  void section(std::string_view key, std::string_view, Body&& body) {
-    prefix_.push_back(std::string(key));
-    body();
-    prefix_.pop_back();
-  }
-
-  template <class T, class Codec>
-  void value(std::string_view key, const T& field, const Codec& codec, std::string_view) {
-    add(path(key), codec.format(field));
-  }
-
   void bands(std::string_view key, const std::vector<HsvBand>& bands, std::string_view) {
     std::string text;
     for (const HsvBand& band : bands)
@@ -43,16 +33,6 @@ class Flattener {
       add(at + "yaw_rate", format_real(entry.velocity.yaw_rate));
     }
   }
-
-  std::vector<std::pair<std::string, std::string>> pairs;
-
- private:
-  std::string path(std::string_view key) const { return dotted_key(prefix_, key); }
-  void add(std::string key, std::string text) {
-    pairs.emplace_back(std::move(key), std::move(text));
-  }
-
-  std::vector<std::string> prefix_;
 };
 
 std::vector<std::pair<std::string, std::string>> flatten(const Go1Settings& settings) {

@@ -1,9 +1,10 @@
-// load_scenario(), parse_scenario(), scenario_to_yaml(), differing_keys(): the schema reader
-// and writer of hw/settings walk scenario_schema.hpp.
+// load_scenario(), parse_scenario(), scenario_to_yaml(), differing_keys(): the schema reader,
+// writer and flattener of hw/settings walk scenario_schema.hpp.
 
 #include <map>
 #include <utility>
 
+#include "settings/schema_flattener.hpp"
 #include "settings/schema_reader.hpp"
 #include "settings/schema_writer.hpp"
 #include "sim/scenario_schema.hpp"
@@ -28,27 +29,6 @@ void check_order(double low, double high, std::string low_key, std::string high_
                       settings::detail::format_real(low) + " is above " + high_key + " (" +
                           settings::detail::format_real(high) + ")"});
 }
-
-// (key path, value text) pairs; a codec writes the shortest text that reads back to the same
-// value, so two values are equal exactly when their texts are.
-class Flattener {
- public:
-  template <class Body>
-  void section(std::string_view key, std::string_view, Body&& body) {
-    prefix_.push_back(std::string(key));
-    body();
-    prefix_.pop_back();
-  }
-  template <class T, class Codec>
-  void value(std::string_view key, const T& field, const Codec& codec, std::string_view) {
-    pairs.emplace_back(settings::detail::dotted_key(prefix_, key), codec.format(field));
-  }
-
-  std::vector<std::pair<std::string, std::string>> pairs;
-
- private:
-  std::vector<std::string> prefix_;
-};
 
 }  // namespace
 
@@ -114,7 +94,7 @@ std::string scenario_to_yaml(const HallwayScenario& scenario) {
 }
 
 std::vector<std::string> differing_keys(const HallwayScenario& a, const HallwayScenario& b) {
-  detail::Flattener flat_a, flat_b;
+  settings::detail::SchemaFlattener flat_a, flat_b;
   detail::describe(flat_a, a);
   detail::describe(flat_b, b);
   std::vector<std::string> keys;

@@ -8,6 +8,7 @@
 #include <sstream>
 #include <string>
 #include <utility>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -46,6 +47,26 @@ inline model::ModelIR check_spec_text_ir(const std::string& text) {
   auto ir = spec::check_spec_text(sources.add("test.oasis", text), diagnostics);
   EXPECT_TRUE(ir) << messages.str();
   return ir ? std::move(*ir) : model::ModelIR{};
+}
+
+// The errors a spec's text must produce, each as "LINE:COL: MESSAGE" in order; fails the
+// current test if the text checks.
+inline std::vector<std::string> spec_errors(const std::string& source) {
+  SourceManager sources;
+  std::ostringstream out;
+  DiagnosticEngine diagnostics(sources, out, 50);
+  const auto ir = spec::check_spec_text(sources.add("check.oasis", source), diagnostics);
+  EXPECT_FALSE(ir) << "expected errors in:\n" << source;
+  std::vector<std::string> errors;
+  std::istringstream lines(out.str());
+  const std::string prefix = "check.oasis:";
+  for (std::string line; std::getline(lines, line);) {
+    const std::size_t error = line.find(": error: ");
+    if (line.rfind(prefix, 0) != 0 || error == std::string::npos) continue;
+    errors.push_back(line.substr(prefix.size(), error - prefix.size()) + ": " +
+                     line.substr(error + 9));
+  }
+  return errors;
 }
 
 inline model::ModelIR load_spec_ir(const std::string& path) {

@@ -52,23 +52,8 @@ catalog {
 }
 )";
 
-// The errors `source` produces, each as "LINE:COL: MESSAGE", in order.
 std::vector<std::string> errors_of(const std::string& source) {
-  SourceManager sources;
-  std::ostringstream out;
-  DiagnosticEngine diagnostics(sources, out, 50);
-  const auto ir = spec::check_spec_text(sources.add("check.oasis", source), diagnostics);
-  EXPECT_FALSE(ir) << "expected errors in:\n" << source;
-  std::vector<std::string> errors;
-  std::istringstream lines(out.str());
-  const std::string prefix = "check.oasis:";
-  for (std::string line; std::getline(lines, line);) {
-    const std::size_t error = line.find(": error: ");
-    if (line.rfind(prefix, 0) != 0 || error == std::string::npos) continue;
-    errors.push_back(line.substr(prefix.size(), error - prefix.size()) + ": " +
-                     line.substr(error + 9));
-  }
-  return errors;
+  return test::spec_errors(source);
 }
 
 // A two-state explicit model whose catalog ends with `observation` (one or more lines).

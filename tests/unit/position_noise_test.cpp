@@ -41,19 +41,7 @@ std::string continuous_spec(const std::string& observation) {
 }
 
 std::vector<std::string> errors_of(const std::string& source) {
-  SourceManager sources;
-  std::ostringstream out;
-  DiagnosticEngine diagnostics(sources, out, 50);
-  const auto ir = spec::check_spec_text(sources.add("check.oasis", source), diagnostics);
-  EXPECT_FALSE(ir) << "expected errors in:\n" << source;
-  std::vector<std::string> errors;
-  std::istringstream lines(out.str());
-  for (std::string line; std::getline(lines, line);) {
-    const std::size_t error = line.find(": error: ");
-    if (line.rfind("check.oasis:", 0) != 0 || error == std::string::npos) continue;
-    errors.push_back(line.substr(12, error - 12) + ": " + line.substr(error + 9));
-  }
-  return errors;
+  return test::spec_errors(source);
 }
 
 TEST(PositionNoiseSyntax, ObjectsBecomeTheModel) {

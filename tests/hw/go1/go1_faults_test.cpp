@@ -4,8 +4,7 @@
 // within the watchdog's timeout plus the faults' own delays, moves no further than a stale
 // packet can carry it, and ends standing.
 //
-// Timing as in go1_link_test.cpp: 200 Hz sender, 200 ms watchdog, and a scheduling margin for a
-// late tick on a loaded 2-core machine (also under ASan).
+// Timing as in go1_link_test.cpp (loopback_link.hpp).
 
 #include <cmath>
 #include <string>
@@ -15,17 +14,14 @@
 
 #include "go1/fake_go1.hpp"
 #include "go1/sender.hpp"
+#include "loopback_link.hpp"
 
 namespace oasis::hw::go1 {
 namespace {
 
-using Clock = std::chrono::steady_clock;
-using std::chrono::milliseconds;
+using namespace test;  // loopback_link.hpp: the timing and the loopback sender
 
-constexpr milliseconds kWatchdogTimeout{200};
-constexpr milliseconds kSchedulingMargin{50};
-constexpr milliseconds kStopHold{100};  // 20 ticks of stop: 0.5^20 ~ 1e-6 all lost at 50%
-constexpr milliseconds kTick{5};
+constexpr milliseconds kTick{5};  // kStopHold is 20 ticks of stop: 0.5^20 ~ 1e-6 all lost at 50%
 
 struct Fault {
   std::string name;
@@ -54,13 +50,7 @@ class Go1Faults : public testing::TestWithParam<Fault> {};
 TEST_P(Go1Faults, TheRobotHaltsWhenTheControllerStallsAndEndsStanding) {
   const Fault& fault = GetParam();
   FakeGo1 robot(fault.options);
-  SenderOptions options;
-  options.robot = robot.endpoint();
-  options.local = Endpoint{"127.0.0.1", 0};
-  options.rate_hz = 200.0;
-  options.stop_hold = kStopHold;
-  options.shutdown_stand_hold = milliseconds(50);
-  options.obey_stop_signal = false;
+  SenderOptions options = loopback_options(robot.endpoint(), kStopHold, milliseconds(50));
   options.watchdog_timeout = kWatchdogTimeout;
   Clock::time_point last_fresh;
   {

@@ -15,30 +15,12 @@
 #include "go1/link_error.hpp"
 #include "go1/sender.hpp"
 #include "go1/stop_signal.hpp"
+#include "loopback_link.hpp"
 
 namespace oasis::hw::go1 {
 namespace {
 
-using Clock = std::chrono::steady_clock;
-using std::chrono::milliseconds;
-
-constexpr milliseconds kWatchdogTimeout{200};
-constexpr milliseconds kSchedulingMargin{50};
-constexpr milliseconds kStopHold{100};
-
-// A sender bound on loopback at 200 Hz that leaves process signals to the test, with the
-// given holds of stop and of the final stand.
-SenderOptions loopback_options(const Endpoint& robot, milliseconds stop_hold,
-                               milliseconds stand_hold) {
-  SenderOptions options;
-  options.robot = robot;
-  options.local = Endpoint{"127.0.0.1", 0};
-  options.rate_hz = 200.0;
-  options.stop_hold = stop_hold;
-  options.shutdown_stand_hold = stand_hold;
-  options.obey_stop_signal = false;
-  return options;
-}
+using namespace test;  // loopback_link.hpp: the timing and the loopback sender
 
 SenderOptions options_for(const FakeGo1& robot) {
   SenderOptions options = loopback_options(robot.endpoint(), kStopHold, milliseconds(50));
