@@ -1,5 +1,6 @@
 // `oasisc compile SPEC -o DIR`: the catalog of a spec, as a directory of files that changes
-// as one unit (support/staged_directory.hpp).
+// as one unit (support/staged_directory.hpp). `-o -` writes a catalog of one file (one
+// format, one context for dot and svg) to standard output instead, and reports on stderr.
 
 #include <chrono>
 #include <cstdio>
@@ -47,10 +48,13 @@ struct CompileOptions {
   CommonOptions common;
 };
 
-// The files of one compile, written into the staging directory, named relative to it.
+// The files of one compile, written into the staging directory, named relative to it, or
+// the one file of a compile to standard output (an empty directory).
 class OutputSet {
  public:
   explicit OutputSet(std::string directory) : directory_(std::move(directory)) {}
+
+  [[nodiscard]] bool to_standard_output() const { return directory_.empty(); }
 
   bool write(const std::string& name, const std::string& bytes, std::string& error) {
     return write_with(
@@ -59,8 +63,14 @@ class OutputSet {
   // `fill` appends the file's text piece by piece (large files never exist whole in memory).
   bool write_with(const std::string& name, const std::function<void(AtomicFile&)>& fill,
                   std::string& error) {
+    if (to_standard_output() && !names_.empty()) {
+      // Checked before anything is written (one_file_error), so this is a bug guard.
+      error = "-o - writes one file, and this compile makes more than " + *names_.begin();
+      return false;
+    }
     AtomicFile file;
-    if (!file.open((fs::path(directory_) / name).string(), error)) return false;
+    if (!file.open(to_standard_output() ? "-" : (fs::path(directory_) / name).string(), error))
+      return false;
     fill(file);
     if (!file.commit(error)) return false;
     names_.insert(name);
@@ -75,6 +85,21 @@ class OutputSet {
 
 bool wants(const CompileOptions& options, const char* format) {
   return std::find(options.formats.begin(), options.formats.end(), format) != options.formats.end();
+}
+
+// Why `-o -` cannot take this compile's files, or "" when they are one file: standard output
+// holds one file, and a second one would follow half a catalog already written.
+std::string one_file_error(const CompileOptions& options, std::size_t contexts) {
+  if (options.formats.size() != 1) {
+    return "-o - writes one file to standard output: choose one --format (bin, json, or dot or "
+           "svg for a single context)";
+  }
+  if (wants(options, "cpp")) return "-o - cannot take --format cpp, which writes two files";
+  if ((wants(options, "dot") || wants(options, "svg")) && contexts != 1) {
+    return "-o - writes one file to standard output, and --format " + options.formats.front() +
+           " writes one per context (" + std::to_string(contexts) + " here)";
+  }
+  return "";
 }
 
 // The binary file from `data`; the C++ tables from `linked`, which is `data` for discrete
@@ -104,6 +129,9 @@ bool write_common(const CompileOptions& options, const pipeline::CatalogData& da
 
 bool write_discrete(const CompileOptions& options, pipeline::CatalogData& data, OutputSet& out,
                     std::string& error) {
+  if (out.to_standard_output() &&
+      !(error = one_file_error(options, data.abstractions.size())).empty())
+    return false;
   if (!write_common(options, data, data, out, error)) return false;
   if (wants(options, "json") &&
       !out.write(data.name + ".json", codegen::catalog_json(data).dump(2) + "\n", error))
@@ -118,6 +146,9 @@ bool write_discrete(const CompileOptions& options, pipeline::CatalogData& data, 
 
 bool write_continuous(const CompileOptions& options, const pipeline::ContinuousCatalog& catalog,
                       OutputSet& out, std::string& error) {
+  if (out.to_standard_output() &&
+      !(error = one_file_error(options, catalog.abstractions.size())).empty())
+    return false;
   pipeline::CatalogData data = pipeline::continuous_catalog_data(catalog, options.with_transitions);
   pipeline::CatalogData linked = options.with_transitions && wants(options, "cpp")
                                      ? pipeline::continuous_catalog_data(catalog, false)
@@ -139,20 +170,22 @@ bool write_continuous(const CompileOptions& options, const pipeline::ContinuousC
   return true;
 }
 
-void print_continuous_summary(const pipeline::ContinuousCatalog& catalog) {
+// On `stream`: stdout, or stderr when the catalog itself goes to standard output.
+void print_continuous_summary(const pipeline::ContinuousCatalog& catalog, std::FILE* stream) {
   for (const pipeline::ContinuousAbstraction& a : catalog.abstractions) {
     std::string attends;
     for (const std::string& name : a.axis_names)
       attends += (attends.empty() ? "" : ", ") + name;
     const double seconds =
         a.seconds.grid + a.seconds.finite_mdp + a.seconds.bisimulation + a.seconds.policy;
-    std::printf("context %s: attends to %s; %zu cells, %u blocks, epsilon %.4g%s (%.2f s)\n",
-                a.context.c_str(), attends.c_str(), a.num_cells(), a.num_blocks,
-                pipeline::bound_as_double(a.epsilon), a.exact() ? " (exact)" : "", seconds);
+    std::fprintf(stream,
+                 "context %s: attends to %s; %zu cells, %u blocks, epsilon %.4g%s (%.2f s)\n",
+                 a.context.c_str(), attends.c_str(), a.num_cells(), a.num_blocks,
+                 pipeline::bound_as_double(a.epsilon), a.exact() ? " (exact)" : "", seconds);
     if (!a.met) {
-      std::printf(
-          "  note: the cell budget (--max-cells) stopped the refinement above the "
-          "target epsilon\n");
+      std::fprintf(stream,
+                   "  note: the cell budget (--max-cells) stopped the refinement above the "
+                   "target epsilon\n");
     }
   }
 }
@@ -203,13 +236,19 @@ int run_compile(CompileOptions options) {
   }
   const std::uint64_t hash = pipeline::spec_hash_of_file(options.spec);
   if (options.output.empty()) options.output = fs::path(options.spec).stem().string();
+  const bool to_standard_output = options.output == "-";
+  // Refused before the build when the formats alone decide it (the context count may not).
+  if (to_standard_output && !one_file_error(options, 1).empty()) {
+    std::cerr << "oasisc: error: " << one_file_error(options, 1) << '\n';
+    return 2;
+  }
   StagedDirectory directory;
   std::string error;
-  if (!directory.open(options.output, error)) {
+  if (!to_standard_output && !directory.open(options.output, error)) {
     std::cerr << options.output << ": error: " << error << '\n';
     return 1;
   }
-  OutputSet out(directory.staging_path());
+  OutputSet out(to_standard_output ? std::string() : directory.staging_path());
   bool written = false;
   if (continuous) {
     pipeline::ContinuousCatalogOptions build;
@@ -235,7 +274,7 @@ int run_compile(CompileOptions options) {
       std::cerr << options.spec << ": error: " << error << '\n';
       return 1;
     }
-    print_continuous_summary(*catalog);
+    print_continuous_summary(*catalog, to_standard_output ? stderr : stdout);
     written = write_continuous(options, *catalog, out, error);
   } else {
     pipeline::BuildOptions build;
@@ -248,10 +287,12 @@ int run_compile(CompileOptions options) {
     }
     written = write_discrete(options, *catalog, out, error);
   }
-  if (!written || !directory.commit(marker_text(options, hash, out), error)) {
-    std::cerr << options.output << ": error: " << error << '\n';
+  if (!written ||
+      (!to_standard_output && !directory.commit(marker_text(options, hash, out), error))) {
+    std::cerr << (to_standard_output ? "oasisc" : options.output) << ": error: " << error << '\n';
     return 1;
   }
+  if (to_standard_output) return 0;
   for (const std::string& name : out.names())
     std::cout << "wrote " << (fs::path(options.output) / name).string() << '\n';
   return 0;
@@ -275,6 +316,8 @@ CommandRunner add_compile_command(CLI::App& app) {
       "DIR (default: the spec's name, e.g. ./discrete_tracking) is written as one unit: the\n"
       "whole new set of files replaces the whole old one, also if compile is killed. DIR\n"
       "must be new, empty, or written by an earlier compile (marked by .oasisc-output).\n"
+      "-o - writes a catalog of one file to standard output instead: one --format (bin,\n"
+      "json, or dot/svg for a spec with one context); the report goes to stderr.\n"
       "  NAME.bin           the binary catalog the runtime loads (rt::LoadedCatalog)\n"
       "  NAME.json          the same for people and tools (continuous: docs/geometry.md)\n"
       "  NAME.CONTEXT.dot   each explicit abstraction for Graphviz (bold: the policy)\n"
@@ -296,7 +339,8 @@ CommandRunner add_compile_command(CLI::App& app) {
   command->add_option("spec", options->spec, "Spec (.oasis) or model (.aut, .tra) file")
       ->required();
   command->add_option("-o,--output", options->output,
-                      "Output directory (default: the spec's file name without extension)");
+                      "Output directory (default: the spec's file name without extension); "
+                      "'-': the one file of a single --format on standard output");
   command
       ->add_option("-f,--format", options->formats,
                    "Formats: bin, json, dot, svg, cpp (default: bin,json,dot or bin,json,svg)")

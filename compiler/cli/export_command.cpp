@@ -36,6 +36,11 @@ std::optional<std::size_t> choose_context(const model::ExplicitModel& model,
 }
 
 int run_export(const ExportOptions& options) {
+  if (options.format == "prism" && options.output == "-") {
+    std::cerr << "oasisc: error: --format prism writes several files (.tra, .lab, .srew, ...): "
+                 "give their base name with -o; '-o -' (standard output) is for --format aut\n";
+    return 2;
+  }
   SourceManager sources;
   DiagnosticEngine diagnostics(sources, std::cerr, options.common.max_errors);
   auto loaded =
@@ -86,7 +91,8 @@ CommandRunner add_export_command(CLI::App& app) {
       ->check(CLI::IsMember({"aut", "prism"}));
   command
       ->add_option("-o,--output", options->output,
-                   "Output file (aut) or base name (prism; '.tra' may be given)")
+                   "Output file (aut; '-' for standard output) or base name (prism; '.tra' "
+                   "may be given)")
       ->required();
   add_common_options(*command, options->common);
   return [options] { return run_export(*options); };

@@ -135,8 +135,10 @@ int write_output(const LoadedModel& loaded,
 }
 
 int run_quotient(const QuotientOptions& options) {
-  if (options.format == "aut" && (options.output.empty() || options.output == "-")) {
-    std::cerr << "oasisc: error: --format aut writes files: give one with -o FILE\n";
+  // A quotient .aut can be as large as the model, so standard output must be asked for.
+  if (options.format == "aut" && options.output.empty()) {
+    std::cerr << "oasisc: error: --format aut writes files: give one with -o FILE (or -o - "
+                 "for standard output)\n";
     return 2;
   }
   SourceManager sources;
@@ -155,6 +157,13 @@ int run_quotient(const QuotientOptions& options) {
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   const auto selected = select_contexts(*loaded->model, options);
   if (!selected) return 1;
+  if (options.format == "aut" && options.output == "-" && selected->size() > 1) {
+    std::cerr << "oasisc: error: --format aut writes one file per context and the model has "
+              << selected->size()
+              << ": choose one with --context to write it to standard "
+                 "output, or give -o FILE\n";
+    return 2;
+  }
   const auto results = run_contexts(*loaded->model, *selected, options, load_options.progress);
   return write_output(*loaded, results, options, load_seconds);
 }
@@ -186,7 +195,8 @@ CommandRunner add_quotient_command(CLI::App& app) {
   command->add_option("-f,--format", options->format, "Output: text, json, aut or dot")
       ->capture_default_str()
       ->check(CLI::IsMember({"text", "json", "aut", "dot"}));
-  command->add_option("-o,--output", options->output, "Output file (default: standard output)");
+  command->add_option("-o,--output", options->output,
+                      "Output file; '-' or none: standard output (aut: only with -o -)");
   command->add_flag("--partition", options->partition, "Include the blocks in the JSON output");
   command
       ->add_option("--epsilon", options->epsilon,

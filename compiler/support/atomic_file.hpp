@@ -1,15 +1,27 @@
 #pragma once
-// An output file that appears whole or not at all. Bytes go to a fresh temporary file in the
+// An output file that appears whole or not at all. Bytes go to a temporary file in the
 // destination's directory (same file system, so the final rename is atomic); commit() flushes,
 // fsyncs and renames it over the destination. Destroying an uncommitted AtomicFile, or any
 // write error, removes the temporary file: a failed run never leaves half a model behind.
 //
+// The temporary file is anonymous where the kernel allows it (O_TMPFILE): it gets a name only
+// at commit, when it is complete (the destination's own name if that is free, else a hidden
+// sibling renamed over it at once), so a writer killed by SIGKILL leaves nothing behind but,
+// at worst, in that instant, one complete sibling. Elsewhere the temporary file is a hidden
+// sibling `.NAME.tmp.XXXXXXXXXX` from the start. Both hold an flock while they live; open()
+// deletes siblings of the same destination whose flock is free (left by killed writers).
+//
 // Writes are buffered in one large block and numbers are formatted with std::to_chars
 // straight into it, so writers of 10^7-line files pay no stream or allocation per number.
 //
-// A destination that is a device, FIFO or socket (/dev/null, /dev/stdout, a pipe) is written
-// directly: there is nothing to replace atomically, and renaming over it would replace the
-// device itself with a regular file (as root, /dev/null for the whole machine).
+// Destinations that are not plain files are handled as a plain open() would, never replaced:
+//   - a symbolic link: the file it finally names is replaced, in that file's own directory, and
+//     the link stays a link (a dangling link's missing file is created);
+//   - a device, FIFO or socket (/dev/null, /dev/full, a named pipe) is written directly:
+//     renaming over it would replace the device itself (as root, /dev/null for the machine);
+//   - "-", /dev/stdout, /dev/stderr, /dev/fd/N and /proc/self/fd/N write to that already open
+//     descriptor (a duplicate of it), after whatever std::cout and stdio hold for it.
+// A replaced file keeps its permission bits.
 //
 // Errors are reported as lower-case reason strings; the only exception that can escape is
 // std::bad_alloc from open() (the buffer) or from building an error message.
@@ -69,8 +81,14 @@ class AtomicFile {
   // False once a write has failed; the reason is in error().
   [[nodiscard]] bool good() const { return error_.empty(); }
   [[nodiscard]] const std::string& error() const { return error_; }
+  // The path given to open().
   [[nodiscard]] const std::string& path() const { return path_; }
+  // The file that is replaced or written: path() with symbolic links followed.
+  [[nodiscard]] const std::string& destination() const { return destination_; }
+  // The temporary file's name; empty while it is anonymous and when writing directly.
   [[nodiscard]] const std::string& temporary_path() const { return temporary_path_; }
+  // True when the bytes go straight to a device, FIFO, socket or open descriptor.
+  [[nodiscard]] bool writes_directly() const { return direct_; }
 
  private:
   static constexpr std::size_t kBufferSize = std::size_t{1} << 20;
@@ -81,12 +99,19 @@ class AtomicFile {
   void write_all(const char* data, std::size_t size);
   void fail(std::string reason);
   void close_descriptor();
+  void start_buffer();
   bool open_direct(const std::string& path, std::string& error);
-  const std::string& target() const { return direct_ ? path_ : temporary_path_; }
+  bool open_duplicate(int descriptor, std::string& error);
+  bool open_temporary(std::string& error);
+  bool name_temporary(std::string& error);
+  std::string target() const;
 
   std::string path_;
+  std::string destination_;
   std::string temporary_path_;
-  bool direct_ = false;  // writing straight to a device, FIFO or socket (no temporary)
+  bool direct_ = false;       // writing straight to a device, FIFO, socket or descriptor
+  bool anonymous_ = false;    // the temporary file has no name yet (O_TMPFILE)
+  bool flush_stdio_ = false;  // the descriptor is stdout or stderr: flush theirs first
   int fd_ = -1;
   std::unique_ptr<char[]> buffer_;
   std::size_t capacity_ = 0;  // 0 until open(), so appends before open() write nothing

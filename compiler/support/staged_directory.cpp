@@ -18,6 +18,9 @@ namespace {
 
 namespace fs = std::filesystem;
 
+// The kernel's own limit on symbolic links followed in one lookup (ELOOP past it).
+constexpr int kMaxLinksFollowed = 40;
+
 std::string reason_of(int code) {
   std::string text = std::strerror(code);
   if (!text.empty() && text[0] >= 'A' && text[0] <= 'Z') text[0] = static_cast<char>(text[0] + 32);
@@ -81,6 +84,17 @@ bool StagedDirectory::open(const std::string& target, std::string& error) {
   discard();
   std::error_code ec;
   fs::path resolved = fs::weakly_canonical(fs::absolute(target, ec), ec);
+  // weakly_canonical stops at a dangling link (its target does not exist yet): the output
+  // goes where the link points, as for a plain mkdir through it, and the link stays.
+  std::error_code missing;  // a path that does not exist is no link: the loop ends
+  for (int followed = 0; !ec && fs::is_symlink(fs::symlink_status(resolved, missing)); ++followed) {
+    if (followed == kMaxLinksFollowed) {
+      error = "'" + target + "': " + reason_of(ELOOP);
+      return false;
+    }
+    const fs::path link = fs::read_symlink(resolved, ec);
+    resolved = fs::weakly_canonical(resolved.parent_path() / link, ec);
+  }
   if (ec || resolved.filename().empty() || resolved == resolved.root_path()) {
     error = "'" + target + "' cannot be an output directory";
     return false;

@@ -386,6 +386,23 @@ class Reader {
   std::vector<Diagnostic> diagnostics_;
 };
 
+// The 0-based line of a document marker ("---" at the start of a line) that follows content,
+// i.e. starts a second document; nothing if there is none. Comments and blank lines are not
+// content, so a file may open with "---".
+inline std::optional<std::size_t> second_document_line(std::string_view yaml_text) {
+  const std::vector<std::string> lines = split_lines(yaml_text);
+  bool content = false;
+  for (std::size_t k = 0; k < lines.size(); ++k) {
+    const std::string& line = lines[k];
+    const bool marker = line.rfind("---", 0) == 0 &&
+                        (line.size() == 3 || line[3] == ' ' || line[3] == '\t' || line[3] == '\r');
+    if (marker && content) return k;
+    const std::size_t first = line.find_first_not_of(" \t\r");
+    if (!marker && first != std::string::npos && line[first] != '#') content = true;
+  }
+  return std::nullopt;
+}
+
 // Parses `yaml_text` into `values` (which start as the defaults) through the schema.
 // `cross_check(values)` returns the CrossProblems between keys; it runs only when every key is
 // valid on its own, since a failed key's default would only add confusing follow-up errors.
@@ -394,27 +411,31 @@ template <class Values, class Describe, class CrossCheck>
 void parse_with_schema(std::string_view yaml_text, std::string_view file_name, Values& values,
                        Describe&& describe, CrossCheck&& cross_check, std::string_view sections) {
   const std::string file(file_name);
-  std::vector<YAML::Node> documents;
+  // Not YAML::LoadAll: Debian 12's yaml-cpp 0.7.0 loops forever, allocating, on a stray comma
+  // (upstream jbeder/yaml-cpp#1040; found by tests/fuzz/settings_fuzz.cpp). YAML::Load reads the
+  // first document, and a second one is found by its "---" line.
+  if (const auto second = second_document_line(yaml_text))
+    throw SettingsError(file, {{static_cast<int>(*second) + 1, 1, "",
+                                "a second YAML document; the settings are one mapping",
+                                split_lines(yaml_text)[*second]}});
+  YAML::Node document;
   try {
-    documents = YAML::LoadAll(std::string(yaml_text));
+    document = YAML::Load(std::string(yaml_text));
   } catch (const YAML::Exception& e) {
     throw SettingsError(file, {at_mark(e.mark, split_lines(yaml_text), "invalid YAML: " + e.msg)});
   }
-  if (documents.empty())
+  if (!document.IsDefined() || document.IsNull())
     throw SettingsError(file, {{0,
                                 0,
                                 "",
                                 "the file holds no settings; expected a mapping of sections (" +
                                     std::string(sections) + "); write {} to keep every default",
                                 {}}});
-  if (documents.size() > 1)
-    throw SettingsError(file, {at_mark(documents[1].Mark(), split_lines(yaml_text),
-                                       "a second YAML document; the settings are one mapping")});
 
   const Values defaults = values;
   Reader reader(yaml_text, schema_paths([&](auto& lister) { describe(lister, defaults); }));
   reader.read(
-      documents[0], [&](auto& visitor) { describe(visitor, values); }, sections);
+      document, [&](auto& visitor) { describe(visitor, values); }, sections);
   if (reader.diagnostics().empty())
     for (const CrossProblem& problem : cross_check(values))
       reader.report(problem);

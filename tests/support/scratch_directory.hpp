@@ -30,9 +30,14 @@ class ScratchDirectory {
   [[nodiscard]] const std::filesystem::path& path() const { return path_; }
 
  private:
+  // One path component: a parameterised test's name holds a '/' ("Case/param"), which would
+  // make the scratch directory a subdirectory of one that is never removed.
   static std::string test_name() {
     const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    return info != nullptr ? info->name() : "outside_a_test";
+    std::string name = info != nullptr ? info->name() : "outside_a_test";
+    for (char& c : name)
+      if (c == '/') c = '_';
+    return name;
   }
 
   std::filesystem::path path_;

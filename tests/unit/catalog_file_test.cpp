@@ -10,6 +10,7 @@
 
 #include <gtest/gtest.h>
 
+#include "../support/scratch_directory.hpp"
 #include "../support/spec_models.hpp"
 #include "codegen/binary_catalog.hpp"
 #include "oasis/rt/attention_filter.hpp"
@@ -88,7 +89,8 @@ TEST(CatalogFile, RobustSectionRoundTrips) {
 }
 
 TEST(CatalogFile, FileOnDiskLoads) {
-  const auto path = std::filesystem::temp_directory_path() / "oasis_catalog_file_test.bin";
+  const test::ScratchDirectory scratch("oasis_catalog_file_test");
+  const auto path = scratch.path() / "catalog.bin";
   std::string error;
   ASSERT_TRUE(codegen::write_binary_catalog(paper_catalog(), path.string(), error)) << error;
   const rt::LoadedCatalog loaded = rt::LoadedCatalog::from_file(path.string());

@@ -15,6 +15,7 @@
 #include <unistd.h>
 
 #include "../support/run_oasisc.hpp"
+#include "../support/scratch_directory.hpp"
 #include "oasis/rt/catalog_file.hpp"
 
 namespace {
@@ -29,13 +30,21 @@ std::string spec(const std::string& name) {
   return std::string(OASIS_SOURCE_DIR) + "/specs/" + name;
 }
 
-std::filesystem::path write_temp(const std::string& name, const std::string& text) {
-  const auto path = std::filesystem::temp_directory_path() / ("oasis_cli_test_" + name);
-  std::ofstream(path) << text;
-  return path;
-}
+// Each test's files go in its own scratch directory, removed when the test ends (also when
+// an assertion ends it early).
+class Cli : public ::testing::Test {
+ protected:
+  [[nodiscard]] std::filesystem::path write_temp(const std::string& name,
+                                                 const std::string& text) const {
+    const auto path = scratch_.path() / name;
+    std::ofstream(path) << text;
+    return path;
+  }
 
-TEST(Cli, InfoJsonOnDiscreteTracking) {
+  oasis::test::ScratchDirectory scratch_{"oasis_cli_test"};
+};
+
+TEST_F(Cli, InfoJsonOnDiscreteTracking) {
   const Result result = run("info --json " + spec("discrete_tracking.oasis"));
   ASSERT_EQ(result.status, 0) << result.output;
   const auto json = nlohmann::json::parse(result.output);
@@ -53,14 +62,14 @@ TEST(Cli, InfoJsonOnDiscreteTracking) {
   EXPECT_EQ(json["prior"][1], "1/2");
 }
 
-TEST(Cli, CheckShippedSpecsSucceeds) {
+TEST_F(Cli, CheckShippedSpecsSucceeds) {
   const Result result =
       run("check " + spec("discrete_tracking.oasis") + " " + spec("go1_treat.oasis"));
   EXPECT_EQ(result.status, 0) << result.output;
   EXPECT_NE(result.output.find("discrete_tracking.oasis: ok"), std::string::npos);
 }
 
-TEST(Cli, ContinuousInfoHasNoFiniteStates) {
+TEST_F(Cli, ContinuousInfoHasNoFiniteStates) {
   const Result result = run("info --json " + spec("go1_treat.oasis"));
   ASSERT_EQ(result.status, 0) << result.output;
   const auto json = nlohmann::json::parse(result.output);
@@ -70,7 +79,7 @@ TEST(Cli, ContinuousInfoHasNoFiniteStates) {
   EXPECT_EQ(json["contexts"].size(), 2U);
 }
 
-TEST(Cli, HelpOnEveryCommand) {
+TEST_F(Cli, HelpOnEveryCommand) {
   for (const char* command : {"", "check ", "info "}) {
     const Result result = run(std::string(command) + "--help");
     EXPECT_EQ(result.status, 0) << command;
@@ -78,14 +87,14 @@ TEST(Cli, HelpOnEveryCommand) {
   }
 }
 
-TEST(Cli, BadUsageExitsWithTwo) {
+TEST_F(Cli, BadUsageExitsWithTwo) {
   EXPECT_EQ(run("").status, 2);
   EXPECT_EQ(run("frobnicate").status, 2);
   EXPECT_EQ(run("check").status, 2);  // no files
   EXPECT_EQ(run("check --max-states 0 x.oasis").status, 2);
 }
 
-TEST(Cli, UnreadableFilesAreErrorsNotCrashes) {
+TEST_F(Cli, UnreadableFilesAreErrorsNotCrashes) {
   Result result = run("check /nonexistent/file.oasis");
   EXPECT_EQ(result.status, 1);
   EXPECT_NE(result.output.find("/nonexistent/file.oasis: error: cannot read spec: no such file"),
@@ -101,14 +110,14 @@ TEST(Cli, UnreadableFilesAreErrorsNotCrashes) {
   EXPECT_NE(result.output.find("spec declares no model"), std::string::npos) << result.output;
 }
 
-TEST(Cli, SizeLimitIsAnError) {
+TEST_F(Cli, SizeLimitIsAnError) {
   const Result result = run("check --max-spec-size 100 " + spec("discrete_tracking.oasis"));
   EXPECT_EQ(result.status, 1);
   EXPECT_NE(result.output.find("larger than the limit of 100 bytes"), std::string::npos)
       << result.output;
 }
 
-TEST(Cli, StateLimitIsAnError) {
+TEST_F(Cli, StateLimitIsAnError) {
   const auto path = write_temp("big.oasis",
                                "mdp big { var x : [0 .. 999]; actions up; default self;\n"
                                "  [up] x < 999 -> (x' = x + 1); }\n");
@@ -119,7 +128,7 @@ TEST(Cli, StateLimitIsAnError) {
   std::filesystem::remove(path);
 }
 
-TEST(Cli, ErrorLimitStopsTheFlood) {
+TEST_F(Cli, ErrorLimitStopsTheFlood) {
   std::string text = "mdp m { states a; actions go; a, go -> a;\n";
   for (int i = 0; i < 50; ++i)
     text += "  reward nowhere" + std::to_string(i) + " : 1;\n";
@@ -132,7 +141,7 @@ TEST(Cli, ErrorLimitStopsTheFlood) {
   std::filesystem::remove(path);
 }
 
-TEST(Cli, OneBadFileDoesNotHideTheOthers) {
+TEST_F(Cli, OneBadFileDoesNotHideTheOthers) {
   const auto bad = write_temp("bad.oasis", "mdp m { states a; }\n");
   const Result result = run("check " + bad.string() + " " + spec("discrete_tracking.oasis"));
   EXPECT_EQ(result.status, 1);
@@ -180,9 +189,8 @@ std::uint64_t section_offset(const std::string& bytes, oasis::rt::Section tag,
   return 0;
 }
 
-TEST(Cli, CompileThenVerifyTheCatalog) {
-  const auto dir =
-      std::filesystem::temp_directory_path() / ("oasis_cli_compile_" + std::to_string(::getpid()));
+TEST_F(Cli, CompileThenVerifyTheCatalog) {
+  const auto dir = scratch_.path() / "compiled";
   Result result = run("compile " + spec("discrete_tracking.oasis") + " -o " + dir.string());
   ASSERT_EQ(result.status, 0) << result.output;
   for (const char* file :
@@ -216,7 +224,6 @@ TEST(Cli, CompileThenVerifyTheCatalog) {
   result = run("verify " + spec("discrete_tracking.oasis") + " " + (dir / "swapped.bin").string());
   EXPECT_EQ(result.status, 1) << result.output;
   EXPECT_NE(result.output.find("context object_at_s3: FAILED"), std::string::npos) << result.output;
-  std::filesystem::remove_all(dir);
 }
 
 }  // namespace
@@ -226,9 +233,8 @@ namespace {
 // The compile of a discrete spec runs the shared pipeline with the refinement options of
 // `quotient`: -j gives the same catalog as one thread, and --epsilon (a continuous option)
 // is named as ignored rather than making a rounded catalog that verify would refuse.
-TEST(Cli, DiscreteCompileTakesJobsAndExplainsEpsilon) {
-  const auto base =
-      std::filesystem::temp_directory_path() / ("oasis_cli_jobs_" + std::to_string(::getpid()));
+TEST_F(Cli, DiscreteCompileTakesJobsAndExplainsEpsilon) {
+  const auto& base = scratch_.path();
   const std::string input = spec("discrete_tracking.oasis");
   Result one = run("compile " + input + " --format bin -j 1 -o " + (base / "one").string());
   ASSERT_EQ(one.status, 0) << one.output;
@@ -242,7 +248,6 @@ TEST(Cli, DiscreteCompileTakesJobsAndExplainsEpsilon) {
             read_all(base / "two" / "discrete_tracking.bin"));
   EXPECT_EQ(run("verify " + input + " " + (base / "two" / "discrete_tracking.bin").string()).status,
             0);
-  std::filesystem::remove_all(base);
 }
 
 }  // namespace

@@ -1,6 +1,7 @@
 // `oasisc compile` killed at random points (SIGKILL: no clean-up runs) leaves its output
 // directory holding either the whole old set of files or the whole new set, byte for byte,
-// and nothing else; the next compile removes what the killed ones left beside it.
+// and nothing else; the next compile removes what the killed ones left beside it. The same
+// for one file written with -o (support/atomic_file.hpp): the old or the new file, whole.
 
 #include <chrono>
 #include <csignal>
@@ -12,6 +13,7 @@
 #include <random>
 #include <string>
 #include <thread>
+#include <vector>
 
 #include <fcntl.h>
 #include <gtest/gtest.h>
@@ -64,6 +66,14 @@ std::size_t staging_siblings(const fs::path& parent) {
   return count;
 }
 
+// Every name in `directory` that is not `keep`: what a killed writer could leave behind.
+std::vector<std::string> others(const fs::path& directory, const std::string& keep) {
+  std::vector<std::string> names;
+  for (const auto& entry : fs::directory_iterator(directory))
+    if (entry.path().filename() != keep) names.push_back(entry.path().filename().string());
+  return names;
+}
+
 TEST(CompileKill, TheOutputDirectoryIsAlwaysOneWholeSet) {
   const test::ScratchDirectory scratch("oasis_compile_kill");
   const std::string old_spec = std::string(OASIS_SOURCE_DIR) + "/specs/discrete_tracking.oasis";
@@ -88,6 +98,8 @@ TEST(CompileKill, TheOutputDirectoryIsAlwaysOneWholeSet) {
   for (int trial = 0; trial < 15; ++trial) {
     if (snapshot(out) != old_set) {
       ASSERT_EQ(wait_for(start_compile(old_spec, out)), 0);
+      // A whole compile removes what earlier killed ones left beside the folder.
+      EXPECT_EQ(staging_siblings(scratch.path()), 0U) << "trial " << trial;
     }
     const pid_t pid = start_compile(new_spec, out);
     // Half the kills anywhere, half near the end, where the files are written and swapped.
@@ -102,6 +114,11 @@ TEST(CompileKill, TheOutputDirectoryIsAlwaysOneWholeSet) {
     ASSERT_TRUE(is_old || is_new) << "trial " << trial << " (killed after " << delay
                                   << " s): the folder holds " << now.size()
                                   << " files, neither whole set";
+    // Beside the folder, only the reference sets and killed compiles' staging folders.
+    for (const std::string& name : others(scratch.path(), "out")) {
+      EXPECT_TRUE(name == "old" || name == "new" || name.rfind(".out.oasisc-staging.", 0) == 0)
+          << "trial " << trial << ": " << name;
+    }
     (is_old ? saw_old : saw_new) += 1;
   }
   std::cout << "old set " << saw_old << " times, new set " << saw_new << " times\n";
@@ -109,6 +126,94 @@ TEST(CompileKill, TheOutputDirectoryIsAlwaysOneWholeSet) {
   ASSERT_EQ(wait_for(start_compile(new_spec, out)), 0);
   EXPECT_EQ(snapshot(out), new_set);
   EXPECT_EQ(staging_siblings(scratch.path()), 0U);
+}
+
+// A model large enough that writing its copy takes a while: a chain of `states` states with
+// two actions, one of them a coin flip.
+std::string chain_aut(std::uint32_t states) {
+  std::string text = "des (0," + std::to_string(2 * states) + "," + std::to_string(states) + ")\n";
+  for (std::uint32_t s = 0; s < states; ++s) {
+    const std::string next = std::to_string((s + 1) % states);
+    text += "(" + std::to_string(s) + ",\"go\"," + next + ")\n";
+    text += "(" + std::to_string(s) + ",\"flip|reward(1/3)\"," + next + " 1/3 " +
+            std::to_string(s) + ")\n";
+  }
+  return text;
+}
+
+// Starts `oasisc export MODEL --format aut -o OUT` with stdout and stderr discarded.
+pid_t start_export(const fs::path& model, const fs::path& out) {
+  const pid_t pid = ::fork();
+  if (pid == 0) {
+    const int null = ::open("/dev/null", O_WRONLY);
+    ::dup2(null, 1);
+    ::dup2(null, 2);
+    ::execl(OASISC_PATH, OASISC_PATH, "export", model.c_str(), "--format", "aut", "-o", out.c_str(),
+            "--progress", "never", static_cast<char*>(nullptr));
+    ::_exit(127);
+  }
+  return pid;
+}
+
+std::string bytes_of(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+// One file written with -o, killed at random points: the file is the old one or the new one,
+// whole. The temporary file is anonymous until its last step (O_TMPFILE), so a kill leaves
+// nothing, except in the instant between naming it and renaming it over the old file: then a
+// complete copy may stay, which the next writer of the same file removes.
+TEST(CompileKill, OneOutputFileIsOldOrNewAndNothingStays) {
+  const test::ScratchDirectory scratch("oasis_export_kill");
+  const fs::path folder = scratch.path() / "out";
+  fs::create_directories(folder);
+  const fs::path small = scratch.path() / "small.aut";
+  const fs::path big = scratch.path() / "big.aut";
+  std::ofstream(small, std::ios::binary) << chain_aut(3);
+  std::ofstream(big, std::ios::binary) << chain_aut(300000);
+  const fs::path out = folder / "model.aut";
+
+  ASSERT_EQ(wait_for(start_export(big, out)), 0);
+  const std::string new_bytes = bytes_of(out);
+  const auto begin = std::chrono::steady_clock::now();
+  ASSERT_EQ(wait_for(start_export(small, out)), 0);
+  ASSERT_EQ(wait_for(start_export(big, out)), 0);
+  const double full =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
+  ASSERT_EQ(wait_for(start_export(small, out)), 0);
+  const std::string old_bytes = bytes_of(out);
+  ASSERT_NE(old_bytes, new_bytes);
+
+  const unsigned seed = 20261125;
+  std::cout << "seed " << seed << ", full export " << full << " s\n";
+  std::mt19937 random(seed);
+  int saw_old = 0;
+  int saw_new = 0;
+  for (int trial = 0; trial < 20; ++trial) {
+    if (bytes_of(out) != old_bytes) {
+      ASSERT_EQ(wait_for(start_export(small, out)), 0);
+      EXPECT_EQ(others(folder, "model.aut"), std::vector<std::string>{}) << "trial " << trial;
+    }
+    const pid_t pid = start_export(big, out);
+    const double delay = std::uniform_real_distribution<double>(0.0, 1.1 * full)(random);
+    std::this_thread::sleep_for(std::chrono::duration<double>(delay));
+    ::kill(pid, SIGKILL);
+    wait_for(pid);
+    const std::string now = bytes_of(out);
+    ASSERT_TRUE(now == old_bytes || now == new_bytes)
+        << "trial " << trial << " (killed after " << delay << " s): the file has " << now.size()
+        << " bytes, neither whole file";
+    (now == old_bytes ? saw_old : saw_new) += 1;
+    for (const std::string& name : others(folder, "model.aut")) {
+      EXPECT_EQ(name.rfind(".model.aut.tmp.", 0), 0U) << "trial " << trial << ": " << name;
+      EXPECT_EQ(bytes_of(folder / name), new_bytes) << "trial " << trial << ": " << name;
+    }
+  }
+  std::cout << "old file " << saw_old << " times, new file " << saw_new << " times\n";
+  ASSERT_EQ(wait_for(start_export(small, out)), 0);
+  EXPECT_EQ(bytes_of(out), old_bytes);
+  EXPECT_EQ(others(folder, "model.aut"), std::vector<std::string>{});
 }
 
 }  // namespace

@@ -18,6 +18,7 @@
 #include <unistd.h>
 
 #include "../support/naive_bisimulation.hpp"
+#include "../support/scratch_directory.hpp"
 #include "../support/spec_models.hpp"
 #include "bisim/refinement.hpp"
 #include "model/explorer.hpp"
@@ -373,25 +374,31 @@ CommandOutput run_oasisc(const std::string& arguments) {
   return result;
 }
 
-std::string write_temp(const std::string& name, const std::string& text) {
-  // The pid keeps concurrent runs (default and asan builds) from sharing files.
-  const auto path = std::filesystem::temp_directory_path() /
-                    ("oasis_verifier_test_" + std::to_string(::getpid()) + "_" + name);
-  std::ofstream(path) << text;
-  return path.string();
-}
-
 const std::string kTracking = std::string(OASIS_SOURCE_DIR) + "/specs/discrete_tracking.oasis";
 
-CommandOutput verify_tracking(const std::string& name, const std::string& result_json) {
-  return run_oasisc("verify " + kTracking + " " + write_temp(name, result_json));
-}
+// Each test's files go in its own scratch directory (named after the process, so concurrent
+// default and asan runs never share one), removed when the test ends.
+class VerifyCommand : public ::testing::Test {
+ protected:
+  [[nodiscard]] std::string write_temp(const std::string& name, const std::string& text) const {
+    const auto path = scratch_.path() / name;
+    std::ofstream(path) << text;
+    return path.string();
+  }
+
+  [[nodiscard]] CommandOutput verify_tracking(const std::string& name,
+                                              const std::string& result_json) const {
+    return run_oasisc("verify " + kTracking + " " + write_temp(name, result_json));
+  }
+
+  test::ScratchDirectory scratch_{"oasis_verifier_test"};
+};
 
 bool contains(const CommandOutput& run, const std::string& text) {
   return run.output.find(text) != std::string::npos;
 }
 
-TEST(VerifyCommand, AcceptsTheRightPartitions) {
+TEST_F(VerifyCommand, AcceptsTheRightPartitions) {
   const CommandOutput run = verify_tracking("ok.json", R"({"contexts": [
     {"name": "object_at_s3", "states": 3, "blocks": 2, "partition": [["s1", "s2"], ["s3"]]},
     {"name": "object_at_s1", "partition": [["s1"], ["s2", "s3"]]}]})");
@@ -402,7 +409,7 @@ TEST(VerifyCommand, AcceptsTheRightPartitions) {
       << run.output;
 }
 
-TEST(VerifyCommand, ChecksWhatQuotientWrites) {
+TEST_F(VerifyCommand, ChecksWhatQuotientWrites) {
   const std::string result = write_temp("quotient.json", "");
   const CommandOutput quotient =
       run_oasisc("quotient " + kTracking + " --format json --partition -o " + result);
@@ -412,7 +419,7 @@ TEST(VerifyCommand, ChecksWhatQuotientWrites) {
   EXPECT_TRUE(contains(run, "object_at_s1: bisimulation and coarsest")) << run.output;
 }
 
-TEST(VerifyCommand, ImportedModelsUseStateIndices) {
+TEST_F(VerifyCommand, ImportedModelsUseStateIndices) {
   const std::string aut = write_temp("tracking.aut", "");
   const CommandOutput exported =
       run_oasisc("export " + kTracking + " --context object_at_s3 --format aut -o " + aut);
@@ -433,7 +440,7 @@ TEST(VerifyCommand, ImportedModelsUseStateIndices) {
   EXPECT_TRUE(contains(singletons, "FAILED (blocks could merge)")) << singletons.output;
 }
 
-TEST(VerifyCommand, ReportsAWrongPartition) {
+TEST_F(VerifyCommand, ReportsAWrongPartition) {
   const CommandOutput run = verify_tracking("wrong.json", R"({"contexts": [
     {"name": "object_at_s3", "partition": [["s1"], ["s2", "s3"]]}]})");
   EXPECT_EQ(run.status, 1) << run.output;
@@ -444,7 +451,7 @@ TEST(VerifyCommand, ReportsAWrongPartition) {
   EXPECT_TRUE(contains(run, "context object_at_s1: not in RESULT, not checked")) << run.output;
 }
 
-TEST(VerifyCommand, ReportsABisimulationThatIsNotCoarsest) {
+TEST_F(VerifyCommand, ReportsABisimulationThatIsNotCoarsest) {
   const CommandOutput run = verify_tracking("fine.json", R"({"contexts": [
     {"name": "object_at_s1", "partition": [["s1"], ["s2"], ["s3"]]}]})");
   EXPECT_EQ(run.status, 1) << run.output;
@@ -452,7 +459,7 @@ TEST(VerifyCommand, ReportsABisimulationThatIsNotCoarsest) {
   EXPECT_TRUE(contains(run, "block 1 {s2} and block 2 {s3} are bisimilar")) << run.output;
 }
 
-TEST(VerifyCommand, MalformedResultsAreErrors) {
+TEST_F(VerifyCommand, MalformedResultsAreErrors) {
   struct Case {
     const char* name;
     const char* json;
@@ -503,13 +510,13 @@ TEST(VerifyCommand, MalformedResultsAreErrors) {
   }
 }
 
-TEST(VerifyCommand, MissingResultFile) {
+TEST_F(VerifyCommand, MissingResultFile) {
   const CommandOutput run = run_oasisc("verify " + kTracking + " /nonexistent/result.json");
   EXPECT_EQ(run.status, 1) << run.output;
   EXPECT_TRUE(contains(run, "/nonexistent/result.json: error: cannot open the file")) << run.output;
 }
 
-TEST(VerifyCommand, HelpTeachesWithAnExample) {
+TEST_F(VerifyCommand, HelpTeachesWithAnExample) {
   const CommandOutput run = run_oasisc("verify --help");
   EXPECT_EQ(run.status, 0) << run.output;
   EXPECT_TRUE(contains(run, "oasisc verify specs/discrete_tracking.oasis")) << run.output;

@@ -30,11 +30,30 @@ struct Outcome {
   std::string output;  // standard output and error together
 };
 
+// The process's own folder for the files a test writes, removed with them when the process
+// ends (ctest runs each test case in a process of its own).
+class ScratchFolder {
+ public:
+  ScratchFolder()
+      : path_(fs::temp_directory_path() /
+              ("oasis_go1_program_test_" + std::to_string(::getpid()))) {
+    fs::create_directories(path_);
+  }
+  ~ScratchFolder() {
+    std::error_code ignored;
+    fs::remove_all(path_, ignored);
+  }
+  ScratchFolder(const ScratchFolder&) = delete;
+  ScratchFolder& operator=(const ScratchFolder&) = delete;
+  const fs::path& path() const { return path_; }
+
+ private:
+  fs::path path_;
+};
+
 fs::path scratch(const std::string& name) {
-  const fs::path folder =
-      fs::temp_directory_path() / ("oasis_go1_program_test_" + std::to_string(::getpid()));
-  fs::create_directories(folder);
-  return folder / name;
+  static const ScratchFolder folder;
+  return folder.path() / name;
 }
 
 // Runs oasis-go1 with `arguments`; output goes to a file so a chatty run cannot block.
@@ -212,7 +231,8 @@ TEST(OasisGo1Program, SimWritesTable2JsonPerControllerAndLogsThatScoreReads) {
 TEST(OasisGo1Program, SimRefusesAnUnknownController) {
   const Outcome sim = run({"sim", "--controllers", "oracle,psychic"});
   EXPECT_EQ(sim.status, 1);
-  EXPECT_NE(sim.output.find("no controller \"psychic\"; there are oracle, paper, guard, no-attention, ours"),
+  EXPECT_NE(sim.output.find(
+                "no controller \"psychic\"; there are oracle, paper, guard, no-attention, ours"),
             std::string::npos)
       << sim.output;
 }

@@ -7,6 +7,7 @@
 // Timing as in go1_link_test.cpp (loopback_link.hpp).
 
 #include <cmath>
+#include <ostream>
 #include <string>
 #include <thread>
 
@@ -28,6 +29,9 @@ struct Fault {
   FakeGo1Options options;
   milliseconds loss_allowance;  // consecutive lost halts tolerated (ticks * 5 ms)
 };
+
+// gtest prints the case by its name, not its bytes.
+void PrintTo(const Fault& fault, std::ostream* out) { *out << fault.name; }
 
 FakeGo1Options faulty(double loss, double duplicate, double spike_probability, milliseconds spike) {
   FakeGo1Options options;

@@ -44,7 +44,9 @@ TEST(SettingsErrors, TheFileMustBeOneMapping) {
   EXPECT_ERROR("robot\n", "t.yaml:1:1: error: expected a mapping of sections");
   EXPECT_ERROR("# nothing but a comment\n", "t.yaml: error: the file holds no settings");
   EXPECT_ERROR("", "write {} to keep every default");
-  EXPECT_ERROR("robot: {}\n---\nlimits: {}\n", "t.yaml:3:1: error: a second YAML document");
+  EXPECT_ERROR("robot: {}\n---\nlimits: {}\n", "t.yaml:2:1: error: a second YAML document");
+  EXPECT_ERROR("---\nrobot: 5\n", "t.yaml:2:8: error: robot: expected a mapping");  // one document
+  EXPECT_ERROR(",", "t.yaml: error: the file holds no settings");  // LoadAll looped forever here
   EXPECT_ERROR("robot: 5\n", "t.yaml:1:8: error: robot: expected a mapping, got \"5\"");
 }
 
