@@ -31,7 +31,9 @@ struct Fault {
 };
 
 // gtest prints the case by its name, not its bytes.
-void PrintTo(const Fault& fault, std::ostream* out) { *out << fault.name; }
+void PrintTo(const Fault& fault, std::ostream* out) {
+  *out << fault.name;
+}
 
 FakeGo1Options faulty(double loss, double duplicate, double spike_probability, milliseconds spike) {
   FakeGo1Options options;
