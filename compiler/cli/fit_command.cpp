@@ -418,6 +418,13 @@ int run_depth(const DepthOptions& options) {
   return deliver_fragment(fragment, options.output) ? 0 : 1;
 }
 
+// Every fit's -o: where deliver_fragment() also writes the spec fragment.
+void add_fragment_output(CLI::App& fit, std::string& path) {
+  fit.add_option(
+      "-o,--output", path,
+      "Also write the spec fragment to this file (-: only the standard output it is printed on)");
+}
+
 }  // namespace
 
 CommandRunner add_fit_command(CLI::App& app) {
@@ -457,9 +464,7 @@ CommandRunner add_fit_command(CLI::App& app) {
       ->check(CLI::IsMember({"true", "observed"}));
   sw->add_flag("--paper", switching->paper,
                "Ignore the spec's observation model: Algorithm 1's likelihood");
-  sw->add_option(
-      "-o,--output", switching->output,
-      "Also write the spec fragment to this file (-: only the standard output it is printed on)");
+  add_fragment_output(*sw, switching->output);
   add_common_options(*sw, switching->common);
   sw->footer(
       "Examples:\n"
@@ -484,9 +489,7 @@ CommandRunner add_fit_command(CLI::App& app) {
                  "What the fragment declares: the reward belongs to the true or observed state")
       ->capture_default_str()
       ->check(CLI::IsMember({"true", "observed"}));
-  ns->add_option(
-      "-o,--output", noise->output,
-      "Also write the spec fragment to this file (-: only the standard output it is printed on)");
+  add_fragment_output(*ns, noise->output);
   add_common_options(*ns, noise->common);
 
   auto depth = std::make_shared<DepthOptions>();
@@ -509,9 +512,7 @@ CommandRunner add_fit_command(CLI::App& app) {
                  "The continuous variables the object's position is (comma-separated)")
       ->delimiter(',')
       ->capture_default_str();
-  dn->add_option(
-      "-o,--output", depth->output,
-      "Also write the spec fragment to this file (-: only the standard output it is printed on)");
+  add_fragment_output(*dn, depth->output);
   dn->add_option("--max-errors", depth->max_errors, "Stop after this many errors")
       ->capture_default_str()
       ->check(CLI::Range(std::size_t{1}, std::size_t{100000}));

@@ -6,19 +6,13 @@
 
 #include <gtest/gtest.h>
 
+#include "settings/schema_reader.hpp"
 #include "settings/settings.hpp"
 
 namespace oasis::hw::settings {
 namespace {
 
 using Keys = std::vector<std::string>;
-
-std::string read_text(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
 
 TEST(SettingsShipped, Go1YamlLoadsToTheDefaults) {
   const Go1Settings loaded = load_settings(OASIS_SHIPPED_GO1_YAML);
@@ -27,7 +21,7 @@ TEST(SettingsShipped, Go1YamlLoadsToTheDefaults) {
 
 TEST(SettingsShipped, Go1YamlIsTheDefaultsPrintedWithEveryKey) {
   const std::string expected = settings_to_yaml(default_settings());
-  if (read_text(OASIS_SHIPPED_GO1_YAML) == expected) return;
+  if (settings::detail::read_yaml_file(OASIS_SHIPPED_GO1_YAML) == expected) return;
   const std::string fresh = std::filesystem::absolute("go1.yaml.expected").string();
   std::ofstream(fresh, std::ios::binary) << expected;
   ADD_FAILURE() << OASIS_SHIPPED_GO1_YAML << " is not settings_to_yaml(default_settings()).\n"

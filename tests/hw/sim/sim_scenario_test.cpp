@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include "settings/schema_reader.hpp"
 #include "settings/settings_error.hpp"
 #include "sim/scenario.hpp"
 
@@ -13,13 +14,6 @@ namespace oasis::hw::sim {
 namespace {
 
 using Keys = std::vector<std::string>;
-
-std::string read_text(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
 
 // The first error's text, or "" when the text parses.
 std::string error_of(const std::string& yaml) {
@@ -37,7 +31,7 @@ TEST(SimScenario, HallwayYamlLoadsToTheDefaults) {
 
 TEST(SimScenario, HallwayYamlIsTheDefaultsPrintedWithEveryKey) {
   const std::string expected = scenario_to_yaml(HallwayScenario{});
-  if (read_text(OASIS_SHIPPED_HALLWAY_YAML) == expected) return;
+  if (settings::detail::read_yaml_file(OASIS_SHIPPED_HALLWAY_YAML) == expected) return;
   const std::string fresh = std::filesystem::absolute("hallway.yaml.expected").string();
   std::ofstream(fresh, std::ios::binary) << expected;
   ADD_FAILURE() << OASIS_SHIPPED_HALLWAY_YAML << " is not scenario_to_yaml(HallwayScenario{}).\n"
