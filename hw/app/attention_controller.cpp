@@ -6,6 +6,8 @@
 #include <stdexcept>
 #include <utility>
 
+#include "app/treat_contexts.hpp"
+
 namespace oasis::hw::app {
 namespace {
 
@@ -83,7 +85,20 @@ AttentionController::AttentionController(const rt::CatalogView& catalog,
       filter_(catalog_, settings_.filter, workspace_.data(), workspace_.size()),
       state_(kStateDimension, std::numeric_limits<double>::quiet_NaN()) {
   if (!filter_.ok()) throw std::invalid_argument(filter_error_text(filter_.error()));
+  if (!(settings_.treat_sighting >= 0.0 && settings_.treat_sighting < 1.0))
+    throw std::invalid_argument("treat_sighting must be in [0, 1)");
   domain_of(catalog_, domain_low_, domain_high_);
+  sighting_likelihood_.assign(catalog_.num_abstractions, 0.0);
+}
+
+void AttentionController::weigh_treat_sighting(TreatHolder holder) {
+  if (settings_.treat_sighting == 0.0 || holder == TreatHolder::kNone) return;
+  const std::optional<std::uint32_t> named = context_index(catalog_, holder);
+  if (!named) return;  // a catalog without the Go1 spec's contexts: nothing to weigh
+  for (std::uint32_t i = 0; i < catalog_.num_abstractions; ++i)
+    sighting_likelihood_[i] =
+        i == *named ? settings_.treat_sighting : 1.0 - settings_.treat_sighting;
+  filter_.weigh_context(sighting_likelihood_.data(), sighting_likelihood_.size());
 }
 
 void AttentionController::update_state(const PerceptionResult& seen, const go1::Pose& robot) {
@@ -107,9 +122,13 @@ void AttentionController::update_state(const PerceptionResult& seen, const go1::
 log::StepRecord AttentionController::decide(const PerceptionResult& seen, double time_s,
                                             const go1::Pose& robot) {
   update_state(seen, robot);
+  const double reward = seen.reward_known || !settings_.unknown_reward_when_tag_cut
+                            ? seen.reward
+                            : std::numeric_limits<double>::quiet_NaN();
   const rt::StepStatus status =
       steps_ == 0 ? filter_.start(state_.data(), state_.size())
-                  : filter_.step(state_.data(), state_.size(), seen.reward, last_action_);
+                  : filter_.step(state_.data(), state_.size(), reward, last_action_);
+  weigh_treat_sighting(seen.holder);
 
   log::StepRecord record;
   record.step = steps_++;
@@ -120,7 +139,7 @@ log::StepRecord AttentionController::decide(const PerceptionResult& seen, double
   }
   record.state = state_;
   record.holder = static_cast<int>(seen.holder);
-  record.reward = seen.reward;
+  record.reward = reward;  // as the filter was given it
   record.belief.assign(filter_.beliefs(), filter_.beliefs() + catalog_.num_abstractions);
   record.abstraction = filter_.ml_abstraction();
   record.abstraction_name = catalog_.abstractions[record.abstraction].context;

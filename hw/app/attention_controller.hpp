@@ -34,6 +34,16 @@ struct ControllerSettings {
   std::vector<go1::VelocityCommand> action_velocity;  // indexed by the catalog's action
   bool hold_last_seen = true;
   bool clamp_to_domain = true;
+  // 0: the paper (the tag only decides the reward). In (0, 1): perception naming the treat's
+  // holder is a second measurement of the step, right with this probability: the filter
+  // weighs "human N holds the treat" by it and every other context by 1 - it
+  // (rt::AttentionFilter::weigh_context). A hidden or unseen tag says nothing.
+  double treat_sighting = 0.0;
+  // False: the paper (no tag seen is reward 0). True: when perception says the reward is not
+  // known (PerceptionResult::reward_known: someone in reach whose tag would be out of the
+  // image), the filter is given a NaN reward: robust mode then runs the prediction alone; paper
+  // mode finds no abstraction matching (the guard keeps the prediction, else the prior).
+  bool unknown_reward_when_tag_cut = false;
 };
 
 class AttentionController final : public LoopController {
@@ -54,6 +64,7 @@ class AttentionController final : public LoopController {
 
  private:
   void update_state(const PerceptionResult& seen, const go1::Pose& robot);
+  void weigh_treat_sighting(TreatHolder holder);
 
   const rt::CatalogView& catalog_;
   ControllerSettings settings_;
@@ -62,6 +73,7 @@ class AttentionController final : public LoopController {
   std::vector<double> state_;
   std::vector<double> domain_low_;  // per state variable, over every abstraction's grid
   std::vector<double> domain_high_;
+  std::vector<double> sighting_likelihood_;                   // per abstraction, for weigh_context
   std::array<std::optional<go1::PlanarPoint>, 2> last_seen_;  // odometry frame
   std::uint64_t steps_ = 0;
   std::uint32_t last_action_ = 0;

@@ -24,6 +24,16 @@ Point3 camera_point_from_robot(const CameraMount& mount, const Point3& robot) {
   return {-robot.y, robot.x * s - up * c, robot.x * c + up * s};
 }
 
+bool projects_inside_image(const CameraIntrinsics& intrinsics, const CameraMount& mount,
+                           const Point3& robot, double margin_px) {
+  const Point3 camera = camera_point_from_robot(mount, robot);
+  if (camera.z <= 0.0) return false;  // behind the image plane
+  const double u = intrinsics.fx * camera.x / camera.z + intrinsics.cx;
+  const double v = intrinsics.fy * camera.y / camera.z + intrinsics.cy;
+  return u >= margin_px && u <= intrinsics.width - 1 - margin_px && v >= margin_px &&
+         v <= intrinsics.height - 1 - margin_px;
+}
+
 Point3 back_project(const CameraIntrinsics& intrinsics, const CameraMount& mount, double u,
                     double v, double depth_m) {
   const Point3 camera{(u - intrinsics.cx) / intrinsics.fx * depth_m,

@@ -25,6 +25,11 @@ Point3 robot_direction_from_camera(const CameraMount& mount, const Point3& camer
 Point3 robot_point_from_camera(const CameraMount& mount, const Point3& camera);
 Point3 camera_point_from_robot(const CameraMount& mount, const Point3& robot);
 
+// Does the robot-frame point project into the image, at least margin_px inside its border (and in
+// front of the camera)?
+bool projects_inside_image(const CameraIntrinsics& intrinsics, const CameraMount& mount,
+                           const Point3& robot, double margin_px);
+
 // The robot-frame point seen at pixel (u, v) with z-depth depth_m.
 Point3 back_project(const CameraIntrinsics& intrinsics, const CameraMount& mount, double u,
                     double v, double depth_m);

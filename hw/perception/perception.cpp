@@ -8,6 +8,8 @@
 
 #include <opencv2/imgproc.hpp>
 
+#include "perception/tag_visibility.hpp"
+
 namespace oasis::hw {
 namespace {
 
@@ -56,6 +58,10 @@ PerceptionResult Perception::step(const Frame& frame) {
     const HumanEstimate& holder = result.humans[static_cast<std::size_t>(result.holder) - 1];
     result.reward = config_.reach.contains(holder.x_m, holder.y_m) ? 1.0 : 0.0;
   }
+  const CarriedTag carried{config_.tag_black_edge_m, config_.tag_height_m,
+                           config_.tag_edge_margin_px};
+  result.reward_known = reward_is_known(result.humans, result.holder, config_.reach,
+                                        frame.intrinsics, config_.mount, carried);
   return result;
 }
 

@@ -15,6 +15,9 @@ struct PerceptionResult {
   TreatHolder holder = TreatHolder::kNone;
   std::optional<TagDetection> treat_tag;  // the tag that decided the holder
   double reward = 0.0;                    // 1 when the holder stands within the reach region
+  // False when no tag was seen but someone seen stands in the reach region with their tag, were
+  // they holding it, out of the image (tag_visibility.hpp): the 0 above then says nothing.
+  bool reward_known = true;
 };
 
 }  // namespace oasis::hw

@@ -197,6 +197,10 @@ void describe(V& v, S& s) {
                 "the tag36h11 id that is the treat, or any");
         v.value("tag_black_edge_m", s.perception.tag_black_edge_m,
                 RealCodec<double>{0.0, 2.0, true}, "the printed tag's black square edge");
+        v.value("tag_height_m", s.perception.tag_height_m, closed<double>(0.0, 3.0),
+                "where holders carry it: its centre above the floor");
+        v.value("tag_edge_margin_px", s.perception.tag_edge_margin_px, non_negative<double>(),
+                "nearer the image border a tag may not be decoded");
         v.value("max_tag_to_human_m", s.perception.max_tag_to_human_m, positive<double>(),
                 "a tag farther from everyone is held by nobody");
         v.section("reach",
@@ -243,6 +247,10 @@ void describe(V& v, S& s) {
             "a person outside the catalog's domain: put at its edge");
     v.value("keepalive_ms", s.loop.keepalive, MillisecondsCodec{5, 500},
             "repeat the command this often between decisions");
+    v.value("treat_sighting", s.loop.treat_sighting, RealCodec<double>{0.0, 1.0, false, true},
+            "0: the tag gives the reward; p: a seen tag names its holder");
+    v.value("unknown_reward_when_tag_cut", s.loop.unknown_reward_when_tag_cut, BoolCodec{},
+            "no tag, a tag in reach out of image: reward unknown");
   });
 
   v.value("source", s.source, SourceCodec{}, "synthetic, camera, or recorded:DIR (a recording)");

@@ -13,6 +13,7 @@ constexpr double kBeyondRangeM = 2.0;    // someone leaving ahead goes this far 
 constexpr double kZigzagSide = 0.7;      // of the half width: zig-zags stay off the walls
 constexpr double kWalkLookAheadM = 1.0;  // the holder walks toward a point this far ahead
 constexpr double kLeaveAtMostS = 15.0;   // time to get out of view; then away_min_s..away_max_s
+constexpr double kGiverWaitsS = 5.0;     // a receiver not there by then: the giver goes to them
 
 double distance(const go1::PlanarPoint& a, const go1::PlanarPoint& b) {
   return std::hypot(a.x - b.x, a.y - b.y);
@@ -47,11 +48,20 @@ void HallwayPeople::start_standing(double time_s) {
   holder_mind_.until_s = time_s + random_.exponential(scenario_.holder.mean_stand_s);
 }
 
-void HallwayPeople::step(double time_s, double dt_s, const go1::Pose& robot, TreatHolder holder) {
-  if (index_of(holder) != holder_) {  // a hand-off: the roles swap
-    holder_ = index_of(holder);
-    start_standing(time_s);
-    pick_behaviour(time_s, robot);
+TreatHolder HallwayPeople::holder() const {
+  return holder_ == 0 ? TreatHolder::kHuman1 : TreatHolder::kHuman2;
+}
+
+void HallwayPeople::step(double time_s, double dt_s, const go1::Pose& robot,
+                         int decided_hand_offs) {
+  step_back_from(robot);
+  if (hand_offs_done_ < decided_hand_offs) {
+    if (scenario_.treat.hand_off == HandOffStyle::kInstant) {
+      pass_the_treat(time_s, robot);
+    } else {
+      step_hand_off(time_s, dt_s, robot);
+      return;
+    }
   }
   step_holder(time_s, dt_s, robot, holder_);
   const std::size_t other = 1 - holder_;
@@ -59,6 +69,42 @@ void HallwayPeople::step(double time_s, double dt_s, const go1::Pose& robot, Tre
   const go1::PlanarPoint target =
       other_target(time_s, robot, positions_[holder_], positions_[other]);
   walk_toward(other, target, other_mind_.speed_m_s * dt_s, robot);
+}
+
+// Nobody lets the robot walk into them: whoever it came nearer than robot_margin_m to steps back
+// to that distance, away from it (kept between the walls).
+void HallwayPeople::step_back_from(const go1::Pose& robot) {
+  const double margin = scenario_.hallway.robot_margin_m;
+  const double half = half_width();
+  for (go1::PlanarPoint& self : positions_) {
+    const double dx = self.x - robot.x, dy = self.y - robot.y;
+    const double gap = std::hypot(dx, dy);
+    if (gap >= margin) continue;
+    const double ux = gap > 1e-9 ? dx / gap : std::cos(robot.yaw);
+    const double uy = gap > 1e-9 ? dy / gap : std::sin(robot.yaw);
+    self = {robot.x + ux * margin, std::clamp(robot.y + uy * margin, -half, half)};
+  }
+}
+
+// The roles swap: the new holder stands a while, the giver picks something to do.
+void HallwayPeople::pass_the_treat(double time_s, const go1::Pose& robot) {
+  holder_ = 1 - holder_;
+  ++hand_offs_done_;
+  hand_off_began_s_ = -1.0;
+  start_standing(time_s);
+  pick_behaviour(time_s, robot);
+}
+
+// kMeet, one period of a hand-off under way: the receiver walks up at the other's top speed,
+// the giver waits (then walks over too), and the treat passes once they are close enough.
+void HallwayPeople::step_hand_off(double time_s, double dt_s, const go1::Pose& robot) {
+  if (hand_off_began_s_ < 0.0) hand_off_began_s_ = time_s;
+  const std::size_t giver = holder_, receiver = 1 - holder_;
+  walk_toward(receiver, positions_[giver], scenario_.other.speed_max_m_s * dt_s, robot);
+  if (time_s - hand_off_began_s_ >= kGiverWaitsS)
+    walk_toward(giver, positions_[receiver], scenario_.holder.walk_speed_max_m_s * dt_s, robot);
+  if (distance(positions_[giver], positions_[receiver]) <= scenario_.treat.pass_within_m)
+    pass_the_treat(time_s, robot);
 }
 
 // Stands, walks on, stands...; walking, waits while farther than wait_beyond_m from the robot.
@@ -77,7 +123,7 @@ void HallwayPeople::step_holder(double time_s, double dt_s, const go1::Pose& rob
   const double away = distance(self, {robot.x, robot.y});
   if (should_return(time_s, robot, self)) {
     const go1::PlanarPoint spot = in_front_of(robot);
-    walk_toward(holder, spot, scenario_.holder.walk_speed_max_m_s * dt_s, robot);
+    walk_toward(holder, spot, scenario_.holder.return_speed_m_s * dt_s, robot);
     if (distance(self, spot) < kReachedM) mind.returning = false;
     return;
   }

@@ -3,6 +3,11 @@
 // (scenario.other); a hand-off swaps the roles. People react to the robot (the holder waits for
 // it, crossings pass in front of it) but draw their choices from their own random stream, so
 // that what the camera's noise draws does not change where they walk.
+//
+// Hand-offs are decided by the trial's schedule and carried out here (scenario.treat.hand_off):
+// with kMeet the receiver walks up to the holder, who waits (and after kGiverWaitsS walks toward
+// the receiver too), and the treat passes when they are within pass_within_m; so when the treat
+// changes hands depends on where everyone is, and holder() is the truth.
 #pragma once
 
 #include <array>
@@ -19,11 +24,16 @@ class HallwayPeople {
  public:
   HallwayPeople(const HallwayScenario& scenario, std::uint64_t seed, TreatHolder first_holder);
 
-  // Moves both people over one period of `dt_s` ending at `time_s`, the treat held by `holder`.
-  void step(double time_s, double dt_s, const go1::Pose& robot, TreatHolder holder);
+  // Moves both people over one period of `dt_s` ending at `time_s`, when the schedule has decided
+  // `decided_hand_offs` hand-offs so far; those not yet carried out are carried out in turn.
+  void step(double time_s, double dt_s, const go1::Pose& robot, int decided_hand_offs);
 
   // [0] human 1 (red shirt), [1] human 2 (yellow).
   const std::array<go1::PlanarPoint, 2>& positions() const { return positions_; }
+
+  // Who holds the treat now, and how many hand-offs have been carried out.
+  TreatHolder holder() const;
+  int hand_offs_done() const { return hand_offs_done_; }
 
  private:
   enum class Behaviour { kWander, kCross, kZigzag, kLeave };
@@ -50,6 +60,9 @@ class HallwayPeople {
   };
 
   void start_standing(double time_s);
+  void step_back_from(const go1::Pose& robot);
+  void step_hand_off(double time_s, double dt_s, const go1::Pose& robot);
+  void pass_the_treat(double time_s, const go1::Pose& robot);
   void step_holder(double time_s, double dt_s, const go1::Pose& robot, std::size_t holder);
   bool should_return(double time_s, const go1::Pose& robot, const go1::PlanarPoint& self);
   go1::PlanarPoint in_front_of(const go1::Pose& robot) const;
@@ -64,6 +77,8 @@ class HallwayPeople {
   Random random_;
   std::array<go1::PlanarPoint, 2> positions_{};
   std::size_t holder_ = 0;  // index of the holder, whose mind is holder_mind_
+  int hand_offs_done_ = 0;
+  double hand_off_began_s_ = -1.0;  // kMeet: when the receiver set off (< 0: none under way)
   HolderMind holder_mind_;
   OtherMind other_mind_;
 };

@@ -44,7 +44,7 @@ FrameTruth HallwayWorld::truth_at(double time_s, const go1::Pose& robot) const {
   truth.people = people_.positions();
   for (std::size_t i = 0; i < 2; ++i)
     truth.scene.people[i] = go1::to_body_frame(robot, truth.people[i]);
-  truth.scene.holder = schedule_.holder_at(time_s);
+  truth.scene.holder = people_.holder();
   truth.scene.treat_hidden = schedule_.hidden_at(time_s);
   const go1::PlanarPoint& holder = truth.scene.people[index_of(truth.scene.holder)];
   truth.holder_in_reach = options_.camera.reach.contains(holder.x, holder.y);
@@ -66,7 +66,8 @@ NextFrame HallwayWorld::next() {
   if (frames_ >= steps()) return SourceStop{SourceStop::Kind::kEnd, "the trial is over"};
   const double time_s = static_cast<double>(frames_) * options_.period_s;
   const go1::Pose robot = robot_pose_();
-  if (frames_ > 0) people_.step(time_s, options_.period_s, robot, schedule_.holder_at(time_s));
+  if (frames_ > 0)
+    people_.step(time_s, options_.period_s, robot, schedule_.hand_offs_decided_by(time_s));
   const FrameTruth truth = truth_at(time_s, robot);
   last_observation_ = options_.camera.observe(truth.scene, noise_);
   Frame frame = options_.path == ObservationPath::kRendered ? rendered(truth) : Frame{};

@@ -26,7 +26,7 @@ struct TrialSettings {
 struct HallwaySettings {
   double width_m = 3.0;          // wall to wall: a wide office corridor
   double wall_margin_m = 0.3;    // people keep this far from the walls
-  double robot_margin_m = 0.35;  // people do not step nearer the robot than this
+  double robot_margin_m = 0.35;  // people keep this far from the robot, and step back to it
 };
 
 // The holder stays roughly ahead of the robot, alternating between standing (when the robot
@@ -42,7 +42,8 @@ struct HolderSettings {
   double walk_speed_max_m_s = 0.6;     // ... to a bit faster than the robot's 0.5 m/s
   double wait_beyond_m = 3.0;          // farther than this from the robot: stops and waits
   double return_beyond_m = 5.0;        // farther than this: comes back in front of the robot
-  double max_wait_s = 5.0;             // unattended this long (below): likewise
+  double max_wait_s = 1.0;             // unattended this long (below): likewise
+  double return_speed_m_s = 1.0;       // coming back: a brisk walk, as people calling a dog
   double facing_half_angle_rad = 0.7;  // more than this off the robot's heading: unattended
 };
 
@@ -63,9 +64,17 @@ struct OtherSettings {
   double away_max_s = 6.0;  // ... up to this
 };
 
-// Who holds the treat when: 1 to 3 hand-offs per trial at random times (the treat changes hands
-// at once, wherever the two stand), and moments when the holder hides it.
+// How the treat changes hands. kMeet: as people pass a treat, at the decided time the receiver
+// walks up to the holder, who waits, and the treat passes when the two are within pass_within_m
+// of each other. kInstant: it changes hands at the decided time wherever the two stand (an
+// unphysical stress case, kept to compare with).
+enum class HandOffStyle { kMeet, kInstant };
+
+// Who holds the treat when: 1 to 3 hand-offs per trial decided at random times, and moments when
+// the holder hides it.
 struct TreatSettings {
+  HandOffStyle hand_off = HandOffStyle::kMeet;
+  double pass_within_m = 0.8;  // kMeet: centre to centre, arm's reach between two people
   int hand_offs_min = 1;
   int hand_offs_max = 3;
   double first_after_s = 8.0;  // no hand-off before this ...

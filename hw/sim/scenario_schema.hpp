@@ -19,6 +19,9 @@ using settings::detail::non_negative;
 using settings::detail::positive;
 using settings::detail::RealCodec;
 
+inline const settings::detail::EnumCodec<HandOffStyle> kHandOffCodec{
+    {{"meet", HandOffStyle::kMeet}, {"instant", HandOffStyle::kInstant}}};
+
 inline RealCodec<double> probability() {
   return {0.0, 1.0, false, true};
 }
@@ -38,7 +41,7 @@ void describe(V& v, S& s) {
               v.value("wall_margin_m", s.hallway.wall_margin_m, non_negative<double>(),
                       "people keep this far from the walls");
               v.value("robot_margin_m", s.hallway.robot_margin_m, non_negative<double>(),
-                      "people do not step nearer the robot");
+                      "people keep this far from the robot");
             });
 
   v.section(
@@ -48,8 +51,9 @@ void describe(V& v, S& s) {
       "when farther than wait_beyond_m from the robot. Farther than return_beyond_m, or\n"
       "unattended for max_wait_s (farther than wait_beyond_m, or more than\n"
       "facing_half_angle_rad off the robot's heading: the robot is not following), the holder\n"
-      "comes back (at the top walking speed) to start_min_m in front of the robot, as people\n"
-      "call a dog.",
+      "comes back (at return_speed_m_s) to start_min_m in front of the robot, as people call a\n"
+      "dog: the paper's protocol keeps the holder in the robot's view. Nobody lets the robot\n"
+      "walk into them: nearer than hallway.robot_margin_m, they step back.",
       [&] {
         v.value("start_min_m", s.holder.start_min_m, positive<double>(), "first placed ahead");
         v.value("start_max_m", s.holder.start_max_m, positive<double>(), "");
@@ -64,6 +68,8 @@ void describe(V& v, S& s) {
                 "farther: comes back in front of the robot");
         v.value("max_wait_s", s.holder.max_wait_s, positive<double>(),
                 "unattended this long: comes back likewise");
+        v.value("return_speed_m_s", s.holder.return_speed_m_s, positive<double>(),
+                "coming back: a brisk walk");
         v.value("facing_half_angle_rad", s.holder.facing_half_angle_rad, closed<double>(0.0, 3.15),
                 "the camera's half view is 0.7 rad");
       });
@@ -93,11 +99,16 @@ void describe(V& v, S& s) {
 
   v.section(
       "treat",
-      "Hand-offs: a number in hand_offs_min..hand_offs_max per trial, at uniform random times\n"
-      "between first_after_s and duration - last_before_s, at least min_gap_s apart; the treat\n"
-      "changes hands at once. The holder hides it (no tag in view) hides_per_minute times on\n"
-      "average, each for hide_min_s..hide_max_s.",
+      "Hand-offs: a number in hand_offs_min..hand_offs_max per trial, decided at uniform random\n"
+      "times between first_after_s and duration - last_before_s, at least min_gap_s apart.\n"
+      "hand_off: meet (the receiver walks up to the holder, who waits, and the treat passes\n"
+      "within pass_within_m; a hand-off decided before the last is done waits for it) or\n"
+      "instant (it changes hands at the decided time wherever the two stand). The holder hides\n"
+      "it (no tag in view) hides_per_minute times on average, each for hide_min_s..hide_max_s.",
       [&] {
+        v.value("hand_off", s.treat.hand_off, kHandOffCodec, "meet or instant");
+        v.value("pass_within_m", s.treat.pass_within_m, closed<double>(0.3, 3.0),
+                "arm's reach, centre to centre");
         v.value("hand_offs_min", s.treat.hand_offs_min, IntegerCodec<int>{0, 100}, "");
         v.value("hand_offs_max", s.treat.hand_offs_max, IntegerCodec<int>{0, 100}, "");
         v.value("first_after_s", s.treat.first_after_s, non_negative<double>(), "");

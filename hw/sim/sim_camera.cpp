@@ -20,13 +20,11 @@ std::array<double, 2> span(const go1::PlanarPoint& p, double width_m) {
 }  // namespace
 
 bool SimCamera::projects_inside(const Point3& robot_point) const {
-  const Point3 camera = camera_point_from_robot(mount, robot_point);
-  if (camera.z <= 0.0) return false;  // behind the image plane
-  const double u = intrinsics.fx * camera.x / camera.z + intrinsics.cx;
-  const double v = intrinsics.fy * camera.y / camera.z + intrinsics.cy;
-  const double margin = settings.edge_margin_px;
-  return u >= margin && u <= intrinsics.width - 1 - margin && v >= margin &&
-         v <= intrinsics.height - 1 - margin;
+  return projects_inside_image(intrinsics, mount, robot_point, settings.edge_margin_px);
+}
+
+CarriedTag SimCamera::carried_tag() const {
+  return {tag.black_edge_m, tag.centre_height_m, settings.edge_margin_px};
 }
 
 bool SimCamera::in_view(const go1::PlanarPoint& person) const {
@@ -46,11 +44,7 @@ bool SimCamera::in_view(const go1::PlanarPoint& person) const {
 
 bool SimCamera::tag_in_view(const go1::PlanarPoint& person) const {
   if (range_of(person) > settings.tag_range_m) return false;
-  const double half = tag.black_edge_m / 2.0;
-  for (const double side : {-half, half})
-    for (const double up : {-half, half})
-      if (!projects_inside({person.x, person.y + side, tag.centre_height_m + up})) return false;
-  return true;
+  return tag_fits_in_image(intrinsics, mount, carried_tag(), person.x, person.y);
 }
 
 bool SimCamera::occluded_by(const go1::PlanarPoint& person, const go1::PlanarPoint& other) const {
@@ -84,12 +78,17 @@ PerceptionResult SimCamera::observe(const TrueScene& scene, Random& noise) const
     estimate.depth_m = depth;
   }
   const bool tag_missed = noise.chance(settings.tag_miss_probability);
-  if (scene.holder == TreatHolder::kNone || scene.treat_hidden || tag_missed) return result;
   const std::size_t holder = scene.holder == TreatHolder::kHuman1 ? 0 : 1;
-  const HumanEstimate& seen = result.humans[holder];
-  if (!seen.seen || !tag_in_view(scene.people[holder])) return result;
-  result.holder = scene.holder;
-  result.reward = reach.contains(seen.x_m, seen.y_m) ? 1.0 : 0.0;
+  const bool tag_seen = scene.holder != TreatHolder::kNone && !scene.treat_hidden && !tag_missed &&
+                        result.humans[holder].seen && tag_in_view(scene.people[holder]);
+  if (tag_seen) {
+    const HumanEstimate& seen = result.humans[holder];
+    result.holder = scene.holder;
+    result.reward = reach.contains(seen.x_m, seen.y_m) ? 1.0 : 0.0;
+  }
+  // As perception decides it, from what it saw.
+  result.reward_known =
+      reward_is_known(result.humans, result.holder, reach, intrinsics, mount, carried_tag());
   return result;
 }
 

@@ -14,6 +14,7 @@
 #include "perception/perception.hpp"
 #include "perception/reach_region.hpp"
 #include "perception/synthetic_scene.hpp"
+#include "perception/tag_visibility.hpp"
 #include "perception/treat_holder.hpp"
 #include "sim/random.hpp"
 #include "sim/scenario.hpp"
@@ -45,6 +46,7 @@ struct SimCamera {
   // Is the whole black square of the tag worn by `person` in the image, and near enough to be
   // decoded? Near the robot the tag leaves the top of the image before the shirt does.
   bool tag_in_view(const go1::PlanarPoint& person) const;
+  CarriedTag carried_tag() const;  // the tag as perception/tag_visibility.hpp sees it
 
   // Is `person` hidden behind `other` (nearer, covering occluded_overlap of their width)?
   bool occluded_by(const go1::PlanarPoint& person, const go1::PlanarPoint& other) const;

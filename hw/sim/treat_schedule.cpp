@@ -54,11 +54,13 @@ std::vector<TimeInterval> hiding(const TreatSettings& treat, double duration_s, 
 
 }  // namespace
 
+int TreatSchedule::hand_offs_decided_by(double time_s) const {
+  return static_cast<int>(std::count_if(hand_off_s.begin(), hand_off_s.end(),
+                                        [time_s](double at) { return at <= time_s; }));
+}
+
 TreatHolder TreatSchedule::holder_at(double time_s) const {
-  TreatHolder holder = first_holder;
-  for (double at : hand_off_s)
-    if (at <= time_s) holder = other_than(holder);
-  return holder;
+  return hand_offs_decided_by(time_s) % 2 == 0 ? first_holder : other_than(first_holder);
 }
 
 bool TreatSchedule::hidden_at(double time_s) const {

@@ -1,6 +1,7 @@
-// Who holds the treat when, and when it is hidden: drawn once per trial, before anything moves,
-// from the trial's own random stream, so that every controller run on the trial faces the same
-// hand-offs and the same hiding, whatever the robot does.
+// When the treat is to change hands, and when it is hidden: drawn once per trial, before
+// anything moves, from the trial's own random stream, so that every controller run on the trial
+// faces the same decisions and the same hiding, whatever the robot does (with hand-offs by
+// meeting, the moment the treat passes still depends on where everyone walks).
 #pragma once
 
 #include <cstdint>
@@ -18,9 +19,13 @@ struct TimeInterval {
 
 struct TreatSchedule {
   TreatHolder first_holder = TreatHolder::kHuman1;
-  std::vector<double> hand_off_s;    // increasing; the treat changes hands at each
+  std::vector<double> hand_off_s;    // increasing; a hand-off is decided at each
   std::vector<TimeInterval> hidden;  // the holder hides the treat (no tag in view)
 
+  // The hand-offs decided by `time_s` (when they are carried out: HallwayPeople).
+  int hand_offs_decided_by(double time_s) const;
+  // Who holds the treat at `time_s` if every hand-off is carried out at once (HandOffStyle
+  // kInstant).
   TreatHolder holder_at(double time_s) const;
   bool hidden_at(double time_s) const;
 };

@@ -759,6 +759,67 @@ TEST(RuntimeFilter, RobustRewardCanFollowTheObservedState) {
   EXPECT_NEAR(f.belief(kAtS3), 1.0, kEps);
 }
 
+// ---------------------------------------------------------------- context evidence
+
+// After step() gives (.8, .2), a sighting with p(seen | context) = (.1, .9):
+// (.08, .18) / .26, and the ML abstraction follows it.
+TEST(RuntimeFilter, WeighContextIsBayesRuleOnTheBelief) {
+  DiscreteExample ex;
+  FixedWorkspace<2> ws;
+  AttentionFilter f(ex.view, FilterOptions{}, ws);
+  f.start(kS2);
+  f.step(kS3, 1.0, kR);  // (1, 0)
+  f.step(kS2, 0.0, kL);  // (.8, .2)
+  ASSERT_NEAR(f.belief(kAtS3), 0.8, kEps);
+  const double sighting[] = {0.1, 0.9};
+  EXPECT_EQ(f.weigh_context(sighting, 2), StepStatus::kOk);
+  EXPECT_NEAR(f.belief(kAtS3), 0.08 / 0.26, kEps);
+  EXPECT_NEAR(f.belief(kAtS1), 0.18 / 0.26, kEps);
+  EXPECT_EQ(f.ml_abstraction(), kAtS1);
+  EXPECT_EQ(f.action(), kL);
+  EXPECT_TRUE(belief_is_distribution(f, 2));
+}
+
+TEST(RuntimeFilter, WeighContextRejectsBadLikelihoodsWithoutChange) {
+  DiscreteExample ex;
+  FixedWorkspace<2> ws;
+  AttentionFilter f(ex.view, FilterOptions{}, ws);
+  f.start(kS2);
+  f.step(kS3, 1.0, kR);  // (1, 0)
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const double bad_value[] = {nan, 1.0};
+  const double negative[] = {-0.5, 1.0};
+  const double too_few[] = {1.0};
+  EXPECT_EQ(f.weigh_context(bad_value, 2), StepStatus::kBadState);
+  EXPECT_EQ(f.weigh_context(negative, 2), StepStatus::kBadState);
+  EXPECT_EQ(f.weigh_context(too_few, 1), StepStatus::kBadState);
+  EXPECT_EQ(f.weigh_context(nullptr, 2), StepStatus::kBadState);
+  // Zero where the belief is not: nothing explains the sighting, the belief is kept.
+  const double contradicts[] = {0.0, 1.0};
+  EXPECT_EQ(f.weigh_context(contradicts, 2), StepStatus::kZeroLikelihood);
+  EXPECT_NEAR(f.belief(kAtS3), 1.0, kEps);
+  EXPECT_EQ(f.ml_abstraction(), kAtS3);
+}
+
+TEST(RuntimeFilter, WeighContextScalesTheRobustJointBelief) {
+  DiscreteExample ex(true, 0.7);
+  FixedWorkspace<2, 3> ws;
+  FilterOptions options;
+  options.mode = FilterMode::kRobust;
+  AttentionFilter f(ex.view, options, ws);
+  f.start(kS2);
+  f.step(kS3, 1.0, kR);
+  f.step(kS2, 0.0, kL);  // joint (kAtS3: .06, .28 | kAtS1: .07) / .41, as above
+  const double sighting[] = {0.25, 1.0};
+  EXPECT_EQ(f.weigh_context(sighting, 2), StepStatus::kOk);
+  const double total = 0.25 * 0.34 + 1.0 * 0.07;
+  EXPECT_NEAR(f.joint_belief(kAtS3, kS1), 0.25 * 0.06 / total, kEps);
+  EXPECT_NEAR(f.joint_belief(kAtS3, kS2), 0.25 * 0.28 / total, kEps);
+  EXPECT_NEAR(f.joint_belief(kAtS1, kS2), 0.07 / total, kEps);
+  EXPECT_NEAR(f.belief(kAtS3) + f.belief(kAtS1), 1.0, kEps);
+  EXPECT_NEAR(f.belief(kAtS1), 0.07 / total, kEps);
+}
+
 std::vector<double> hedged_workspace(const CatalogView& view, const HedgeOptions& options) {
   return std::vector<double>(HedgedFilter::workspace_size(view, options));
 }

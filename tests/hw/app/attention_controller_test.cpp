@@ -121,5 +121,58 @@ TEST(AttentionController, RobustModeNeedsTheCatalogsObservationModel) {
   EXPECT_THROW(AttentionController(without, settings), std::invalid_argument);
 }
 
+// Nobody in reach: both contexts predict reward 0, so only the tag seen on human 2 at 2 m says
+// who holds the treat. Off (the paper), the belief stays at the prior; on, it is Bayes' rule
+// with 0.9 against 0.1.
+TEST(AttentionController, ASeenTreatTagWeighsItsHoldersContext) {
+  const rt::CatalogView& catalog = go1_treat::catalog();
+  const std::uint32_t human2 = abstraction_named(catalog, "human2_holds_treat");
+  PerceptionResult tag_on_human2 = seen_at(2.0, 0.8, 2.0, -0.8, 0.0);
+  tag_on_human2.holder = TreatHolder::kHuman2;
+
+  AttentionController paper(catalog, spec_settings(catalog));
+  paper.decide(tag_on_human2, 0.0, {});
+  EXPECT_DOUBLE_EQ(paper.decide(tag_on_human2, 0.2, {}).belief[human2], 0.5);
+
+  ControllerSettings settings = spec_settings(catalog);
+  settings.treat_sighting = 0.9;
+  AttentionController sighted(catalog, settings);
+  EXPECT_NEAR(sighted.decide(tag_on_human2, 0.0, {}).belief[human2], 0.9, 1e-12);
+  // Predicted 0.8 * 0.9 + 0.2 * 0.1 = 0.74, then 0.74 * 0.9 / (0.74 * 0.9 + 0.26 * 0.1).
+  const log::StepRecord second = sighted.decide(tag_on_human2, 0.2, {});
+  EXPECT_NEAR(second.belief[human2], 0.666 / 0.692, 1e-12);
+  EXPECT_EQ(second.abstraction, human2);
+
+  settings.treat_sighting = 1.0;
+  EXPECT_THROW(AttentionController(catalog, settings), std::invalid_argument);
+}
+
+// Human 1 at 0.4 m, in reach but too near for a tag to be in the image: perception says the
+// reward is not known. The paper's controller reads 0 (human 1 does not hold the treat); with
+// unknown_reward_when_tag_cut the filter is given NaN and predicts only.
+TEST(AttentionController, AnUnknownRewardIsNotTakenForZero) {
+  const rt::CatalogView& catalog = go1_treat::catalog();
+  const std::uint32_t human1 = abstraction_named(catalog, "human1_holds_treat");
+  PerceptionResult too_near = seen_at(0.4, 0.0, 3.0, -1.5, 0.0);
+  too_near.reward_known = false;
+
+  ControllerSettings settings = spec_settings(catalog);
+  settings.filter.zero_likelihood_guard = true;
+  AttentionController paper(catalog, settings);
+  paper.decide(too_near, 0.0, {});
+  const log::StepRecord ruled_out = paper.decide(too_near, 0.2, {});
+  EXPECT_DOUBLE_EQ(ruled_out.belief[human1], 0.0);
+  EXPECT_EQ(ruled_out.reward, 0.0);
+
+  settings.filter.mode = rt::FilterMode::kRobust;
+  settings.unknown_reward_when_tag_cut = true;
+  AttentionController careful(catalog, settings);
+  careful.decide(too_near, 0.0, {});
+  const log::StepRecord unknown = careful.decide(too_near, 0.2, {});
+  EXPECT_EQ(unknown.filter_status, "missing_observation");
+  EXPECT_DOUBLE_EQ(unknown.belief[human1], 0.5);
+  EXPECT_TRUE(std::isnan(unknown.reward));
+}
+
 }  // namespace
 }  // namespace oasis::hw::app

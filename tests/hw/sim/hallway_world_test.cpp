@@ -24,9 +24,10 @@ struct WorldRun {
 };
 
 WorldRun run(std::uint64_t seed, ObservationPath path = ObservationPath::kFast,
-             std::uint64_t max_frames = 1000) {
+             std::uint64_t max_frames = 1000, const HallwayScenario& scenario = {}) {
   std::uint64_t frame = 0;
   HallwayWorldOptions options;
+  options.scenario = scenario;
   options.seed = seed;
   options.path = path;
   HallwayWorld world(options, [&frame] { return wandering_robot(frame); });
@@ -89,6 +90,54 @@ TEST(HallwayWorld, SchedulesKeepToTheScenario) {
       }
     }
   }
+}
+
+// By default the treat passes from hand to hand: each change of holder happens with the two
+// people within pass_within_m, no earlier than the schedule decided it, and none is lost.
+TEST(HallwayWorld, TheTreatPassesWhenTheTwoMeet) {
+  const HallwayScenario scenario;
+  ASSERT_EQ(scenario.treat.hand_off, HandOffStyle::kMeet);
+  int passes = 0, decided = 0;
+  for (std::uint64_t seed = 1; seed <= 20; ++seed) {
+    const WorldRun trial = run(seed);
+    const TreatSchedule schedule = draw_treat_schedule(scenario, seed);
+    int changes = 0;
+    for (std::size_t k = 1; k < trial.truths.size(); ++k) {
+      const FrameTruth& truth = trial.truths[k];
+      if (truth.scene.holder == trial.truths[k - 1].scene.holder) continue;
+      ++changes;
+      EXPECT_LE(
+          std::hypot(truth.people[0].x - truth.people[1].x, truth.people[0].y - truth.people[1].y),
+          scenario.treat.pass_within_m + 1e-9)
+          << "seed " << seed << " frame " << k;
+      EXPECT_LE(changes, schedule.hand_offs_decided_by(truth.time_s)) << "seed " << seed;
+    }
+    passes += changes;
+    decided += static_cast<int>(schedule.hand_off_s.size());
+  }
+  EXPECT_GE(passes, decided - 2);  // one decided near the end may not be done before it ends
+  EXPECT_LE(passes, decided);
+}
+
+TEST(HallwayWorld, InstantHandOffsFollowTheSchedule) {
+  HallwayScenario scenario;
+  scenario.treat.hand_off = HandOffStyle::kInstant;
+  for (std::uint64_t seed = 1; seed <= 5; ++seed) {
+    const WorldRun trial = run(seed, ObservationPath::kFast, 1000, scenario);
+    const TreatSchedule schedule = draw_treat_schedule(scenario, seed);
+    for (const FrameTruth& truth : trial.truths)
+      ASSERT_EQ(truth.scene.holder, schedule.holder_at(truth.time_s)) << truth.time_s;
+  }
+}
+
+TEST(HallwayWorld, NobodyLetsTheRobotWalkIntoThem) {
+  const HallwayScenario scenario;
+  for (std::uint64_t seed = 1; seed <= 5; ++seed)
+    for (const FrameTruth& truth : run(seed).truths)
+      for (const go1::PlanarPoint& person : truth.people)
+        ASSERT_GE(std::hypot(person.x - truth.robot.x, person.y - truth.robot.y),
+                  scenario.hallway.robot_margin_m - 1e-9)
+            << "seed " << seed << " t " << truth.time_s;
 }
 
 TEST(HallwayWorld, PeopleStayBetweenTheWallsAndTheHolderStaysNear) {

@@ -319,6 +319,36 @@ class AttentionFilter {
     return status;
   }
 
+  /// A second measurement of the same time step, independent of the reward given the context:
+  /// b(i) ~ likelihood[i] * b(i) (robust mode on a discrete catalog: every b(i, s) of row i),
+  /// then the ML selection again. For a sensor that sees the context itself, now and then (the
+  /// Go1's camera seeing the treat in someone's hand): call it after step() with p(what was
+  /// seen | context i) per abstraction; call nothing when nothing was seen. `count` must be
+  /// num_abstractions and every entry finite and >= 0 (else kBadState, belief unchanged). All
+  /// zero, or zero wherever the belief is not, is kZeroLikelihood and the belief is kept.
+  /// O(N) (O(N S) joint robust). No allocation.
+  StepStatus weigh_context(const double* likelihood, std::size_t count) noexcept {
+    if (!ok()) return StepStatus::kNotReady;
+    const std::uint32_t n = catalog_->num_abstractions;
+    if (likelihood == nullptr || count != n) return StepStatus::kBadState;
+    double total = 0.0;
+    for (std::uint32_t i = 0; i < n; ++i) {
+      if (!(likelihood[i] >= 0.0) || !std::isfinite(likelihood[i])) return StepStatus::kBadState;
+      total += likelihood[i] * belief_[i];
+    }
+    if (!(total > 0.0) || !std::isfinite(total)) return StepStatus::kZeroLikelihood;
+    for (std::uint32_t i = 0; i < n; ++i)
+      belief_[i] = likelihood[i] * belief_[i] / total;
+    if (joint_robust()) {
+      const std::uint32_t states = catalog_->num_states;
+      for (std::uint32_t i = 0; i < n; ++i)
+        for (std::uint32_t s = 0; s < states; ++s)
+          joint_[static_cast<std::size_t>(i) * states + s] *= likelihood[i] / total;
+    }
+    select_ml();
+    return StepStatus::kOk;
+  }
+
   /// pi^i(z^i(s)) for the ML abstraction i and the current state s (the last observed state in
   /// paper mode; the most likely true state under i in robust mode). kNoAction before the
   /// first start()/step(), if construction failed, or if the block has no enabled action.
