@@ -87,18 +87,34 @@ AttentionController::AttentionController(const rt::CatalogView& catalog,
   if (!filter_.ok()) throw std::invalid_argument(filter_error_text(filter_.error()));
   if (!(settings_.treat_sighting >= 0.0 && settings_.treat_sighting < 1.0))
     throw std::invalid_argument("treat_sighting must be in [0, 1)");
+  if (!(settings_.tag_unseen_likelihood > 0.0 && settings_.tag_unseen_likelihood <= 1.0))
+    throw std::invalid_argument("tag_unseen_likelihood must be in (0, 1]");
   domain_of(catalog_, domain_low_, domain_high_);
-  sighting_likelihood_.assign(catalog_.num_abstractions, 0.0);
+  tag_likelihood_.assign(catalog_.num_abstractions, 1.0);
+  context_of_holder_ = {context_index(catalog_, TreatHolder::kHuman1),
+                        context_index(catalog_, TreatHolder::kHuman2)};
 }
 
-void AttentionController::weigh_treat_sighting(TreatHolder holder) {
-  if (settings_.treat_sighting == 0.0 || holder == TreatHolder::kNone) return;
-  const std::optional<std::uint32_t> named = context_index(catalog_, holder);
-  if (!named) return;  // a catalog without the Go1 spec's contexts: nothing to weigh
-  for (std::uint32_t i = 0; i < catalog_.num_abstractions; ++i)
-    sighting_likelihood_[i] =
-        i == *named ? settings_.treat_sighting : 1.0 - settings_.treat_sighting;
-  filter_.weigh_context(sighting_likelihood_.data(), sighting_likelihood_.size());
+// What the treat tag says beyond the reward (ControllerSettings::treat_sighting and
+// tag_unseen_likelihood); nothing to weigh on a catalog without the Go1 spec's contexts.
+void AttentionController::weigh_tag_evidence(const PerceptionResult& seen) {
+  std::fill(tag_likelihood_.begin(), tag_likelihood_.end(), 1.0);
+  bool informative = false;
+  if (seen.holder != TreatHolder::kNone) {
+    const std::optional<std::uint32_t> named =
+        context_of_holder_[static_cast<std::size_t>(seen.holder) - 1];
+    if (settings_.treat_sighting == 0.0 || !named) return;
+    std::fill(tag_likelihood_.begin(), tag_likelihood_.end(), 1.0 - settings_.treat_sighting);
+    tag_likelihood_[*named] = settings_.treat_sighting;
+    informative = true;
+  } else if (settings_.tag_unseen_likelihood < 1.0) {
+    for (std::size_t person = 0; person < 2; ++person) {
+      if (!context_of_holder_[person] || !seen.humans[person].tag_would_show) continue;
+      tag_likelihood_[*context_of_holder_[person]] = settings_.tag_unseen_likelihood;
+      informative = true;
+    }
+  }
+  if (informative) filter_.weigh_context(tag_likelihood_.data(), tag_likelihood_.size());
 }
 
 void AttentionController::update_state(const PerceptionResult& seen, const go1::Pose& robot) {
@@ -128,7 +144,7 @@ log::StepRecord AttentionController::decide(const PerceptionResult& seen, double
   const rt::StepStatus status =
       steps_ == 0 ? filter_.start(state_.data(), state_.size())
                   : filter_.step(state_.data(), state_.size(), reward, last_action_);
-  weigh_treat_sighting(seen.holder);
+  weigh_tag_evidence(seen);
 
   log::StepRecord record;
   record.step = steps_++;

@@ -39,6 +39,11 @@ struct ControllerSettings {
   // weighs "human N holds the treat" by it and every other context by 1 - it
   // (rt::AttentionFilter::weigh_context). A hidden or unseen tag says nothing.
   double treat_sighting = 0.0;
+  // 1: the paper (no tag seen says nothing of who holds it). In (0, 1): p(no tag seen | this
+  // person holds the treat and their tag would show), hidden or turned away: with no tag seen,
+  // "human N holds the treat" is weighed by it for each person whose tag would show
+  // (HumanEstimate::tag_would_show), every other context by 1.
+  double tag_unseen_likelihood = 1.0;
   // False: the paper (no tag seen is reward 0). True: when perception says the reward is not
   // known (PerceptionResult::reward_known: someone in reach whose tag would be out of the
   // image), the filter is given a NaN reward: robust mode then runs the prediction alone; paper
@@ -64,7 +69,7 @@ class AttentionController final : public LoopController {
 
  private:
   void update_state(const PerceptionResult& seen, const go1::Pose& robot);
-  void weigh_treat_sighting(TreatHolder holder);
+  void weigh_tag_evidence(const PerceptionResult& seen);
 
   const rt::CatalogView& catalog_;
   ControllerSettings settings_;
@@ -73,8 +78,9 @@ class AttentionController final : public LoopController {
   std::vector<double> state_;
   std::vector<double> domain_low_;  // per state variable, over every abstraction's grid
   std::vector<double> domain_high_;
-  std::vector<double> sighting_likelihood_;                   // per abstraction, for weigh_context
-  std::array<std::optional<go1::PlanarPoint>, 2> last_seen_;  // odometry frame
+  std::vector<double> tag_likelihood_;  // per abstraction, for weigh_context
+  std::array<std::optional<std::uint32_t>, 2> context_of_holder_;  // "human N holds the treat"
+  std::array<std::optional<go1::PlanarPoint>, 2> last_seen_;       // odometry frame
   std::uint64_t steps_ = 0;
   std::uint32_t last_action_ = 0;
 };

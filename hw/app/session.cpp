@@ -66,6 +66,7 @@ ControllerSettings controller_settings(const settings::Go1Settings& settings,
   result.hold_last_seen = settings.loop.missing_human == settings::MissingHuman::kHoldLast;
   result.clamp_to_domain = settings.loop.clamp_to_domain;
   result.treat_sighting = settings.loop.treat_sighting;
+  result.tag_unseen_likelihood = settings.loop.tag_unseen_likelihood;
   result.unknown_reward_when_tag_cut = settings.loop.unknown_reward_when_tag_cut;
   return result;
 }

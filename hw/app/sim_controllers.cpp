@@ -32,15 +32,19 @@ rt::FilterOptions ours() {
   return options;
 }
 
-// And what the camera says beyond the reward: a treat tag seen on someone weighs the context
-// "they hold it" by 0.9 against 0.1 (go1.yaml loop.treat_sighting; 0.99 measures the same), and
-// no tag seen while someone stands in reach too near for their tag to be in the image is
-// "reward unknown" rather than 0 (loop.unknown_reward_when_tag_cut).
+// And what the camera says beyond the reward (go1.yaml loop:): a treat tag seen on someone
+// weighs the context "they hold it" by 0.9 against 0.1 (treat_sighting; 0.99 measures the
+// same); no tag seen on someone whose tag would show weighs "they hold it" by 0.1
+// (tag_unseen_likelihood: a holder hides it now and then; 0.3 measures the same); and no tag
+// seen while someone stands in reach too near for their tag to be in the image is "reward
+// unknown" rather than 0 (unknown_reward_when_tag_cut).
 constexpr double kOurTreatSighting = 0.9;
+constexpr double kOurTagUnseenLikelihood = 0.1;
 
 std::unique_ptr<LoopController> our_controller(const SimControllerInputs& inputs) {
   SimControllerInputs with_tag = inputs;
   with_tag.settings.treat_sighting = kOurTreatSighting;
+  with_tag.settings.tag_unseen_likelihood = kOurTagUnseenLikelihood;
   with_tag.settings.unknown_reward_when_tag_cut = true;
   return attention_with(with_tag, ours());
 }
@@ -64,8 +68,9 @@ const std::vector<SimControllerKind>& sim_controller_kinds() {
        true, [](const SimControllerInputs& inputs) { return attention_with(inputs, guarded()); }},
       {"ours",
        "OAS with the zero-likelihood guard, the noise-aware filter (the catalog's sigma(d), ties "
-       "within 0.05 kept), a seen treat tag as evidence of its holder (0.9), and the reward "
-       "unknown when a tag in reach would be out of the image",
+       "within 0.05 kept), the treat tag seen (0.9) or not seen where it would show (0.1) as "
+       "evidence of who holds it, and the reward unknown when a tag in reach would be out of "
+       "the image",
        false, our_controller},
   };
   return kinds;

@@ -12,6 +12,9 @@ struct HumanEstimate {
   double confidence = 0.0;  // 0..1; below 1 when the shirt is cut off or depth is sparse
   double depth_m = 0.0;     // median optical z-depth of the shirt
   cv::Rect pixel_box;       // the shirt blob's bounding box in the image
+  // Were this person carrying the treat tag (tag_visibility.hpp), would it be decoded: near
+  // enough, its whole black square in the image? Set by perception for everyone seen.
+  bool tag_would_show = false;
 };
 
 }  // namespace oasis::hw

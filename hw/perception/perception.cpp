@@ -59,9 +59,9 @@ PerceptionResult Perception::step(const Frame& frame) {
     result.reward = config_.reach.contains(holder.x_m, holder.y_m) ? 1.0 : 0.0;
   }
   const CarriedTag carried{config_.tag_black_edge_m, config_.tag_height_m,
-                           config_.tag_edge_margin_px};
-  result.reward_known = reward_is_known(result.humans, result.holder, config_.reach,
-                                        frame.intrinsics, config_.mount, carried);
+                           config_.tag_edge_margin_px, config_.tag_range_m};
+  mark_tag_visibility(result.humans, frame.intrinsics, config_.mount, carried);
+  result.reward_known = reward_is_known(result.humans, result.holder, config_.reach);
   return result;
 }
 

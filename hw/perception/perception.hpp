@@ -29,6 +29,7 @@ struct PerceptionConfig {
   double tag_black_edge_m = 0.20;   // the printed tag, black square edge
   double tag_height_m = 1.1;        // where holders carry it: its centre above the floor
   double tag_edge_margin_px = 8.0;  // a tag nearer the image border may not be decoded
+  double tag_range_m = 4.0;         // a tag farther away is too small to decode reliably
   double max_tag_to_human_m = 0.5;  // a tag farther than this from every person is held by nobody
   ReachRegion reach;
 };

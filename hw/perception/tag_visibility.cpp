@@ -1,5 +1,7 @@
 #include "perception/tag_visibility.hpp"
 
+#include <cmath>
+
 namespace oasis::hw {
 
 bool tag_fits_in_image(const CameraIntrinsics& intrinsics, const CameraMount& mount,
@@ -13,14 +15,24 @@ bool tag_fits_in_image(const CameraIntrinsics& intrinsics, const CameraMount& mo
   return true;
 }
 
+bool tag_would_show(const CameraIntrinsics& intrinsics, const CameraMount& mount,
+                    const CarriedTag& tag, double x_m, double y_m) {
+  return std::hypot(x_m, y_m) <= tag.max_range_m &&
+         tag_fits_in_image(intrinsics, mount, tag, x_m, y_m);
+}
+
+void mark_tag_visibility(std::array<HumanEstimate, 2>& humans, const CameraIntrinsics& intrinsics,
+                         const CameraMount& mount, const CarriedTag& tag) {
+  for (HumanEstimate& human : humans)
+    human.tag_would_show =
+        human.seen && tag_would_show(intrinsics, mount, tag, human.x_m, human.y_m);
+}
+
 bool reward_is_known(const std::array<HumanEstimate, 2>& humans, TreatHolder holder,
-                     const ReachRegion& reach, const CameraIntrinsics& intrinsics,
-                     const CameraMount& mount, const CarriedTag& tag) {
+                     const ReachRegion& reach) {
   if (holder != TreatHolder::kNone) return true;
   for (const HumanEstimate& human : humans)
-    if (human.seen && reach.contains(human.x_m, human.y_m) &&
-        !tag_fits_in_image(intrinsics, mount, tag, human.x_m, human.y_m))
-      return false;
+    if (human.seen && reach.contains(human.x_m, human.y_m) && !human.tag_would_show) return false;
   return true;
 }
 

@@ -201,6 +201,8 @@ void describe(V& v, S& s) {
                 "where holders carry it: its centre above the floor");
         v.value("tag_edge_margin_px", s.perception.tag_edge_margin_px, non_negative<double>(),
                 "nearer the image border a tag may not be decoded");
+        v.value("tag_range_m", s.perception.tag_range_m, positive<double>(),
+                "farther a tag is too small to decode reliably");
         v.value("max_tag_to_human_m", s.perception.max_tag_to_human_m, positive<double>(),
                 "a tag farther from everyone is held by nobody");
         v.section("reach",
@@ -249,6 +251,8 @@ void describe(V& v, S& s) {
             "repeat the command this often between decisions");
     v.value("treat_sighting", s.loop.treat_sighting, RealCodec<double>{0.0, 1.0, false, true},
             "0: the tag gives the reward; p: a seen tag names its holder");
+    v.value("tag_unseen_likelihood", s.loop.tag_unseen_likelihood,
+            RealCodec<double>{0.0, 1.0, true, false}, "1: no tag says nothing; p: see README");
     v.value("unknown_reward_when_tag_cut", s.loop.unknown_reward_when_tag_cut, BoolCodec{},
             "no tag, a tag in reach out of image: reward unknown");
   });

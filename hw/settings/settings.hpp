@@ -78,9 +78,11 @@ struct LoopSettings {
   // the loop itself stalls (app/control_loop.hpp).
   std::chrono::milliseconds keepalive{50};
   // Beyond the paper (app/attention_controller.hpp's ControllerSettings): a seen treat tag as a
-  // second measurement of the context, right with this probability (0: off, the paper);
-  // and the reward as unknown when a tag in reach could be out of the image.
+  // second measurement of the context, right with this probability (0: off, the paper); no tag
+  // on someone whose tag would show as evidence against them (1: off); and the reward as
+  // unknown when a tag in reach could be out of the image.
   double treat_sighting = 0.0;
+  double tag_unseen_likelihood = 1.0;
   bool unknown_reward_when_tag_cut = false;
 };
 

@@ -24,7 +24,7 @@ bool SimCamera::projects_inside(const Point3& robot_point) const {
 }
 
 CarriedTag SimCamera::carried_tag() const {
-  return {tag.black_edge_m, tag.centre_height_m, settings.edge_margin_px};
+  return {tag.black_edge_m, tag.centre_height_m, settings.edge_margin_px, settings.tag_range_m};
 }
 
 bool SimCamera::in_view(const go1::PlanarPoint& person) const {
@@ -43,8 +43,7 @@ bool SimCamera::in_view(const go1::PlanarPoint& person) const {
 }
 
 bool SimCamera::tag_in_view(const go1::PlanarPoint& person) const {
-  if (range_of(person) > settings.tag_range_m) return false;
-  return tag_fits_in_image(intrinsics, mount, carried_tag(), person.x, person.y);
+  return tag_would_show(intrinsics, mount, carried_tag(), person.x, person.y);
 }
 
 bool SimCamera::occluded_by(const go1::PlanarPoint& person, const go1::PlanarPoint& other) const {
@@ -86,9 +85,9 @@ PerceptionResult SimCamera::observe(const TrueScene& scene, Random& noise) const
     result.holder = scene.holder;
     result.reward = reach.contains(seen.x_m, seen.y_m) ? 1.0 : 0.0;
   }
-  // As perception decides it, from what it saw.
-  result.reward_known =
-      reward_is_known(result.humans, result.holder, reach, intrinsics, mount, carried_tag());
+  // As perception decides these, from what it saw.
+  mark_tag_visibility(result.humans, intrinsics, mount, carried_tag());
+  result.reward_known = reward_is_known(result.humans, result.holder, reach);
   return result;
 }
 

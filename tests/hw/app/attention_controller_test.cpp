@@ -147,6 +147,26 @@ TEST(AttentionController, ASeenTreatTagWeighsItsHoldersContext) {
   EXPECT_THROW(AttentionController(catalog, settings), std::invalid_argument);
 }
 
+// No tag seen: on human 1 at 2 m, whose tag would show, that weighs "human 1 holds it" by 0.1;
+// on human 2, too far for a tag to show, it says nothing.
+TEST(AttentionController, NoTagWhereItWouldShowWeighsAgainstThatPerson) {
+  const rt::CatalogView& catalog = go1_treat::catalog();
+  const std::uint32_t human1 = abstraction_named(catalog, "human1_holds_treat");
+  PerceptionResult no_tag = seen_at(2.0, 0.0, 4.5, -1.0, 0.0);
+  no_tag.humans[0].tag_would_show = true;
+
+  ControllerSettings settings = spec_settings(catalog);
+  settings.tag_unseen_likelihood = 0.1;
+  AttentionController controller(catalog, settings);
+  EXPECT_NEAR(controller.decide(no_tag, 0.0, {}).belief[human1], 0.05 / 0.55, 1e-12);
+  no_tag.humans[0].tag_would_show = false;
+  const double before = controller.decide(no_tag, 0.2, {}).belief[human1];
+  EXPECT_NEAR(before, 0.8 * (0.05 / 0.55) + 0.2 * (0.5 / 0.55), 1e-12);  // prediction only
+
+  settings.tag_unseen_likelihood = 0.0;
+  EXPECT_THROW(AttentionController(catalog, settings), std::invalid_argument);
+}
+
 // Human 1 at 0.4 m, in reach but too near for a tag to be in the image: perception says the
 // reward is not known. The paper's controller reads 0 (human 1 does not hold the treat); with
 // unknown_reward_when_tag_cut the filter is given NaN and predicts only.
