@@ -1,13 +1,13 @@
 #include "sim/report.hpp"
 
 #include <algorithm>
-#include <fstream>
 #include <iomanip>
 #include <map>
 #include <sstream>
 #include <tuple>
 
 #include "metrics/table_text.hpp"
+#include "support/atomic_file.hpp"
 
 namespace oasis::sim {
 namespace {
@@ -168,14 +168,14 @@ nlohmann::json rows_json(const std::vector<RowResult>& rows) {
 }
 
 bool write_text(const std::filesystem::path& path, const std::string& text, std::string& error) {
-  std::ofstream file(path, std::ios::binary);
-  file << text;
-  file.close();
-  if (!file) {
-    error = "cannot write " + path.string();
-    return false;
+  AtomicFile file;  // whole or not at all: an interrupted run leaves the previous file
+  std::string reason;
+  if (file.open(path.string(), reason)) {
+    file.append(text);
+    if (file.commit(reason)) return true;
   }
-  return true;
+  error = "cannot write " + path.string() + ": " + reason;
+  return false;
 }
 
 std::string trace_csv(const Trace& trace, const std::vector<std::string>& context_names,
