@@ -13,7 +13,7 @@ namespace oasis::cli {
 // Options every subcommand that reads models shares.
 struct CommonOptions {
   LoadOptions load;
-  std::size_t max_errors = 20;
+  std::size_t max_errors = limits::kDefaultMaxErrors;
   std::string progress = "auto";  // auto | always | never
 };
 

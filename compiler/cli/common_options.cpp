@@ -15,8 +15,20 @@ void add_common_options(CLI::App& command, CommonOptions& options) {
       ->check(CLI::Range(std::size_t{1}, std::size_t{100000}));
   command
       .add_option("--max-spec-size", options.load.max_spec_bytes,
-                  "Refuse .oasis files larger than this many bytes")
-      ->capture_default_str();
+                  "Refuse .oasis files larger than this (bytes, or with a unit: 64M)")
+      ->capture_default_str()
+      ->transform(CLI::AsSizeValue(false));
+  command
+      .add_option("--max-input-size", options.load.max_input_bytes,
+                  "Refuse .aut, .tra, CSV and JSON inputs larger than this (bytes, or 2G; never "
+                  "more than 2^32 - 1)")
+      ->capture_default_str()
+      ->transform(CLI::AsSizeValue(false));
+  command
+      .add_option("--max-number-bits", options.load.max_number_bits,
+                  "Refuse exact numbers whose numerator or denominator has more bits than this")
+      ->capture_default_str()
+      ->check(CLI::Range(std::size_t{64}, std::size_t{1} << 34));
   command
       .add_option("--progress", options.progress,
                   "Show progress on stderr (exploration, the stages of a continuous compile): auto "

@@ -1,12 +1,13 @@
 #include "cli/continuous_json_reader.hpp"
 
 #include <algorithm>
-#include <fstream>
+#include <new>
 
 #include <nlohmann/json.hpp>
 
 #include "oasis/rt/bsp_locator.hpp"
 #include "oasis/rt/catalog_view.hpp"
+#include "support/mapped_file.hpp"
 
 namespace oasis::cli {
 namespace {
@@ -161,14 +162,17 @@ pipeline::CatalogData catalog_of(const json& document) {
 }  // namespace
 
 std::optional<pipeline::CatalogData> read_continuous_catalog_json(const std::string& path,
+                                                                  std::size_t max_bytes,
                                                                   std::string& error) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) {
-    error = "cannot open the file";
+  MappedFile file;
+  if (!file.open(path, max_bytes, error)) {
+    error = "cannot read: " + error;
     return std::nullopt;
   }
   try {
-    return catalog_of(json::parse(in));
+    return catalog_of(json::parse(file.text()));
+  } catch (const std::bad_alloc&) {
+    throw;                             // the memory budget, reported by main
   } catch (const std::exception& e) {  // nlohmann's parse, key and type errors, and ours
     error = std::string("not a continuous catalog's JSON: ") + e.what();
     return std::nullopt;

@@ -5,6 +5,7 @@
 // (keys present, of the right types, names known); what the numbers mean is checked by
 // rt::validate and the verifier.
 
+#include <cstddef>
 #include <optional>
 #include <string>
 
@@ -12,8 +13,10 @@
 
 namespace oasis::cli {
 
-// nullopt with `error` (one sentence, without the path) when the file is not such a JSON.
+// nullopt with `error` (one sentence, without the path) when the file is not such a JSON or
+// is larger than `max_bytes`.
 std::optional<pipeline::CatalogData> read_continuous_catalog_json(const std::string& path,
+                                                                  std::size_t max_bytes,
                                                                   std::string& error);
 
 }  // namespace oasis::cli

@@ -156,7 +156,8 @@ int run_switching(const SwitchingOptions& options) {
   std::vector<fit::LoggedRun> runs;
   for (const std::string& path : options.logs) {
     if (diagnostics.should_stop()) break;
-    const auto table = fit::read_csv(path, sources, diagnostics);
+    const auto table = fit::read_csv(path, sources, diagnostics,
+                                     {.max_bytes = options.common.load.max_input_bytes});
     if (table) fit::read_switching_log(*table, names, runs, diagnostics);
   }
   if (diagnostics.has_errors()) return 1;
@@ -275,7 +276,8 @@ int run_noise(const NoiseOptions& options) {
   fit::NoiseCounts counts;
   for (const std::string& path : options.labels) {
     if (diagnostics.should_stop()) break;
-    const auto table = fit::read_csv(path, sources, diagnostics);
+    const auto table = fit::read_csv(path, sources, diagnostics,
+                                     {.max_bytes = options.common.load.max_input_bytes});
     if (table) fit::read_noise_labels(*table, states, counts, diagnostics);
   }
   if (diagnostics.has_errors()) return 1;

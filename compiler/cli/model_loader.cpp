@@ -24,7 +24,8 @@ std::optional<LoadedModel> load_model(const std::string& path, SourceManager& so
   loaded.path = path;
   if (path.ends_with(".aut") || path.ends_with(".tra")) {
     formats::ReadOptions read_options;
-    read_options.max_bytes = options.max_model_bytes;
+    read_options.max_bytes = options.max_input_bytes;
+    read_options.max_number_bits = options.max_number_bits;
     read_options.max_states = options.max_states;
     loaded.model = formats::read_model_file(path, sources, diagnostics, read_options);
     if (!loaded.model) return std::nullopt;
@@ -34,7 +35,9 @@ std::optional<LoadedModel> load_model(const std::string& path, SourceManager& so
     }
     return loaded;
   }
-  loaded.ir = spec::load_spec(path, sources, diagnostics, {.max_bytes = options.max_spec_bytes});
+  loaded.ir = spec::load_spec(
+      path, sources, diagnostics,
+      {.max_bytes = options.max_spec_bytes, .max_number_bits = options.max_number_bits});
   if (!loaded.ir) return std::nullopt;
   if (!options.explore || loaded.ir->kind == model::ModelKind::Continuous) return loaded;
 

@@ -9,13 +9,15 @@
 #include "model/explicit_model.hpp"
 #include "model/model_ir.hpp"
 #include "support/diagnostics.hpp"
+#include "support/limits.hpp"
 
 namespace oasis::cli {
 
 struct LoadOptions {
-  std::uint32_t max_states = 20'000'000;
-  std::size_t max_spec_bytes = std::size_t{16} << 20;
-  std::size_t max_model_bytes = std::size_t{8} << 30;
+  std::uint32_t max_states = limits::kDefaultMaxStates;
+  std::size_t max_spec_bytes = limits::kDefaultMaxSpecBytes;
+  std::size_t max_input_bytes = limits::kDefaultMaxInputBytes;  // .aut, .tra, CSV, JSON
+  std::size_t max_number_bits = limits::kDefaultMaxNumberBits;
   bool explore = true;    // false: stop after the front end
   bool progress = false;  // report exploration progress on stderr
 };

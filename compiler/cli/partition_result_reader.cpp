@@ -1,10 +1,11 @@
 #include "cli/partition_result_reader.hpp"
 
-#include <fstream>
 #include <limits>
 #include <unordered_map>
 
 #include <nlohmann/json.hpp>
+
+#include "support/mapped_file.hpp"
 
 namespace oasis::cli {
 namespace {
@@ -135,15 +136,15 @@ class Reader {
 
 std::optional<PartitionResult> read_partition_result(const std::string& path,
                                                      const model::ExplicitModel& model,
-                                                     std::string& error) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) {
-    error = "cannot open the file";
+                                                     std::size_t max_bytes, std::string& error) {
+  MappedFile file;
+  if (!file.open(path, max_bytes, error)) {
+    error = "cannot read: " + error;
     return std::nullopt;
   }
   json document;
   try {
-    document = json::parse(in);
+    document = json::parse(file.text());
   } catch (const json::parse_error& e) {
     // nlohmann's message names the byte offset; drop its "[json.exception...]" prefix.
     const std::string what = e.what();

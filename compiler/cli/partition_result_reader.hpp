@@ -4,6 +4,7 @@
 // describe a partition of the model is an error here, so that the verifier only ever sees
 // well-formed partitions and its violations are about bisimulation.
 
+#include <cstddef>
 #include <optional>
 #include <string>
 #include <vector>
@@ -26,9 +27,10 @@ struct PartitionResult {
 };
 
 // Reads `path`. States are names as model.states.name() prints them, or integer indices.
-// On failure returns nullopt and sets `error` to one sentence (without the path).
+// On failure (also a file larger than `max_bytes`) returns nullopt and sets `error` to one
+// sentence (without the path).
 std::optional<PartitionResult> read_partition_result(const std::string& path,
                                                      const model::ExplicitModel& model,
-                                                     std::string& error);
+                                                     std::size_t max_bytes, std::string& error);
 
 }  // namespace oasis::cli

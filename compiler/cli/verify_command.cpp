@@ -71,7 +71,8 @@ int check_continuous_view(const VerifyOptions& options, const model::ModelIR& ir
 int verify_continuous(const VerifyOptions& options, const model::ModelIR& ir) {
   if (options.result.ends_with(".json")) {
     std::string error;
-    auto data = read_continuous_catalog_json(options.result, error);
+    auto data =
+        read_continuous_catalog_json(options.result, options.common.load.max_input_bytes, error);
     if (!data) {
       std::cerr << options.result << ": error: " << error << '\n';
       return 1;
@@ -111,7 +112,8 @@ int run_verify(const VerifyOptions& options) {
   std::string error;
   // A compiled binary catalog (oasisc compile): everything it carries is checked.
   if (options.result.ends_with(".bin")) return verify_catalog(options, model);
-  const auto result = read_partition_result(options.result, model, error);
+  const auto result =
+      read_partition_result(options.result, model, options.common.load.max_input_bytes, error);
   if (!result) {
     std::cerr << options.result << ": error: " << error << '\n';
     return 1;

@@ -161,7 +161,8 @@ std::optional<CsvTable> read_csv(const std::string& path, SourceManager& sources
                                  DiagnosticEngine& diagnostics, const CsvReadOptions& options) {
   MappedFile contents;
   std::string reason;
-  if (!contents.open(path, options.max_bytes, reason)) {
+  // Cells are located by 32-bit offsets, whatever the option says.
+  if (!contents.open(path, std::min(options.max_bytes, limits::kMaxAddressableBytes), reason)) {
     diagnostics.file_error(path, "cannot read: " + reason);
     return std::nullopt;
   }

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "support/diagnostics.hpp"
+#include "support/limits.hpp"
 
 namespace oasis::fit {
 
@@ -37,7 +38,7 @@ struct CsvTable {
 };
 
 struct CsvReadOptions {
-  std::size_t max_bytes = std::size_t{1} << 30;
+  std::size_t max_bytes = limits::kDefaultMaxInputBytes;  // never more than 2^32 - 1
 };
 
 // Reads `path` (added to `sources`). Every record must have as many cells as the header.

@@ -49,7 +49,7 @@ class AutReader {
         diagnostics_(diagnostics),
         options_(options),
         scan_(source_.text()),
-        cache_(model_.values),
+        cache_(model_.values, options.max_number_bits),
         errors_before_(diagnostics.error_count()) {}
 
   std::optional<model::ExplicitModel> read() {

@@ -11,14 +11,12 @@
 namespace oasis::formats {
 namespace {
 
-// Diagnostics locate bytes with 32-bit offsets; a larger file could not be reported on.
-constexpr std::size_t kMaxAddressableBytes = UINT32_MAX;
-
 std::optional<FileId> open_file(const std::string& path, SourceManager& sources,
                                 DiagnosticEngine& diagnostics, const ReadOptions& options) {
   MappedFile file;
   std::string error;
-  if (!file.open(path, std::min(options.max_bytes, kMaxAddressableBytes), error)) {
+  // Diagnostics locate bytes with 32-bit offsets; a larger file could not be reported on.
+  if (!file.open(path, std::min(options.max_bytes, limits::kMaxAddressableBytes), error)) {
     diagnostics.file_error(path, error);
     return std::nullopt;
   }

@@ -120,7 +120,7 @@ std::optional<model::ExplicitModel> read_prism(const PrismFiles& files,
                                                const ReadOptions& options) {
   const std::size_t errors = diagnostics.error_count();
   model::ExplicitModel model;
-  ValueCache values(model.values);
+  ValueCache values(model.values, options.max_number_bits);
   PrismTransitions tra;
   if (!read_prism_transitions(files.transitions, diagnostics, options, values, tra))
     return std::nullopt;

@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <optional>
 
+#include "support/limits.hpp"
 #include "support/rational.hpp"
 
 namespace oasis::formats {
@@ -12,9 +13,11 @@ namespace oasis::formats {
 struct ReadOptions {
   // Larger files are refused before they are read. Source offsets are 32-bit, so the
   // readers never accept more than 2^32 - 1 bytes whatever this says.
-  std::size_t max_bytes = 1ULL << 32;
+  std::size_t max_bytes = limits::kDefaultMaxInputBytes;
   // A file declaring more states is refused before anything is allocated for them.
-  std::uint32_t max_states = 50'000'000;
+  std::uint32_t max_states = limits::kDefaultMaxStates;
+  // A number whose numerator or denominator has more bits is refused where it is written.
+  std::size_t max_number_bits = limits::kDefaultMaxNumberBits;
   // PRISM files written with doubles rarely sum to exactly 1. When set, a choice whose
   // probabilities sum to within `tolerance` of 1 is accepted and its values are kept as
   // written (so the model is then only approximately stochastic). .aut files need no

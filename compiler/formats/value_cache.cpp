@@ -44,7 +44,8 @@ std::optional<SmallFraction> parse_small(std::string_view text) {
 
 }  // namespace
 
-ValueCache::ValueCache(RationalPool& pool) : pool_(pool) {
+ValueCache::ValueCache(RationalPool& pool, std::size_t max_number_bits)
+    : pool_(pool), max_number_bits_(max_number_bits) {
   for (ValueId id = 0; id < pool_.size(); ++id)
     remember_small(id);
 }
@@ -68,6 +69,12 @@ bool ValueCache::check_carried(ValueId id, std::string_view what, SourceRange wh
   if (judged_.size() <= id) judged_.resize(std::size_t{id} + 1, Judged::kNotYet);
   Judged& judged = judged_[id];
   if (judged == Judged::kFaithful || judged == Judged::kWarned) return true;
+  if (bit_size(pool_[id]) > max_number_bits_) {
+    judged = Judged::kRefused;
+    diagnostics.error(where,
+                      std::string(what) + " " + too_long_message(pool_[id], max_number_bits_));
+    return false;
+  }
   const DoubleFit fit = double_fit(pool_[id]);
   const std::string message = carried_value_message(pool_[id], fit, what);
   switch (fit) {

@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "support/diagnostics.hpp"
+#include "support/limits.hpp"
 #include "support/rational.hpp"
 
 namespace oasis::formats {
@@ -30,7 +31,10 @@ struct SmallFraction {
 
 class ValueCache {
  public:
-  explicit ValueCache(RationalPool& pool);
+  // Values whose numerator or denominator has more than `max_number_bits` bits are refused by
+  // check_carried (support/limits.hpp).
+  explicit ValueCache(RationalPool& pool,
+                      std::size_t max_number_bits = limits::kDefaultMaxNumberBits);
 
   // numerator / denominator; the denominator must not be 0.
   ValueId intern_fraction(std::uint64_t numerator, std::uint64_t denominator) {
@@ -51,7 +55,8 @@ class ValueCache {
   // Interns a value computed elsewhere, keeping the 64-bit form table up to date.
   ValueId intern(const Rational& value);
 
-  // Reports a value a catalog cannot carry as a double (support/double_range.hpp) at `where`:
+  // Reports a value longer than the number-size limit, or one a catalog cannot carry as a
+  // double (support/double_range.hpp), at `where`:
   // an error at every occurrence, a warning for a lossy (subnormal) value at its first one
   // only. Each distinct value is judged once, so the cost per occurrence is a lookup.
   // Returns false after an error.
@@ -86,6 +91,7 @@ class ValueCache {
   std::vector<SmallFraction> small_;
   enum class Judged : std::uint8_t { kNotYet, kFaithful, kWarned, kRefused };
   std::vector<Judged> judged_;  // by ValueId
+  std::size_t max_number_bits_;
 };
 
 }  // namespace oasis::formats

@@ -11,11 +11,12 @@
 #include "model/explicit_model.hpp"
 #include "model/model_ir.hpp"
 #include "support/diagnostics.hpp"
+#include "support/limits.hpp"
 
 namespace oasis::model {
 
 struct ExploreOptions {
-  std::uint32_t max_states = 20'000'000;
+  std::uint32_t max_states = limits::kDefaultMaxStates;
   // Called now and then with the number of states found and explored so far.
   std::function<void(std::uint64_t found, std::uint64_t explored)> progress;
 };

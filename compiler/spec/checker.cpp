@@ -23,16 +23,16 @@ using model::ModelKind;
 using model::Op;
 using model::Type;
 
-// A catalog holds at most this many contexts: the filter's cost grows with N^2.
-constexpr std::size_t kMaxContexts = 4096;
-
-// A variable's range may hold at most this many values, so that exploration can pack states.
-constexpr std::int64_t kMaxVariableRange = std::int64_t{1} << 40;
+// support/limits.hpp says why each is what it is.
+constexpr std::size_t kMaxContexts = limits::kMaxContexts;
+constexpr std::int64_t kMaxVariableRange = limits::kMaxVariableRange;
 
 class Checker {
  public:
-  Checker(const ast::SpecFile& spec, DiagnosticEngine& diagnostics)
-      : spec_(spec), diagnostics_(diagnostics), expressions_(scope_, diagnostics) {}
+  Checker(const ast::SpecFile& spec, DiagnosticEngine& diagnostics, std::size_t max_number_bits)
+      : spec_(spec),
+        diagnostics_(diagnostics),
+        expressions_(scope_, diagnostics, max_number_bits) {}
 
   std::optional<model::ModelIR> run() {
     const ast::MdpDecl* mdp = single_model();
@@ -138,13 +138,17 @@ class Checker {
   void declare_constants(const ast::MdpDecl& mdp) {
     for (const ast::ConstDecl& constant : mdp.constants) {
       auto value = expressions_.check(*constant.value, ExpressionRules{.place = "in a constant"});
-      if (!value) continue;
-      if (!value->is_constant()) {
+      if (value && !value->is_constant()) {
         diagnostics_.error(constant.value->range, "constant " + quoted(constant.name.text) +
                                                       " needs a value known before exploration");
-        continue;
+        value.reset();
       }
-      Symbol symbol{SymbolKind::Constant, 0, value->type, value->constant, constant.name.range};
+      Symbol symbol{SymbolKind::Constant,
+                    0,
+                    value ? value->type : Type::Int,
+                    value ? value->constant : Rational(0),
+                    constant.name.range,
+                    !value};
       scope_.declare(constant.name.text, constant.name.range, std::move(symbol), "name",
                      diagnostics_);
     }
@@ -305,7 +309,7 @@ class Checker {
     if (mdp.horizon) {
       ir_.objective_range = mdp.horizon->value->range;
       auto value = expressions_.constant_integer(*mdp.horizon->value, "the horizon");
-      if (value && (*value < 1 || *value > 1'000'000'000)) {
+      if (value && (*value < 1 || *value > limits::kMaxHorizon)) {
         diagnostics_.error(mdp.horizon->value->range, "horizon must be between 1 and 10^9 steps");
       } else if (value) {
         ir_.objective.horizon = static_cast<std::uint32_t>(*value);
@@ -343,7 +347,7 @@ class Checker {
     }
     if (mdp.max_cells) {
       auto value = expressions_.constant_integer(*mdp.max_cells->value, "max_cells");
-      if (value && (*value < 1 || *value > 100'000'000)) {
+      if (value && (*value < 1 || *value > limits::kMaxCellsSetting)) {
         diagnostics_.error(mdp.max_cells->value->range,
                            "max_cells must be between 1 and 10^8 cells per context");
       } else if (value) {
@@ -843,8 +847,9 @@ class Checker {
 
 }  // namespace
 
-std::optional<model::ModelIR> check(const ast::SpecFile& spec, DiagnosticEngine& diagnostics) {
-  return Checker(spec, diagnostics).run();
+std::optional<model::ModelIR> check(const ast::SpecFile& spec, DiagnosticEngine& diagnostics,
+                                    std::size_t max_number_bits) {
+  return Checker(spec, diagnostics, max_number_bits).run();
 }
 
 }  // namespace oasis::spec

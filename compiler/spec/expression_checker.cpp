@@ -92,6 +92,15 @@ std::optional<Expression> ExpressionChecker::check(const ast::Expr& expr,
         diagnostics_.error(expr.range, "number " + quoted(expr.text) + " is out of range");
         return std::nullopt;
       }
+      if (const std::size_t bits = bit_size(*value); bits > max_number_bits_) {
+        diagnostics_.error(expr.range, "number of " + std::to_string(expr.text.size()) +
+                                           " characters is too long to compute with exactly: "
+                                           "its numerator or denominator has " +
+                                           std::to_string(bits) + " bits, more than the limit of " +
+                                           std::to_string(max_number_bits_) +
+                                           " (--max-number-bits)");
+        return std::nullopt;
+      }
       const bool integer = expr.text.find_first_of(".eE") == std::string_view::npos;
       return Expression::make_constant(std::move(*value), integer ? Type::Int : Type::Real,
                                        expr.range);
@@ -119,6 +128,7 @@ std::optional<Expression> ExpressionChecker::name(const ast::Expr& expr,
     return std::nullopt;
   }
   const Symbol& symbol = entry->value;
+  if (symbol.failed) return std::nullopt;  // its definition's error was reported
   auto refuse = [&] {
     diagnostics_.error(expr.range, std::string(describe(symbol.kind)) + " " + quoted(expr.text) +
                                        " cannot be used " + std::string(rules.place));
@@ -278,11 +288,18 @@ std::optional<Expression> ExpressionChecker::fold(Expression expr) {
     } else {
       value = model::evaluate_number(expr, {});
     }
+    if (!check_number_size(value, expr.range)) return std::nullopt;
     return Expression::make_constant(std::move(value), expr.type, expr.range);
   } catch (const model::EvaluationError& error) {
     diagnostics_.error(error.where, error.what());
     return std::nullopt;
   }
+}
+
+bool ExpressionChecker::check_number_size(const Rational& value, SourceRange where) {
+  if (bit_size(value) <= max_number_bits_) return true;
+  diagnostics_.error(where, "number " + too_long_message(value, max_number_bits_));
+  return false;
 }
 
 std::optional<Expression> ExpressionChecker::check_typed(const ast::Expr& expr,

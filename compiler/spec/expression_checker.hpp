@@ -3,6 +3,7 @@
 // number), folds constant sub-expressions exactly, and refuses what the place it appears in
 // does not allow (state variables in a constant, continuous variables in a guard, ...).
 
+#include <cstddef>
 #include <optional>
 #include <string_view>
 
@@ -22,8 +23,11 @@ struct ExpressionRules {
 
 class ExpressionChecker {
  public:
-  ExpressionChecker(const Scope& scope, DiagnosticEngine& diagnostics)
-      : scope_(scope), diagnostics_(diagnostics) {}
+  // No number written or folded may have a numerator or denominator longer than
+  // `max_number_bits` (support/limits.hpp): each one is checked where it is made, so that a
+  // chain of constants squaring each other stops with an error instead of exhausting memory.
+  ExpressionChecker(const Scope& scope, DiagnosticEngine& diagnostics, std::size_t max_number_bits)
+      : scope_(scope), diagnostics_(diagnostics), max_number_bits_(max_number_bits) {}
 
   // nullopt when an error was reported.
   std::optional<model::Expression> check(const ast::Expr& expr, const ExpressionRules& rules);
@@ -50,9 +54,12 @@ class ExpressionChecker {
   std::optional<model::Expression> fold(model::Expression expr);
   std::optional<Rational> constant_value(const ast::Expr& expr, std::string_view what);
   bool expect_type(const model::Expression& expr, model::Type type, std::string_view context);
+  // False after reporting a number longer than max_number_bits_ at `where`.
+  bool check_number_size(const Rational& value, SourceRange where);
 
   const Scope& scope_;
   DiagnosticEngine& diagnostics_;
+  std::size_t max_number_bits_;
 };
 
 }  // namespace oasis::spec

@@ -8,12 +8,15 @@
 
 #include "model/model_ir.hpp"
 #include "support/diagnostics.hpp"
+#include "support/limits.hpp"
 
 namespace oasis::spec {
 
 struct FrontendOptions {
   // Specs are hand-written text; anything larger is almost certainly the wrong file.
-  std::size_t max_bytes = std::size_t{16} << 20;
+  std::size_t max_bytes = limits::kDefaultMaxSpecBytes;
+  // Bits of the numerator or denominator of any number the spec holds or folds.
+  std::size_t max_number_bits = limits::kDefaultMaxNumberBits;
 };
 
 // Reads `path` into `sources` and checks it. nullopt when any error was reported.
@@ -22,6 +25,7 @@ std::optional<model::ModelIR> load_spec(const std::string& path, SourceManager& 
                                         const FrontendOptions& options = {});
 
 // The same for text already in `sources` (tests, fuzzing).
-std::optional<model::ModelIR> check_spec_text(FileId file, DiagnosticEngine& diagnostics);
+std::optional<model::ModelIR> check_spec_text(FileId file, DiagnosticEngine& diagnostics,
+                                              const FrontendOptions& options = {});
 
 }  // namespace oasis::spec

@@ -9,10 +9,11 @@
 #include "spec/ast.hpp"
 #include "spec/token.hpp"
 #include "support/diagnostics.hpp"
+#include "support/limits.hpp"
 
 namespace oasis::spec {
 
-inline constexpr int kMaxNesting = 200;
+inline constexpr int kMaxNesting = limits::kMaxNesting;
 
 ast::SpecFile parse(FileId file, const std::vector<Token>& tokens, DiagnosticEngine& diagnostics);
 

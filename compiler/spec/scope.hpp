@@ -20,6 +20,9 @@ struct Symbol {
   model::Type type = model::Type::Int;
   Rational value;  // constants only
   SourceRange declared;
+  // A constant whose definition had an error (reported there): its uses are refused without
+  // a message, so that one bad constant is one error, not one more per use.
+  bool failed = false;
 };
 
 std::string_view describe(SymbolKind kind);

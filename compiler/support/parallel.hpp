@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <atomic>
 #include <cstddef>
+#include <exception>
+#include <mutex>
 #include <thread>
 #include <vector>
 
@@ -17,21 +19,39 @@ inline std::size_t thread_count(unsigned jobs, std::size_t items) {
   return std::max<std::size_t>(1, std::min<std::size_t>(jobs == 0 ? hardware : jobs, items));
 }
 
-// Calls work(i) once for every i in [0, items), on thread_count(jobs, items) threads, the
-// calling one included; returns when all are done. `work` must not throw.
+// Calls work(i) once for every i in [0, items), on up to thread_count(jobs, items) threads,
+// the calling one included; returns when all are done. If work(i) throws (std::bad_alloc when
+// the memory budget runs out, support/memory_budget.hpp), no further item is started and the
+// first exception is rethrown here once every thread has stopped; an exception escaping a
+// std::thread would std::terminate the process instead. A thread that cannot be started
+// leaves its share to the others.
 template <class Work>
 void parallel_for(std::size_t items, unsigned jobs, Work&& work) {
   std::atomic<std::size_t> next{0};
+  std::mutex failure_lock;
+  std::exception_ptr failure;
   auto worker = [&] {
-    for (std::size_t i = next++; i < items; i = next++)
-      work(i);
+    try {
+      for (std::size_t i = next++; i < items; i = next++)
+        work(i);
+    } catch (...) {
+      next = items;  // start nothing more
+      const std::lock_guard lock(failure_lock);
+      if (!failure) failure = std::current_exception();
+    }
   };
   std::vector<std::thread> threads;
-  for (std::size_t t = 1; t < thread_count(jobs, items); ++t)
-    threads.emplace_back(worker);
+  try {
+    threads.reserve(thread_count(jobs, items));
+    for (std::size_t t = 1; t < thread_count(jobs, items); ++t)
+      threads.emplace_back(worker);
+  } catch (const std::exception&) {
+    // Out of memory or of threads: the ones running (and this one) do all the work.
+  }
   worker();
   for (std::thread& thread : threads)
     thread.join();
+  if (failure) std::rethrow_exception(failure);
 }
 
 }  // namespace oasis

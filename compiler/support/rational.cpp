@@ -1,11 +1,14 @@
 #include "support/rational.hpp"
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
 #include <cstring>
 #include <utility>
+
+#include "support/limits.hpp"
 
 namespace oasis {
 namespace {
@@ -14,9 +17,8 @@ bool is_digit(char c) {
   return c >= '0' && c <= '9';
 }
 
-// Exponents beyond this are refused: 10^100000 has ~330k bits, which is already absurd for a
-// probability and keeps hostile input from asking GMP for gigabytes.
-constexpr long kMaxExponent = 100000;
+// Exponents beyond this are refused (support/limits.hpp).
+constexpr long kMaxExponent = limits::kMaxDecimalExponent;
 
 Rational power_of_ten(long exponent) {
   mpz_class power;
@@ -100,6 +102,18 @@ double to_double(const Rational& value) {
   std::uint64_t bits = 0;
   std::memcpy(&bits, &truncated, sizeof bits);
   return (bits & 1U) == 0 ? truncated : away;
+}
+
+std::size_t bit_size(const Rational& value) {
+  return std::max(mpz_sizeinbase(value.get_num_mpz_t(), 2),
+                  mpz_sizeinbase(value.get_den_mpz_t(), 2));
+}
+
+std::string too_long_message(const Rational& value, std::size_t max_bits) {
+  return "about " + scientific(value) +
+         " is too long to compute with exactly: its numerator or denominator has " +
+         std::to_string(bit_size(value)) + " bits, more than the limit of " +
+         std::to_string(max_bits) + " (--max-number-bits)";
 }
 
 std::string scientific(const Rational& value) {

@@ -33,6 +33,15 @@ inline constexpr std::size_t kMaxDescribedDigits = 48;
 std::string scientific(const Rational& value);
 // The nearest double (what emitted tables carry).
 double to_double(const Rational& value);
+// The bits of the longer of the (canonical) numerator and denominator: the measure the
+// number-size limit (limits::kDefaultMaxNumberBits, --max-number-bits) bounds. Products and
+// sums of numbers of at most n bits have at most 2n + 1, so checking every result keeps all
+// exact arithmetic within a constant factor of the limit.
+std::size_t bit_size(const Rational& value);
+// "about 1e-399996 is too long to compute with exactly: its numerator or denominator has N
+// bits, more than the limit of M (--max-number-bits)", for a value over the limit. The value is
+// shown in scientific form only: its exact text would take long to print and be unreadable.
+std::string too_long_message(const Rational& value, std::size_t max_bits);
 
 std::size_t hash_value(const Rational& value);
 

@@ -1,0 +1,74 @@
+#pragma once
+// Every limit oasisc enforces on its inputs and its own work, in one place: its default, the
+// flag that changes it (or none, when the bound is structural), and what happens beyond it.
+// docs/RELIABILITY.md ("Limits") has the same table for users; keep the two in step.
+//
+// Each limit is reported as an error, never a crash: a spec's at its file:line:col, a file's
+// as `path: error: ...`, a command's as `oasisc: error: ...`; the status is 1 and no output
+// file is left half-written.
+
+#include <cstddef>
+#include <cstdint>
+
+namespace oasis::limits {
+
+// --- Input files -------------------------------------------------------------------------
+
+// .oasis specs (--max-spec-size). Specs are hand-written; anything larger is almost
+// certainly the wrong file.
+inline constexpr std::size_t kDefaultMaxSpecBytes = std::size_t{16} << 20;
+
+// Machine-written inputs: .aut and PRISM models, the fits' CSV logs, the JSON results that
+// `verify` reads (--max-input-size). Source positions are 32-bit offsets, so no text input is
+// ever read past 2^32 - 1 bytes whatever the flag says.
+inline constexpr std::size_t kMaxAddressableBytes = UINT32_MAX;
+inline constexpr std::size_t kDefaultMaxInputBytes = kMaxAddressableBytes;
+
+// Binary catalogs: the runtime's loader refuses files larger than rt::kMaxCatalogFileBytes
+// (8 GiB, runtime/include/oasis/rt/catalog_sections.hpp), and `compile` refuses to write one.
+
+// --- The spec language -------------------------------------------------------------------
+
+// Expressions nested deeper than this are refused, never a stack overflow (no flag).
+inline constexpr int kMaxNesting = 200;
+
+// The numerator and the denominator of every exact number a spec or a model file holds, and
+// of every constant the checker folds, have at most this many bits (--max-number-bits):
+// 2^20 bits is about 315,000 decimal digits, room for 1e-100000 squared, while repeated
+// squaring of a constant (`const b = a * a; const c = b * b; ...`) stops with an error at
+// the constant instead of doubling its size until memory runs out.
+inline constexpr std::size_t kDefaultMaxNumberBits = std::size_t{1} << 20;
+
+// Decimal exponents beyond this (`1e100001`) are refused as out of range (no flag): 10^100000
+// already has about 330,000 bits.
+inline constexpr long kMaxDecimalExponent = 100000;
+
+// A variable's range holds at most this many values, so that exploration can pack states.
+inline constexpr std::int64_t kMaxVariableRange = std::int64_t{1} << 40;
+
+// A catalog has at most this many contexts: the runtime filter's cost grows with N^2.
+inline constexpr std::size_t kMaxContexts = 4096;
+
+// `horizon n;` is at most this many steps.
+inline constexpr std::int64_t kMaxHorizon = 1'000'000'000;
+
+// `max_cells n;` (and --max-cells) is at most this many cells per context; the defaults when
+// neither gives one are pipeline::kDefaultGridCells and pipeline::kDefaultPolytopeCells.
+inline constexpr std::int64_t kMaxCellsSetting = 100'000'000;
+
+// --- The work ----------------------------------------------------------------------------
+
+// Exploration of a factored spec, and the state count an .aut or PRISM header may declare,
+// stop past this many states (--max-states).
+inline constexpr std::uint32_t kDefaultMaxStates = 20'000'000;
+
+// Diagnostics shown before a command stops (--max-errors).
+inline constexpr std::size_t kDefaultMaxErrors = 20;
+
+// The memory a command may allocate (--memory-budget): by default this fraction of the
+// machine's memory (the smaller of physical RAM and the control group's limit), so that one
+// oasisc never drives the machine into the kernel's OOM killer and reports instead
+// (support/memory_budget.hpp).
+inline constexpr unsigned kDefaultMemoryBudgetPercent = 75;
+
+}  // namespace oasis::limits
