@@ -17,8 +17,7 @@ struct AxisRow {
 
 class RowBuilder {
  public:
-  RowBuilder(const ContextGeometry& geometry, const Grid& grid, RationalPool& values)
-      : geometry_(geometry), grid_(grid), values_(values) {}
+  RowBuilder(const Grid& grid, RationalPool& values) : grid_(grid), values_(values) {}
 
   // The successor distribution of axis i from a cell with centre `centre` under `action`.
   void axis_row(const AxisDynamics& action, std::size_t i, const std::vector<Rational>& centre,
@@ -90,7 +89,6 @@ class RowBuilder {
     }
   }
 
-  const ContextGeometry& geometry_;
   const Grid& grid_;
   RationalPool& values_;
   std::unordered_map<std::uint64_t, ValueId> products_;
@@ -169,7 +167,7 @@ model::ExplicitModel finite_mdp(const ContextGeometry& geometry, const Grid& gri
   model::RewardTable rewards;
   rewards.state.assign(num_states, RationalPool::kZero);
 
-  RowBuilder rows(geometry, grid, mdp.values);
+  RowBuilder rows(grid, mdp.values);
   std::vector<std::uint32_t> index(grid.dimension());
   std::vector<AxisRow> axes(grid.dimension());
   for (std::size_t cell = 0; cell < grid.num_cells(); ++cell) {
