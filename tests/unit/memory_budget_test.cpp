@@ -1,7 +1,7 @@
 // A compile past its memory budget stops with "oasisc: error: out of memory ..." and status 1,
 // and leaves no output (and the previous output whole). Sanitizer builds cannot enforce a
-// budget (their shadow memory), so this file carries the ctest label memory_budget, which the
-// asan test preset excludes; run there by hand, its tests fail and say why.
+// budget (their shadow memory), so the asan test preset leaves these tests out by name
+// (CMakePresets.json); run there by hand, they fail and say why.
 
 #include "support/memory_budget.hpp"
 

@@ -12,7 +12,9 @@
 // tolerance, else 0, where R^i(s) = block_reward[block_of[s]] of abstraction i.
 //
 // Options beyond the paper (all off by default, see FilterOptions): a zero-likelihood guard,
-// a soft detection model, and a robust joint filter over (abstraction, true state).
+// a soft detection model, and a robust joint filter over (abstraction, true state). And one
+// call beyond it: weigh_context(), a second measurement of the step from a sensor that sees
+// the context itself now and then (the Go1's camera seeing the treat in someone's hand).
 //
 // No heap allocation after construction: the filter works in a caller-provided buffer of
 // doubles (workspace_size() tells how many), which may be a std::vector allocated once, a
