@@ -93,12 +93,8 @@ std::optional<Expression> ExpressionChecker::check(const ast::Expr& expr,
         return std::nullopt;
       }
       if (const std::size_t bits = bit_size(*value); bits > max_number_bits_) {
-        diagnostics_.error(expr.range, "number of " + std::to_string(expr.text.size()) +
-                                           " characters is too long to compute with exactly: "
-                                           "its numerator or denominator has " +
-                                           std::to_string(bits) + " bits, more than the limit of " +
-                                           std::to_string(max_number_bits_) +
-                                           " (--max-number-bits)");
+        const std::string subject = "number of " + std::to_string(expr.text.size()) + " characters";
+        diagnostics_.error(expr.range, too_long_message(subject, bits, max_number_bits_));
         return std::nullopt;
       }
       const bool integer = expr.text.find_first_of(".eE") == std::string_view::npos;

@@ -109,11 +109,15 @@ std::size_t bit_size(const Rational& value) {
                   mpz_sizeinbase(value.get_den_mpz_t(), 2));
 }
 
-std::string too_long_message(const Rational& value, std::size_t max_bits) {
-  return "about " + scientific(value) +
+std::string too_long_message(std::string_view subject, std::size_t bits, std::size_t max_bits) {
+  return std::string(subject) +
          " is too long to compute with exactly: its numerator or denominator has " +
-         std::to_string(bit_size(value)) + " bits, more than the limit of " +
-         std::to_string(max_bits) + " (--max-number-bits)";
+         std::to_string(bits) + " bits, more than the limit of " + std::to_string(max_bits) +
+         " (--max-number-bits)";
+}
+
+std::string too_long_message(const Rational& value, std::size_t max_bits) {
+  return too_long_message("about " + scientific(value), bit_size(value), max_bits);
 }
 
 std::string scientific(const Rational& value) {

@@ -42,6 +42,8 @@ std::size_t bit_size(const Rational& value);
 // bits, more than the limit of M (--max-number-bits)", for a value over the limit. The value is
 // shown in scientific form only: its exact text would take long to print and be unreadable.
 std::string too_long_message(const Rational& value, std::size_t max_bits);
+// The same text about another subject ("number of 9000 characters"), of `bits` bits.
+std::string too_long_message(std::string_view subject, std::size_t bits, std::size_t max_bits);
 
 std::size_t hash_value(const Rational& value);
 

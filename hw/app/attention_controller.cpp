@@ -98,21 +98,21 @@ AttentionController::AttentionController(const rt::CatalogView& catalog,
 // What the treat tag says beyond the reward (ControllerSettings::treat_sighting and
 // tag_unseen_likelihood); nothing to weigh on a catalog without the Go1 spec's contexts.
 void AttentionController::weigh_tag_evidence(const PerceptionResult& seen) {
-  std::fill(tag_likelihood_.begin(), tag_likelihood_.end(), 1.0);
-  bool informative = false;
   if (seen.holder != TreatHolder::kNone) {
-    const std::optional<std::uint32_t> named =
-        context_of_holder_[static_cast<std::size_t>(seen.holder) - 1];
+    const std::optional<std::uint32_t> named = context_of_holder_[person_of_holder(seen.holder)];
     if (settings_.treat_sighting == 0.0 || !named) return;
     std::fill(tag_likelihood_.begin(), tag_likelihood_.end(), 1.0 - settings_.treat_sighting);
     tag_likelihood_[*named] = settings_.treat_sighting;
+    filter_.weigh_context(tag_likelihood_.data(), tag_likelihood_.size());
+    return;
+  }
+  if (settings_.tag_unseen_likelihood >= 1.0) return;  // 1: absence says nothing
+  std::fill(tag_likelihood_.begin(), tag_likelihood_.end(), 1.0);
+  bool informative = false;
+  for (std::size_t person = 0; person < 2; ++person) {
+    if (!context_of_holder_[person] || !seen.humans[person].tag_would_show) continue;
+    tag_likelihood_[*context_of_holder_[person]] = settings_.tag_unseen_likelihood;
     informative = true;
-  } else if (settings_.tag_unseen_likelihood < 1.0) {
-    for (std::size_t person = 0; person < 2; ++person) {
-      if (!context_of_holder_[person] || !seen.humans[person].tag_would_show) continue;
-      tag_likelihood_[*context_of_holder_[person]] = settings_.tag_unseen_likelihood;
-      informative = true;
-    }
   }
   if (informative) filter_.weigh_context(tag_likelihood_.data(), tag_likelihood_.size());
 }

@@ -28,10 +28,6 @@ double tag_depth_m(const Frame& frame, const TagDetection& tag) {
   return *middle * frame.depth_scale_m_per_unit;
 }
 
-TreatHolder holder_for_index(std::size_t index) {
-  return index == 0 ? TreatHolder::kHuman1 : TreatHolder::kHuman2;
-}
-
 }  // namespace
 
 Perception::Perception(PerceptionConfig config)
@@ -55,7 +51,7 @@ PerceptionResult Perception::step(const Frame& frame) {
     result.holder = holder;
   }
   if (result.holder != TreatHolder::kNone) {
-    const HumanEstimate& holder = result.humans[static_cast<std::size_t>(result.holder) - 1];
+    const HumanEstimate& holder = result.humans[person_of_holder(result.holder)];
     result.reward = config_.reach.contains(holder.x_m, holder.y_m) ? 1.0 : 0.0;
   }
   const CarriedTag carried{config_.tag_black_edge_m, config_.tag_height_m,
@@ -105,7 +101,7 @@ TreatHolder Perception::holder_of(const Frame& frame, const TagDetection& tag,
     }
     if (score < best_score) {
       best_score = score;
-      holder = holder_for_index(i);
+      holder = holder_of_person(i);
     }
   }
   return holder;

@@ -49,7 +49,7 @@ void HallwayPeople::start_standing(double time_s) {
 }
 
 TreatHolder HallwayPeople::holder() const {
-  return holder_ == 0 ? TreatHolder::kHuman1 : TreatHolder::kHuman2;
+  return holder_of_person(holder_);
 }
 
 void HallwayPeople::step(double time_s, double dt_s, const go1::Pose& robot,

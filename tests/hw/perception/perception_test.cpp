@@ -141,7 +141,7 @@ TEST(Perception, RewardIsOneExactlyWhenTheHolderIsWithinReach) {
   for (TreatHolder holder : {TreatHolder::kHuman1, TreatHolder::kHuman2})
     for (const Case& c : cases) {
       SyntheticScene scene;
-      const auto holder_index = static_cast<std::size_t>(holder) - 1;
+      const auto holder_index = person_of_holder(holder);
       scene.people[holder_index] = c.holder_at;
       scene.people[1 - holder_index] = at_bearing(2.5, c.holder_at.y_m > 0 ? -25.0 : 25.0);
       scene.holder = holder;
