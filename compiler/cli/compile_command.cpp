@@ -19,6 +19,7 @@
 #include "codegen/dot_catalog.hpp"
 #include "codegen/json_catalog.hpp"
 #include "oasis/rt/catalog_sections.hpp"
+#include "oasis/rt/spec_hash.hpp"
 #include "pipeline/catalog_data.hpp"
 #include "pipeline/continuous_catalog.hpp"
 #include "pipeline/continuous_catalog_data.hpp"
@@ -194,7 +195,7 @@ void print_continuous_summary(const pipeline::ContinuousCatalog& catalog, std::F
 // nothing that changes between identical runs.
 std::string marker_text(const CompileOptions& options, std::uint64_t hash, const OutputSet& out) {
   std::string text = "written by oasisc " + std::string(OASIS_VERSION) + " compile\n";
-  text += "spec " + fs::path(options.spec).filename().string() + " " + pipeline::hash_text(hash) +
+  text += "spec " + fs::path(options.spec).filename().string() + " " + rt::spec_hash_text(hash) +
           "\nfiles";
   for (const std::string& name : out.names())
     text += " " + name;

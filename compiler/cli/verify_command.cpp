@@ -10,6 +10,7 @@
 #include "cli/continuous_json_reader.hpp"
 #include "cli/partition_result_reader.hpp"
 #include "oasis/rt/catalog_file.hpp"
+#include "oasis/rt/spec_hash.hpp"
 #include "pipeline/catalog_data.hpp"
 #include "verify/catalog_check.hpp"
 #include "verify/continuous_check.hpp"
@@ -32,7 +33,7 @@ bool compiled_from_model(const VerifyOptions& options, const rt::CatalogView& vi
   const std::uint64_t hash = pipeline::spec_hash_of_file(options.model);
   if (view.spec_hash == hash) return true;
   std::cerr << options.result << ": error: the catalog was compiled from another spec (hash "
-            << pipeline::hash_text(view.spec_hash) << ", this one has " << pipeline::hash_text(hash)
+            << rt::spec_hash_text(view.spec_hash) << ", this one has " << rt::spec_hash_text(hash)
             << "); recompile it\n";
   return false;
 }

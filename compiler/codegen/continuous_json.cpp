@@ -2,6 +2,7 @@
 
 #include "codegen/json_catalog.hpp"
 #include "oasis/rt/catalog_view.hpp"
+#include "oasis/rt/spec_hash.hpp"
 #include "pipeline/catalog_data.hpp"
 #include "pipeline/continuous_catalog_data.hpp"
 
@@ -211,7 +212,7 @@ void write_continuous_catalog_json(JsonWriter& out, const pipeline::ContinuousCa
   out.key("name");
   out.value(catalog.name);
   out.key("spec_hash");
-  out.value(pipeline::hash_text(catalog.spec_hash));
+  out.value(rt::spec_hash_text(catalog.spec_hash));
   out.key("compiler_version");
   out.value(catalog.compiler_version);
   out.key("variables");

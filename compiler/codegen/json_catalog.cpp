@@ -1,6 +1,6 @@
 #include "codegen/json_catalog.hpp"
 
-#include <cstdio>
+#include "oasis/rt/spec_hash.hpp"
 
 namespace oasis::codegen {
 namespace {
@@ -70,7 +70,7 @@ nlohmann::json catalog_json(const pipeline::CatalogData& catalog) {
   nlohmann::json out;
   out["format"] = rt::kCatalogFormat;
   out["name"] = catalog.name;
-  out["spec_hash"] = pipeline::hash_text(catalog.spec_hash);
+  out["spec_hash"] = rt::spec_hash_text(catalog.spec_hash);
   out["compiler_version"] = catalog.compiler_version;
   out["states"] = catalog.state_names;
   out["actions"] = catalog.action_names;

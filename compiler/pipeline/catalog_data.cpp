@@ -1,7 +1,5 @@
 #include "pipeline/catalog_data.hpp"
 
-#include <cstdio>
-
 #include "oasis/rt/spec_hash.hpp"
 #include "support/mapped_file.hpp"
 
@@ -102,12 +100,6 @@ std::uint64_t spec_hash_of_file(const std::string& path) {
   MappedFile file;
   std::string error;
   return file.open(path, std::size_t{1} << 34, error) ? rt::spec_hash(file.text()) : 0;
-}
-
-std::string hash_text(std::uint64_t hash) {
-  char text[19];
-  std::snprintf(text, sizeof text, "%016llx", static_cast<unsigned long long>(hash));
-  return text;
 }
 
 }  // namespace oasis::pipeline

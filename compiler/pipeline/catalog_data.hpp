@@ -102,7 +102,5 @@ CsrData csr_of(const model::ExplicitModel& model, const model::TransitionMatrix&
 // remembers which spec it was compiled from. 0 when the file cannot be read (the caller has
 // read it already).
 std::uint64_t spec_hash_of_file(const std::string& path);
-// A hash as 16 hexadecimal digits, as JSON and messages show it.
-std::string hash_text(std::uint64_t hash);
 
 }  // namespace oasis::pipeline

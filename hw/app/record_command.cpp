@@ -26,7 +26,7 @@ struct RecordRequest {
 int record(const RecordRequest& request) {
   settings::Go1Settings settings = settings_or_defaults(request.config);
   settings.source = source_option(request.source);
-  const SessionCatalog catalog(settings.loop.catalog);
+  const SessionCatalog catalog(settings.loop.catalog, settings.loop.catalog_spec);
   DryRunLink standing;
   SessionSource source = open_source(settings, catalog.view(), standing);
   camera::RecordingWriter writer(request.folder, request.replace ? camera::ExistingFolder::kReplace

@@ -25,6 +25,7 @@ struct RunRequest {
   std::string config;  // empty: the built-in defaults (equal to hw/config/go1.yaml)
   std::string source;  // empty: the config's
   std::string catalog;
+  std::string catalog_spec;
   std::string robot;  // ADDRESS[:PORT]; empty: the config's
   std::string log_path;
   std::optional<std::uint64_t> steps;
@@ -39,6 +40,7 @@ settings::Go1Settings effective_settings(const RunRequest& request) {
   settings::Go1Settings result = settings_or_defaults(request.config);
   if (!request.source.empty()) result.source = source_option(request.source);
   if (!request.catalog.empty()) result.loop.catalog = request.catalog;
+  if (!request.catalog_spec.empty()) result.loop.catalog_spec = request.catalog_spec;
   if (!request.robot.empty()) {
     try {
       const bool has_port = request.robot.find(':') != std::string::npos;
@@ -80,7 +82,7 @@ void print_score(const std::vector<log::StepRecord>& records) {
 
 int run_session(const RunRequest& request) {
   const settings::Go1Settings settings = effective_settings(request);
-  const SessionCatalog catalog(settings.loop.catalog);
+  const SessionCatalog catalog(settings.loop.catalog, settings.loop.catalog_spec);
   ControllerSettings controller_options = controller_settings(settings, catalog.view());
 
   go1::install_stop_signal_handlers();
@@ -143,6 +145,10 @@ void add_common_options(CLI::App& command, RunRequest& request) {
   command.add_option("--catalog", request.catalog,
                      "'linked' (the Go1 catalog compiled into this program) or a .bin catalog "
                      "written by oasisc compile; default: the config's loop.catalog");
+  command.add_option("--catalog-spec", request.catalog_spec,
+                     "the spec the catalog must have been compiled from, checked by its spec hash: "
+                     "'linked' (the linked catalog's spec), a .oasis file, or 'any'; default: "
+                     "the config's loop.catalog_spec");
   command.add_option("--steps", request.steps, "stop after this many control steps");
   command.add_option("--log", request.log_path,
                      "write every step as a JSON line (hw/log/README.md) to this file");

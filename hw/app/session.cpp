@@ -1,5 +1,10 @@
 #include "app/session.hpp"
 
+#include <cstdint>
+#include <fstream>
+#include <optional>
+#include <sstream>
+
 #include "app/go1_link.hpp"
 #include "app/synthetic_world.hpp"
 #include "app/treat_contexts.hpp"
@@ -8,6 +13,7 @@
 #include "camera/recorded_source.hpp"
 #include "go1/link_error.hpp"
 #include "go1_treat_catalog.hpp"
+#include "oasis/rt/spec_hash.hpp"
 
 namespace oasis::hw::app {
 namespace {
@@ -71,16 +77,41 @@ ControllerSettings controller_settings(const settings::Go1Settings& settings,
   return result;
 }
 
-SessionCatalog::SessionCatalog(const std::string& setting) {
+namespace {
+
+// The spec hash a catalog must carry, or nothing for "any".
+std::optional<std::uint64_t> expected_spec_hash(const std::string& spec_setting) {
+  if (spec_setting == settings::kAnyCatalogSpec) return std::nullopt;
+  if (spec_setting == settings::kLinkedCatalog) return go1_treat::catalog().spec_hash;
+  std::ifstream in(spec_setting, std::ios::binary);
+  std::ostringstream text;
+  if (!(in && text << in.rdbuf()))
+    throw SetupError("loop.catalog_spec: cannot read " + spec_setting);
+  return rt::spec_hash(text.str());
+}
+
+}  // namespace
+
+SessionCatalog::SessionCatalog(const std::string& setting, const std::string& spec_setting) {
+  const std::optional<std::uint64_t> spec_hash = expected_spec_hash(spec_setting);
   if (setting == settings::kLinkedCatalog) {
     view_ = &go1_treat::catalog();
     description_ = "linked catalog go1_treat (generated/go1_treat)";
-    return;
+  } else {
+    loaded_ = rt::LoadedCatalog::from_file(setting);
+    if (!loaded_.ok()) throw SetupError("catalog " + setting + ": " + loaded_.error());
+    view_ = &loaded_.view();
+    description_ = "catalog " + setting;
   }
-  loaded_ = rt::LoadedCatalog::from_file(setting);
-  if (!loaded_.ok()) throw SetupError("catalog " + setting + ": " + loaded_.error());
-  view_ = &loaded_.view();
-  description_ = "catalog " + setting;
+  if (spec_hash && view_->spec_hash != *spec_hash) {
+    const std::string spec =
+        spec_setting == settings::kLinkedCatalog ? "the linked catalog's spec" : spec_setting;
+    throw SetupError(
+        description_ + " was compiled from another spec than " + spec + " (spec hash " +
+        rt::spec_hash_text(view_->spec_hash) + ", expected " + rt::spec_hash_text(*spec_hash) +
+        "): recompile it with oasisc compile, or set loop.catalog_spec (--catalog-spec) "
+        "to the spec it came from, or to any");
+  }
 }
 
 std::unique_ptr<RobotLink> open_link(const settings::Go1Settings& settings, bool dry_run,

@@ -33,10 +33,12 @@ settings::Go1Settings settings_or_defaults(const std::string& file);
 // The value of a --source option: synthetic, camera or recorded:DIR. Throws SetupError.
 settings::FrameSourceSetting source_option(const std::string& text);
 
-// The catalog the loop runs: the one linked into oasis-go1, or a .bin file. Throws SetupError.
+// The catalog the loop runs: the one linked into oasis-go1, or a .bin file, compiled from the
+// spec `spec_setting` names (LoopSettings::catalog_spec: "linked", a .oasis path, or "any").
+// Throws SetupError when the file cannot be loaded or was compiled from another spec.
 class SessionCatalog {
  public:
-  explicit SessionCatalog(const std::string& setting);  // "linked" or a path
+  SessionCatalog(const std::string& setting, const std::string& spec_setting);
   const rt::CatalogView& view() const { return *view_; }
   std::string describe() const { return description_; }
 

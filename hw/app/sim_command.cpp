@@ -26,6 +26,7 @@ struct SimRequest {
   std::string config;    // oasis-go1 settings; empty: the defaults (hw/config/go1.yaml)
   std::string scenario;  // empty: the defaults (hw/config/hallway.yaml)
   std::string catalog;
+  std::string catalog_spec;
   std::string no_attention_catalog = OASIS_NO_ATTENTION_CATALOG;
   int trials = 12;
   std::uint64_t seed = 1;
@@ -117,7 +118,8 @@ int simulate(const SimRequest& request) {
   check_request(request);
   settings::Go1Settings settings = settings_or_defaults(request.config);
   if (!request.catalog.empty()) settings.loop.catalog = request.catalog;
-  const SessionCatalog catalog(settings.loop.catalog);
+  if (!request.catalog_spec.empty()) settings.loop.catalog_spec = request.catalog_spec;
+  const SessionCatalog catalog(settings.loop.catalog, settings.loop.catalog_spec);
   if (!request.quiet && !request.json)
     std::cerr << "oasis-go1 sim: " << catalog.describe() << "; " << request.trials
               << " trial(s) from seed " << request.seed << "; perception " << request.perception
@@ -128,7 +130,8 @@ int simulate(const SimRequest& request) {
   nlohmann::ordered_json json = nlohmann::ordered_json::object();
   for (const std::string& name : request.controllers) {
     const SimControllerKind& kind = *find_sim_controller(name);
-    if (kind.full_state_catalog && !full_state) full_state.emplace(request.no_attention_catalog);
+    if (kind.full_state_catalog && !full_state)
+      full_state.emplace(request.no_attention_catalog, settings.loop.catalog_spec);
     const rt::CatalogView& view = kind.full_state_catalog ? full_state->view() : catalog.view();
     const log::Table2Summary summary =
         run_controller(request, trial_setup(request, settings, view), view, kind);
@@ -168,6 +171,11 @@ CommandRunner add_sim_command(CLI::App& app) {
                    "oasis-go1 settings: actions, loop rate, camera, perception, reach")
       ->check(CLI::ExistingFile);
   command->add_option("--catalog", request->catalog, "'linked' or a .bin catalog");
+  command->add_option(
+      "--catalog-spec", request->catalog_spec,
+      "the spec the catalog must have been compiled from, checked by its spec hash: "
+      "'linked' (the linked catalog's spec), a .oasis file, or 'any'; default: "
+      "the config's loop.catalog_spec");
   command
       ->add_option("--no-attention-catalog", request->no_attention_catalog,
                    "the catalog the no-attention controller runs on (oasisc compile "

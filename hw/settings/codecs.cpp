@@ -165,6 +165,13 @@ bool CatalogCodec::parse(std::string_view text, std::string& out) const {
   return true;
 }
 
+bool CatalogSpecCodec::parse(std::string_view text, std::string& out) const {
+  const bool spec = text.size() > 6 && text.substr(text.size() - 6) == ".oasis";
+  if (text != kLinkedCatalog && text != kAnyCatalogSpec && !spec) return false;
+  out = std::string(text);
+  return true;
+}
+
 bool SourceCodec::parse(std::string_view text, FrameSourceSetting& out) const {
   constexpr std::string_view kRecorded = "recorded:";
   if (text == "synthetic") {

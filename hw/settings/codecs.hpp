@@ -200,6 +200,13 @@ struct CatalogCodec {
   std::string format(const std::string& value) const { return yaml_string(value); }
 };
 
+// "linked", "any", or a path to a .oasis spec: what a catalog must have been compiled from.
+struct CatalogSpecCodec {
+  std::string expected() const { return "linked, any, or a path to a .oasis spec"; }
+  bool parse(std::string_view text, std::string& out) const;
+  std::string format(const std::string& value) const { return yaml_string(value); }
+};
+
 // The dotted path of `key` inside the sections `prefix` ("robot", "port" -> "robot.port"), as
 // errors and comparisons name keys.
 inline std::string dotted_key(const std::vector<std::string>& prefix, std::string_view key) {

@@ -243,6 +243,8 @@ void describe(V& v, S& s) {
             "the spec's period 0.2 s; actions: assumes it");
     v.value("catalog", s.loop.catalog, CatalogCodec{},
             "linked (built in), or a path to a .bin catalog");
+    v.value("catalog_spec", s.loop.catalog_spec, CatalogSpecCodec{},
+            "its spec: linked's, a .oasis path, or any (no check)");
     v.value("missing_human", s.loop.missing_human, kMissingHumanCodec,
             "a person not seen: hold_last or outside");
     v.value("clamp_to_domain", s.loop.clamp_to_domain, BoolCodec{},

@@ -64,11 +64,16 @@ std::optional<FrameSourceSetting> parse_frame_source(std::string_view text);
 std::string to_string(const FrameSourceSetting& source);
 
 inline constexpr std::string_view kLinkedCatalog = "linked";
+inline constexpr std::string_view kAnyCatalogSpec = "any";
 
 struct LoopSettings {
   double rate_hz = 5.0;  // the spec's `period 0.2`
   // "linked": the catalog compiled into oasis-go1; otherwise a path to a .bin catalog file.
   std::string catalog = std::string(kLinkedCatalog);
+  // The spec the catalog must have been compiled from, checked by its spec hash: "linked"
+  // (the spec of the linked catalog, specs/go1_treat.oasis as this program was built), a path
+  // to a .oasis spec, or "any" (no check). A catalog left behind by an edited spec is refused.
+  std::string catalog_spec = std::string(kLinkedCatalog);
   std::vector<ActionVelocity> actions = spec_actions();  // one per catalog action name
   MissingHuman missing_human = MissingHuman::kHoldLast;
   // A person seen outside the catalog's domain is put at its nearest edge

@@ -101,6 +101,31 @@ TEST(CatalogFile, FileOnDiskLoads) {
   EXPECT_NE(missing.error().find("cannot open"), std::string::npos);
 }
 
+TEST(CatalogFile, ACatalogOfAnotherSpecIsRefusedByItsHash) {
+  const test::ScratchDirectory scratch("oasis_catalog_file_test");
+  const auto path = (scratch.path() / "catalog.bin").string();
+  std::string error;
+  ASSERT_TRUE(codegen::write_binary_catalog(paper_catalog(), path, error)) << error;
+
+  const rt::LoadedCatalog same = rt::LoadedCatalog::from_file(path, rt::spec_hash("spec"));
+  EXPECT_TRUE(same.ok()) << same.error();
+  const rt::LoadedCatalog edited = rt::LoadedCatalog::from_file(path, rt::spec_hash("spec "));
+  EXPECT_FALSE(edited.ok());
+  EXPECT_EQ(edited.error(), path + ": compiled from another spec (spec hash " +
+                                rt::spec_hash_text(rt::spec_hash("spec")) + ", expected " +
+                                rt::spec_hash_text(rt::spec_hash("spec ")) + ")");
+  // A damaged file keeps its own reason: the hash is only compared on a whole catalog.
+  const rt::LoadedCatalog missing = rt::LoadedCatalog::from_file(path + ".none", 0);
+  EXPECT_NE(missing.error().find("cannot open"), std::string::npos) << missing.error();
+}
+
+TEST(CatalogFile, HashTextIsSixteenHexDigits) {
+  EXPECT_EQ(rt::spec_hash_text(rt::spec_hash("a")), "af63dc4c8601ec8c");
+  EXPECT_EQ(rt::spec_hash_text(0), "0000000000000000");
+  EXPECT_EQ(rt::spec_hash_text(0xF), "000000000000000f");
+  EXPECT_EQ(rt::spec_hash_text(~std::uint64_t{0}), "ffffffffffffffff");
+}
+
 TEST(CatalogFile, HeaderProblemsAreNamed) {
   const std::string good = codegen::binary_catalog(paper_catalog());
   std::string bad = good;

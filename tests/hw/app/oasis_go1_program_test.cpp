@@ -129,6 +129,39 @@ TEST(OasisGo1Program, RunsACatalogLoadedFromItsFile) {
   EXPECT_NE(missing.output.find("none.bin"), std::string::npos) << missing.output;
 }
 
+TEST(OasisGo1Program, RefusesACatalogCompiledFromAnotherSpec) {
+  const std::string shipped_bin = OASIS_SOURCE_DIR "/generated/go1_treat/go1_treat.bin";
+  const std::string shipped_spec = OASIS_SOURCE_DIR "/specs/go1_treat.oasis";
+  const fs::path edited_spec = scratch("edited.oasis");
+  fs::copy_file(shipped_spec, edited_spec, fs::copy_options::overwrite_existing);
+  std::ofstream(edited_spec, std::ios::app) << "// edited after the catalog was compiled\n";
+  const std::vector<std::string> quick = {"run",    "--dry-run", "--source", "synthetic",
+                                          "--fast", "--steps",   "2",        "--quiet"};
+  const auto with = [&quick](std::vector<std::string> more) {
+    more.insert(more.begin(), quick.begin(), quick.end());
+    return run(more);
+  };
+
+  EXPECT_EQ(with({"--catalog", shipped_bin, "--catalog-spec", shipped_spec}).status, 0);
+  for (const std::string& catalog : {shipped_bin, std::string("linked")}) {
+    const Outcome stale = with({"--catalog", catalog, "--catalog-spec", edited_spec.string()});
+    EXPECT_EQ(stale.status, 1) << catalog;
+    EXPECT_NE(stale.output.find("was compiled from another spec than " + edited_spec.string()),
+              std::string::npos)
+        << stale.output;
+    EXPECT_NE(stale.output.find("loop.catalog_spec"), std::string::npos) << stale.output;
+    EXPECT_EQ(with({"--catalog", catalog, "--catalog-spec", "any"}).status, 0) << catalog;
+  }
+  // The default, "linked": a catalog of another spec is refused before anything else.
+  const Outcome other =
+      with({"--catalog", OASIS_SOURCE_DIR "/generated/discrete_tracking/discrete_tracking.bin"});
+  EXPECT_EQ(other.status, 1);
+  EXPECT_NE(other.output.find("than the linked catalog's spec"), std::string::npos) << other.output;
+  const Outcome unreadable = with({"--catalog-spec", scratch("none.oasis").string()});
+  EXPECT_EQ(unreadable.status, 1);
+  EXPECT_NE(unreadable.output.find("cannot read"), std::string::npos) << unreadable.output;
+}
+
 TEST(OasisGo1Program, ConfigPrintsTheShippedSettings) {
   const Outcome printed = run({"config", OASIS_SOURCE_DIR "/hw/config/go1.yaml"});
   ASSERT_EQ(printed.status, 0) << printed.output;

@@ -70,7 +70,7 @@ TEST(SettingsErrors, UnknownKeyInTheWrongSectionSaysWhereItBelongs) {
 TEST(SettingsErrors, UnknownKeyWithNothingCloseListsTheKeys) {
   EXPECT_ERROR("loop:\n  zzzzzzzz: 1\n",
                "t.yaml:2:3: error: loop.zzzzzzzz: unknown key; loop takes rate_hz, catalog, "
-               "missing_human");
+               "catalog_spec, missing_human");
 }
 
 TEST(SettingsErrors, KeyListedTwice) {
@@ -98,6 +98,8 @@ TEST(SettingsErrors, WrongTypeNamesKeyLineAndValue) {
                "\"camra\"; did you mean \"camera\"?");
   EXPECT_ERROR("loop:\n  catalog: go1.json\n",
                "loop.catalog: expected linked, or a path to a .bin catalog file");
+  EXPECT_ERROR("loop:\n  catalog_spec: go1_treat.bin\n",
+               "loop.catalog_spec: expected linked, any, or a path to a .oasis spec");
 }
 
 TEST(SettingsErrors, OutOfRangeNamesTheRange) {

@@ -75,6 +75,7 @@ Go1Settings unusual_settings() {
   s.filter.zero_likelihood_guard = true;
   s.loop.rate_hz = 10.0;
   s.loop.catalog = "catalogs/go1 treat: v2.bin";
+  s.loop.catalog_spec = "any";
   s.loop.missing_human = MissingHuman::kOutside;
   s.source = {FrameSourceSetting::Kind::kRecorded, "/data/run #3"};
   return s;
@@ -160,6 +161,7 @@ TEST(SettingsPartial, ScalarSpellings) {
       "  tie_tolerance: +1.5e-6\n"
       "loop:\n"
       "  catalog: /opt/oasis/go1_treat.bin\n"
+      "  catalog_spec: /opt/oasis/specs/go1_treat.oasis\n"
       "source: recorded:/data/run1\n",
       "spellings.yaml");
   EXPECT_EQ(s.link.level_flag, 0xEE);
@@ -169,6 +171,7 @@ TEST(SettingsPartial, ScalarSpellings) {
   EXPECT_EQ(s.perception.treat_tag_id, 7);
   EXPECT_EQ(s.filter.tie_tolerance, 1.5e-6);
   EXPECT_EQ(s.loop.catalog, "/opt/oasis/go1_treat.bin");
+  EXPECT_EQ(s.loop.catalog_spec, "/opt/oasis/specs/go1_treat.oasis");
   EXPECT_EQ(s.source, (FrameSourceSetting{FrameSourceSetting::Kind::kRecorded, "/data/run1"}));
 }
 

@@ -67,6 +67,19 @@ class LoadedCatalog {
     return catalog;
   }
 
+  /// As from_file(path), and refused unless compiled from the spec whose bytes hash to
+  /// `expected_spec_hash` (rt::spec_hash of the spec's text): a catalog left behind by an
+  /// edited spec is an error naming both hashes, not a robot running an old policy.
+  static LoadedCatalog from_file(const std::string& path, std::uint64_t expected_spec_hash) {
+    LoadedCatalog catalog = from_file(path);
+    if (catalog.ok_ && catalog.view_.spec_hash != expected_spec_hash) {
+      catalog.fail(path + ": compiled from another spec (spec hash " +
+                   spec_hash_text(catalog.view_.spec_hash) + ", expected " +
+                   spec_hash_text(expected_spec_hash) + ")");
+    }
+    return catalog;
+  }
+
  private:
   struct Entry {
     std::uint32_t tag;

@@ -12,6 +12,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <string>
 #include <string_view>
 
 namespace oasis {
@@ -38,6 +39,14 @@ inline constexpr std::uint64_t spec_hash(std::string_view text) noexcept {
     hash *= 0x100000001b3ULL;
   }
   return hash;
+}
+
+/// A hash as every tool prints it: 16 lower-case hex digits ("8b73c5aabd717338").
+inline std::string spec_hash_text(std::uint64_t hash) {
+  std::string text(16, '0');
+  for (std::size_t digit = 16; digit-- > 0; hash >>= 4)
+    text[digit] = "0123456789abcdef"[hash & 0xF];
+  return text;
 }
 
 static_assert(spec_hash("a") == 0xaf63dc4c8601ec8cULL, "FNV-1a 64 published test value");
