@@ -7,13 +7,13 @@
 #include <optional>
 
 #include "cli/commands.hpp"
-#include "cli/continuous_json_reader.hpp"
-#include "cli/partition_result_reader.hpp"
+#include "codegen/continuous_json_reader.hpp"
 #include "oasis/rt/catalog_file.hpp"
 #include "oasis/rt/spec_hash.hpp"
 #include "pipeline/catalog_data.hpp"
 #include "verify/catalog_check.hpp"
 #include "verify/continuous_check.hpp"
+#include "verify/partition_result_reader.hpp"
 #include "verify/verifier.hpp"
 
 namespace oasis::cli {
@@ -72,8 +72,8 @@ int check_continuous_view(const VerifyOptions& options, const model::ModelIR& ir
 int verify_continuous(const VerifyOptions& options, const model::ModelIR& ir) {
   if (options.result.ends_with(".json")) {
     std::string error;
-    auto data =
-        read_continuous_catalog_json(options.result, options.common.load.max_input_bytes, error);
+    auto data = codegen::read_continuous_catalog_json(options.result,
+                                                      options.common.load.max_input_bytes, error);
     if (!data) {
       std::cerr << options.result << ": error: " << error << '\n';
       return 1;
@@ -113,8 +113,8 @@ int run_verify(const VerifyOptions& options) {
   std::string error;
   // A compiled binary catalog (oasisc compile): everything it carries is checked.
   if (options.result.ends_with(".bin")) return verify_catalog(options, model);
-  const auto result =
-      read_partition_result(options.result, model, options.common.load.max_input_bytes, error);
+  const auto result = verify::read_partition_result(options.result, model,
+                                                    options.common.load.max_input_bytes, error);
   if (!result) {
     std::cerr << options.result << ": error: " << error << '\n';
     return 1;
@@ -126,7 +126,7 @@ int run_verify(const VerifyOptions& options) {
   }
 
   bool all_hold = true;
-  for (const ContextPartition& entry : result->contexts) {
+  for (const verify::ContextPartition& entry : result->contexts) {
     const std::string& name = model.contexts[entry.context].name;
     const verify::VerificationResult verdict =
         verify::verify_partition(model, entry.context, entry.partition);
@@ -142,7 +142,7 @@ int run_verify(const VerifyOptions& options) {
   }
   for (std::size_t c = 0; c < model.contexts.size(); ++c) {
     bool listed = false;
-    for (const ContextPartition& entry : result->contexts)
+    for (const verify::ContextPartition& entry : result->contexts)
       listed = listed || entry.context == c;
     if (!listed)
       std::cout << "context " << model.contexts[c].name << ": not in RESULT, not checked\n";

@@ -188,8 +188,9 @@ std::vector<double> axis_probabilities(const model::DisturbanceModel& w, double 
       p.push_back(normal_between((t[k] - mean) / deviation, (t[k + 1] - mean) / deviation));
     } else if (spread) {
       p.push_back(std::max(0.0, std::min(high, t[k + 1]) - std::max(low, t[k])) / (high - low));
-    } else {
-      p.push_back(t[k] <= low && (low < t[k + 1] || k + 2 == count) ? 1.0 : 0.0);
+    } else {  // a point: intervals are half-open, the last closed at the domain's edge
+      const bool last = k + 2 == count;
+      p.push_back(t[k] <= low && (low < t[k + 1] || (last && low == t[k + 1])) ? 1.0 : 0.0);
     }
   }
   return p;
@@ -235,12 +236,16 @@ Problem check_rows(const model::ModelIR& ir, std::size_t context, const rt::Abst
     const Box box = cell_box(abs.grid, cell);
     const std::uint32_t block = abs.cell_block[cell];
     const std::uint32_t d = abs.grid.dimension;
+    // The centre, and points a hair inside the corners: a corner itself lies on faces of
+    // other cells, and under dynamics without a disturbance its image is a single point that
+    // may sit on a face the rest of the cell's image only touches (a set of measure zero,
+    // docs/geometry.md), as polytope_cells_check.cpp does for polygons.
     for (std::uint32_t corner = 0; corner <= (1U << d); ++corner) {
       std::vector<double> x(d);
       for (std::uint32_t i = 0; i < d; ++i) {
-        x[i] = corner == (1U << d)         ? (box.low[i] + box.high[i]) / 2  // the centre
-               : ((corner >> i) & 1U) != 0 ? box.high[i]
-                                           : box.low[i];
+        const double centre = (box.low[i] + box.high[i]) / 2;
+        const double end = ((corner >> i) & 1U) != 0 ? box.high[i] : box.low[i];
+        x[i] = corner == (1U << d) ? centre : end + 1e-7 * (centre - end);
       }
       for (std::uint32_t a = 0; a < actions; ++a) {
         const std::vector<double> p = successor_cells(ir, context, a, abs.grid, x, cells);

@@ -8,15 +8,19 @@
 #include <cstddef>
 #include <optional>
 #include <string>
+#include <string_view>
 
 #include "pipeline/catalog_data.hpp"
 
-namespace oasis::cli {
+namespace oasis::codegen {
 
 // nullopt with `error` (one sentence, without the path) when the file is not such a JSON or
 // is larger than `max_bytes`.
 std::optional<pipeline::CatalogData> read_continuous_catalog_json(const std::string& path,
                                                                   std::size_t max_bytes,
                                                                   std::string& error);
+// The same on the file's text.
+std::optional<pipeline::CatalogData> parse_continuous_catalog_json(std::string_view text,
+                                                                   std::string& error);
 
-}  // namespace oasis::cli
+}  // namespace oasis::codegen

@@ -1,4 +1,4 @@
-#include "cli/continuous_json_reader.hpp"
+#include "codegen/continuous_json_reader.hpp"
 
 #include <algorithm>
 #include <new>
@@ -9,7 +9,7 @@
 #include "oasis/rt/catalog_view.hpp"
 #include "support/mapped_file.hpp"
 
-namespace oasis::cli {
+namespace oasis::codegen {
 namespace {
 
 using nlohmann::json;
@@ -169,8 +169,13 @@ std::optional<pipeline::CatalogData> read_continuous_catalog_json(const std::str
     error = "cannot read: " + error;
     return std::nullopt;
   }
+  return parse_continuous_catalog_json(file.text(), error);
+}
+
+std::optional<pipeline::CatalogData> parse_continuous_catalog_json(std::string_view text,
+                                                                   std::string& error) {
   try {
-    return catalog_of(json::parse(file.text()));
+    return catalog_of(json::parse(text.begin(), text.end()));
   } catch (const std::bad_alloc&) {
     throw;                             // the memory budget, reported by main
   } catch (const std::exception& e) {  // nlohmann's parse, key and type errors, and ours
@@ -179,4 +184,4 @@ std::optional<pipeline::CatalogData> read_continuous_catalog_json(const std::str
   }
 }
 
-}  // namespace oasis::cli
+}  // namespace oasis::codegen

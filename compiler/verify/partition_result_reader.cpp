@@ -1,4 +1,4 @@
-#include "cli/partition_result_reader.hpp"
+#include "verify/partition_result_reader.hpp"
 
 #include <limits>
 #include <unordered_map>
@@ -7,7 +7,7 @@
 
 #include "support/mapped_file.hpp"
 
-namespace oasis::cli {
+namespace oasis::verify {
 namespace {
 
 using nlohmann::json;
@@ -142,9 +142,15 @@ std::optional<PartitionResult> read_partition_result(const std::string& path,
     error = "cannot read: " + error;
     return std::nullopt;
   }
+  return parse_partition_result(file.text(), model, error);
+}
+
+std::optional<PartitionResult> parse_partition_result(std::string_view text,
+                                                      const model::ExplicitModel& model,
+                                                      std::string& error) {
   json document;
   try {
-    document = json::parse(file.text());
+    document = json::parse(text.begin(), text.end());
   } catch (const json::parse_error& e) {
     // nlohmann's message names the byte offset; drop its "[json.exception...]" prefix.
     const std::string what = e.what();
@@ -160,4 +166,4 @@ std::optional<PartitionResult> read_partition_result(const std::string& path,
   }
 }
 
-}  // namespace oasis::cli
+}  // namespace oasis::verify

@@ -7,12 +7,13 @@
 #include <cstddef>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "bisim/partition.hpp"
 #include "model/explicit_model.hpp"
 
-namespace oasis::cli {
+namespace oasis::verify {
 
 struct ContextPartition {
   std::size_t context = 0;  // index in model.contexts
@@ -32,5 +33,9 @@ struct PartitionResult {
 std::optional<PartitionResult> read_partition_result(const std::string& path,
                                                      const model::ExplicitModel& model,
                                                      std::size_t max_bytes, std::string& error);
+// The same on the file's text.
+std::optional<PartitionResult> parse_partition_result(std::string_view text,
+                                                      const model::ExplicitModel& model,
+                                                      std::string& error);
 
-}  // namespace oasis::cli
+}  // namespace oasis::verify

@@ -1,0 +1,75 @@
+// oasisc verify's reader of a quotient's partitions (verify/partition_result_reader.hpp, the
+// JSON of `oasisc quotient --format json --partition`): any text is refused with a reason, or
+// gives one partition per named context in which every state of the model has a block in
+// range. The verifier then checks each partition against Definition 1; a wrong partition must
+// come back as a violation with a message, never as a failure of the verifier itself.
+
+#include <sstream>
+#include <string>
+
+#include "fuzz_target.hpp"
+#include "model/explorer.hpp"
+#include "spec/frontend.hpp"
+#include "verify/partition_result_reader.hpp"
+#include "verify/verifier.hpp"
+
+namespace {
+
+using namespace oasis;
+
+// The paper's discrete tracking example (specs/discrete_tracking.oasis without its comments
+// and observation model, which partitions do not see): the seeds are its quotient.
+constexpr std::string_view kSpec = R"(
+mdp discrete_tracking {
+  states s1, s2, s3;
+  actions L, R;
+  init s2;
+  s1, L -> s1;
+  s2, L -> 1/2: s1 + 1/2: s2;
+  s3, L -> 1/2: s1 + 1/2: s2;
+  s1, R -> 1/2: s2 + 1/2: s3;
+  s2, R -> 1/2: s2 + 1/2: s3;
+  s3, R -> s3;
+  discount 0.9;
+}
+catalog {
+  context object_at_s3 { reward s3 : 1; }
+  context object_at_s1 { reward s1 : 1; }
+  switching stay 0.8;
+  prior uniform;
+}
+)";
+
+model::ExplicitModel explore_spec() {
+  SourceManager sources;
+  std::ostringstream messages;
+  DiagnosticEngine diagnostics(sources, messages);
+  const FileId file = sources.add("discrete_tracking.oasis", std::string(kSpec));
+  const auto ir = spec::check_spec_text(file, diagnostics);
+  if (!ir) fuzz::broken(messages.str().c_str(), __FILE__, __LINE__);
+  auto model = model::explore(*ir, diagnostics);
+  if (!model) fuzz::broken(messages.str().c_str(), __FILE__, __LINE__);
+  return std::move(*model);
+}
+
+}  // namespace
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  static const model::ExplicitModel model = explore_spec();
+  std::string error;
+  const auto result = verify::parse_partition_result(fuzz::text_of(data, size), model, error);
+  if (!result) {
+    FUZZ_REQUIRE(!error.empty());
+    return 0;
+  }
+  for (const verify::ContextPartition& entry : result->contexts) {
+    FUZZ_REQUIRE(entry.context < model.contexts.size());
+    FUZZ_REQUIRE(entry.partition.num_states() == model.num_states());
+    for (const bisim::BlockIndex block : entry.partition.block_of)
+      FUZZ_REQUIRE(block < entry.partition.num_blocks);
+    const verify::VerificationResult verdict =
+        verify::verify_partition(model, entry.context, entry.partition);
+    FUZZ_REQUIRE(verdict.ok() || !verdict.violation->message.empty());
+  }
+  return 0;
+}
