@@ -151,7 +151,8 @@ std::optional<PartitionResult> parse_partition_result(std::string_view text,
   json document;
   try {
     document = json::parse(text.begin(), text.end());
-  } catch (const json::parse_error& e) {
+  } catch (const json::exception& e) {
+    // A syntax error (parse_error) or a number too large for a double (out_of_range.406).
     // nlohmann's message names the byte offset; drop its "[json.exception...]" prefix.
     const std::string what = e.what();
     const auto space = what.find("] ");

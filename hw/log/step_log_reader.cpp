@@ -36,7 +36,8 @@ std::vector<Line> split_lines(std::string_view text) {
 std::optional<nlohmann::ordered_json> parse_json(std::string_view text, std::string& error) {
   try {
     return nlohmann::ordered_json::parse(text);
-  } catch (const nlohmann::json::parse_error& failure) {
+  } catch (const nlohmann::json::exception& failure) {
+    // A syntax error (parse_error) or a number too large for a double (out_of_range.406).
     // nlohmann's text is "[json.exception.parse_error.101] parse error at line 1, column 7:
     // syntax error ..."; keep what follows the id, the column being the useful part.
     const std::string what = failure.what();

@@ -468,6 +468,9 @@ TEST_F(VerifyCommand, MalformedResultsAreErrors) {
   const Case cases[] = {
       {"truncated", R"({"contexts": [{"name": "object_at_s3", "partition": [["s1")",
        "error: not valid JSON: "},
+      // Found by the partition_json fuzz target: nlohmann throws out_of_range, not parse_error.
+      {"number_overflow", R"({"contexts": [1e400]})",
+       "error: not valid JSON: number overflow parsing '1e400'"},
       {"no_contexts", R"({"blocks": 2})", "error: no \"contexts\" key"},
       {"empty", R"({"contexts": []})", "error: \"contexts\" is empty"},
       {"no_partition", R"({"contexts": [{"name": "object_at_s3", "blocks": 2}]})",

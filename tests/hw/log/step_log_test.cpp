@@ -226,6 +226,9 @@ TEST(StepLogReader, EachErrorNamesFileLineAndKey) {
             "run.jsonl:2: error: not valid JSON: parse error at line 1, column 12: syntax error "
             "while parsing object key - unexpected end of input; expected string literal");
   EXPECT_EQ(read_error(good + "\n" + good), "run.jsonl:2: error: empty line");
+  // Found by the step_log fuzz target: a number beyond a double escaped as nlohmann's own error.
+  EXPECT_EQ(read_error(good + "{\"step\": 1, \"time_s\": 1e999}\n" + good),
+            "run.jsonl:2: error: not valid JSON: number overflow parsing '1e999'");
   EXPECT_EQ(read_error(good + good + "[1, 2]\n"),
             "run.jsonl:3: error: a line must be one JSON object, not array");
 
