@@ -1,6 +1,8 @@
 #include "codegen/continuous_json_reader.hpp"
 
 #include <algorithm>
+#include <cstdint>
+#include <limits>
 #include <new>
 
 #include <nlohmann/json.hpp>
@@ -23,6 +25,25 @@ std::uint32_t index_of(const std::vector<std::string>& names, const std::string&
   return static_cast<std::uint32_t>(found - names.begin());
 }
 
+// A count or an index: a JSON integer in 0..2^32-1. nlohmann's get<std::uint32_t>() would
+// take 1.5 as 1 and 5e9 modulo 2^32, and convert a double beyond the range with undefined
+// behaviour (found by the continuous_json fuzz target).
+std::uint32_t index_value(const json& value, const char* what) {
+  if (!value.is_number_unsigned() ||
+      value.get<std::uint64_t>() > std::numeric_limits<std::uint32_t>::max())
+    throw std::out_of_range(std::string(what) + " must be an integer in 0..4294967295, not " +
+                            value.dump());
+  return static_cast<std::uint32_t>(value.get<std::uint64_t>());
+}
+
+std::vector<std::uint32_t> index_list(const json& values, const char* what) {
+  if (!values.is_array()) throw std::out_of_range(std::string(what) + " must be an array");
+  std::vector<std::uint32_t> list;
+  for (const json& value : values)
+    list.push_back(index_value(value, what));
+  return list;
+}
+
 std::uint64_t parse_hash(const std::string& text) {
   if (text.size() != 16 || text.find_first_not_of("0123456789abcdef") != std::string::npos)
     throw std::out_of_range("spec_hash is not 16 hexadecimal digits");
@@ -39,8 +60,26 @@ void read_grid(const json& abstraction, const pipeline::CatalogData& catalog,
       data.grid_breaks.push_back(t.get<double>());
     data.grid_break_begin.push_back(static_cast<std::uint32_t>(data.grid_breaks.size()));
   }
+  if (data.grid_break_begin.size() != data.grid_axes.size() + 1)
+    throw std::out_of_range("the grid lists " + std::to_string(data.grid_break_begin.size() - 1) +
+                            " axes for " + std::to_string(data.grid_axes.size()) +
+                            " relevant variables");
   for (const json& cell : abstraction.at("cells"))
-    data.cell_block.push_back(cell.at("block").get<std::uint32_t>());
+    data.cell_block.push_back(index_value(cell.at("block"), "a cell's block"));
+}
+
+// The cells a grid without a BSP has: the product of its axes' interval counts (0 when an axis
+// has no interval, and more than any file holds when the product overflows).
+std::uint64_t grid_cell_count(const pipeline::AbstractionData& data) {
+  std::uint64_t cells = 1;
+  for (std::size_t i = 0; i + 1 < data.grid_break_begin.size(); ++i) {
+    const std::uint32_t breaks = data.grid_break_begin[i + 1] - data.grid_break_begin[i];
+    const std::uint64_t intervals = breaks < 2 ? 0 : breaks - 1;
+    if (intervals != 0 && cells > std::numeric_limits<std::uint64_t>::max() / intervals)
+      return std::numeric_limits<std::uint64_t>::max();
+    cells *= intervals;
+  }
+  return cells;
 }
 
 void read_bsp(const json& bsp, pipeline::AbstractionData& data) {
@@ -55,10 +94,11 @@ void read_bsp(const json& bsp, pipeline::AbstractionData& data) {
       data.bsp_normal.push_back(a.get<double>());
   }
   data.bsp_bound = bsp.at("bound").get<std::vector<double>>();
-  data.bsp_below = bsp.at("below").get<std::vector<std::uint32_t>>();
-  data.bsp_above = bsp.at("above").get<std::vector<std::uint32_t>>();
+  data.bsp_below = index_list(bsp.at("below"), "a BSP node's below");
+  data.bsp_above = index_list(bsp.at("above"), "a BSP node's above");
   for (const json& cell : bsp.at("cell"))
-    data.bsp_cell.push_back(cell.is_null() ? rt::kInternalNode : cell.get<std::uint32_t>());
+    data.bsp_cell.push_back(cell.is_null() ? rt::kInternalNode
+                                           : index_value(cell, "a BSP leaf's cell"));
   const std::size_t nodes = data.bsp_cell.size();
   if (data.bsp_bound.size() != nodes || data.bsp_below.size() != nodes ||
       data.bsp_above.size() != nodes || data.bsp_normal.size() != nodes * data.grid_axes.size())
@@ -88,7 +128,7 @@ void read_blocks(const json& blocks, const pipeline::CatalogData& catalog,
     const json& next = block.at("next");
     for (const std::string& action : catalog.action_names) {
       for (const json& entry : next.at(action)) {
-        data.quotient.target.push_back(entry.at(0).get<std::uint32_t>());
+        data.quotient.target.push_back(index_value(entry.at(0), "a row's block"));
         data.quotient.probability.push_back(entry.at(1).get<double>());
       }
       data.quotient.choice_begin.push_back(static_cast<std::uint32_t>(data.quotient.target.size()));
@@ -127,7 +167,7 @@ void read_observation(const json& document, pipeline::CatalogData& catalog) {
 
 pipeline::CatalogData catalog_of(const json& document) {
   pipeline::CatalogData catalog;
-  if (document.at("format").get<std::uint32_t>() != rt::kCatalogFormat)
+  if (index_value(document.at("format"), "format") != rt::kCatalogFormat)
     throw std::out_of_range("catalog format " + document.at("format").dump() + ", expected " +
                             std::to_string(rt::kCatalogFormat));
   catalog.name = document.at("name").get<std::string>();
@@ -144,11 +184,18 @@ pipeline::CatalogData catalog_of(const json& document) {
   for (const json& abstraction : document.at("abstractions")) {
     pipeline::AbstractionData data;
     data.context = abstraction.at("context").get<std::string>();
-    data.num_blocks = abstraction.at("num_blocks").get<std::uint32_t>();
-    data.outside_block = abstraction.at("outside_block").get<std::uint32_t>();
+    data.num_blocks = index_value(abstraction.at("num_blocks"), "num_blocks");
+    data.outside_block = index_value(abstraction.at("outside_block"), "outside_block");
     data.epsilon = abstraction.at("epsilon").get<double>();
     read_grid(abstraction, catalog, data);
-    if (abstraction.contains("bsp")) read_bsp(abstraction.at("bsp"), data);
+    if (abstraction.contains("bsp")) {
+      read_bsp(abstraction.at("bsp"), data);
+    } else if (!data.grid_axes.empty() && data.cell_block.size() != grid_cell_count(data)) {
+      // The runtime reads one cell_block entry per grid cell: the counts must agree.
+      throw std::out_of_range("abstraction '" + data.context + "' lists " +
+                              std::to_string(data.cell_block.size()) + " cells for a grid of " +
+                              std::to_string(grid_cell_count(data)));
+    }
     read_blocks(abstraction.at("blocks"), catalog, data);
     if (data.block_reward.size() != data.num_blocks)
       throw std::out_of_range("abstraction '" + data.context + "' lists " +
@@ -156,6 +203,12 @@ pipeline::CatalogData catalog_of(const json& document) {
                               std::to_string(data.num_blocks));
     catalog.abstractions.push_back(std::move(data));
   }
+  // The runtime reads an n x n switching matrix and n priors for n abstractions.
+  const std::size_t n = catalog.abstractions.size();
+  if (catalog.switching.size() != n * n || catalog.prior.size() != n)
+    throw std::out_of_range("switching and prior must be " + std::to_string(n) + " x " +
+                            std::to_string(n) + " and " + std::to_string(n) + " numbers for the " +
+                            std::to_string(n) + " abstractions");
   return catalog;
 }
 

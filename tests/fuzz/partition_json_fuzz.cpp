@@ -4,6 +4,7 @@
 // range. The verifier then checks each partition against Definition 1; a wrong partition must
 // come back as a violation with a message, never as a failure of the verifier itself.
 
+#include <fstream>
 #include <sstream>
 #include <string>
 
@@ -17,34 +18,18 @@ namespace {
 
 using namespace oasis;
 
-// The paper's discrete tracking example (specs/discrete_tracking.oasis without its comments
-// and observation model, which partitions do not see): the seeds are its quotient.
-constexpr std::string_view kSpec = R"(
-mdp discrete_tracking {
-  states s1, s2, s3;
-  actions L, R;
-  init s2;
-  s1, L -> s1;
-  s2, L -> 1/2: s1 + 1/2: s2;
-  s3, L -> 1/2: s1 + 1/2: s2;
-  s1, R -> 1/2: s2 + 1/2: s3;
-  s2, R -> 1/2: s2 + 1/2: s3;
-  s3, R -> s3;
-  discount 0.9;
-}
-catalog {
-  context object_at_s3 { reward s3 : 1; }
-  context object_at_s1 { reward s1 : 1; }
-  switching stay 0.8;
-  prior uniform;
-}
-)";
-
+// The paper's discrete tracking example, specs/discrete_tracking.oasis: the seeds are its
+// quotient (`oasisc quotient --format json --partition`).
 model::ExplicitModel explore_spec() {
+  const std::string path = OASIS_SOURCE_DIR "/specs/discrete_tracking.oasis";
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream text;
+  if (!(in && text << in.rdbuf()))
+    fuzz::broken(("cannot read " + path).c_str(), __FILE__, __LINE__);
   SourceManager sources;
   std::ostringstream messages;
   DiagnosticEngine diagnostics(sources, messages);
-  const FileId file = sources.add("discrete_tracking.oasis", std::string(kSpec));
+  const FileId file = sources.add(path, text.str());
   const auto ir = spec::check_spec_text(file, diagnostics);
   if (!ir) fuzz::broken(messages.str().c_str(), __FILE__, __LINE__);
   auto model = model::explore(*ir, diagnostics);

@@ -5,13 +5,16 @@
 #include <functional>
 #include <string>
 #include <utility>
+#include <vector>
 
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include "../support/run_oasisc.hpp"
 #include "../support/scratch_directory.hpp"
 #include "../support/spec_models.hpp"
 #include "codegen/binary_catalog.hpp"
+#include "codegen/continuous_json_reader.hpp"
 #include "oasis/rt/catalog_file.hpp"
 #include "pipeline/continuous_catalog.hpp"
 #include "pipeline/continuous_catalog_data.hpp"
@@ -136,6 +139,40 @@ TEST(ContinuousVerify, DynamicsWithoutADisturbanceVerify) {
       test::run_oasisc("verify " + spec + " " + (out / "deterministic_line.bin").string());
   EXPECT_EQ(verified.status, 0) << verified.output;
   EXPECT_NE(verified.output.find("rows within epsilon"), std::string::npos) << verified.output;
+}
+
+// The JSON reader (`oasisc verify SPEC NAME.json`) refuses arrays whose lengths disagree, as the
+// binary loader does (the runtime's view trusts them), and indices that are not integers of 32
+// bits. Found by the continuous_json fuzz target: a grid of 3 cells listing 2 made
+// rt::validate read past cell_block, and "format": 4e90 was converted with undefined behaviour.
+TEST(ContinuousVerify, JsonThatWouldMisleadTheRuntimeIsRefused) {
+  const nlohmann::json good = nlohmann::json::parse(test::read_text_file(
+      std::string(OASIS_SOURCE_DIR) +
+      "/tests/fuzz/corpus/continuous_json/deterministic_line_transitions.json"));
+  std::string error;
+  auto catalog = codegen::parse_continuous_catalog_json(good.dump(), error);
+  ASSERT_TRUE(catalog) << error;
+  EXPECT_TRUE(rt::validate(catalog->view(), &error)) << error;
+
+  const std::vector<std::pair<std::function<void(nlohmann::json&)>, std::string>> cases{
+      {[](nlohmann::json& j) { j["abstractions"][0]["cells"].erase(0); },
+       "abstraction 'to_dock' lists 2 cells for a grid of 3"},
+      {[](nlohmann::json& j) { j["abstractions"][1]["grid"].clear(); },
+       "the grid lists 0 axes for 1 relevant variables"},
+      {[](nlohmann::json& j) { j["prior"].erase(1); },
+       "switching and prior must be 2 x 2 and 2 numbers for the 2 abstractions"},
+      {[](nlohmann::json& j) { j["switching"][1].erase(0); }, "switching and prior must be 2 x 2"},
+      {[](nlohmann::json& j) { j["abstractions"][0]["num_blocks"] = 1.5; },
+       "num_blocks must be an integer in 0..4294967295, not 1.5"},
+      {[](nlohmann::json& j) { j["abstractions"][0]["cells"][0]["block"] = 4294967296U; },
+       "a cell's block must be an integer in 0..4294967295, not 4294967296"}};
+  for (const auto& [edit, message] : cases) {
+    nlohmann::json bad = good;
+    edit(bad);
+    error.clear();
+    EXPECT_FALSE(codegen::parse_continuous_catalog_json(bad.dump(), error)) << message;
+    EXPECT_NE(error.find(message), std::string::npos) << error;
+  }
 }
 
 }  // namespace
