@@ -333,13 +333,13 @@ CatalogCheck check_abstraction(const model::ModelIR& ir, std::size_t context,
     return check;
   }
   check.ok = true;
-  check.verdict =
-      "attends to its relevant variables; " + std::to_string(cells) + " cells, " +
-      std::to_string(abs.num_blocks) + " blocks; domain, rewards, locator ok" +
-      (rows ? "; rows within epsilon " + number_text(abs.epsilon) +
-                  " at sampled cells' centres and next to their vertices; policy " + summary + ", values ok"
-            : "; rows and policy not checked: the file has no transition rows "
-              "(compile --with-transitions)");
+  check.verdict = "attends to its relevant variables; " + std::to_string(cells) + " cells, " +
+                  std::to_string(abs.num_blocks) + " blocks; domain, rewards, locator ok" +
+                  (rows ? "; rows within epsilon " + number_text(abs.epsilon) +
+                              " at sampled cells' centres and next to their vertices; policy " +
+                              summary + ", values ok"
+                        : "; rows and policy not checked: the file has no transition rows "
+                          "(compile --with-transitions)");
   return check;
 }
 
