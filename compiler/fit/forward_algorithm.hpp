@@ -9,7 +9,7 @@
 //   evidence   c_t = sum_i a'(i) p(r_t | phi^i, o_t)
 //   update     alpha_t(i) = a'(i) p(r_t | phi^i, o_t) / c_t
 //   log L = sum_t log c_t = log p(r_1..r_T | o_1..o_T)
-// Joint model (a state-observation model p(o | s); as the runtime's FilterMode::kRobust):
+// Joint model (a state-observation model p(o | s); as the runtime's FilterMode::kJoint):
 //   b_0(i, s) = prior(i) / S  (the state before the first logged step is unknown)
 //   predict    b'(i, s') = sum_s P^i(s' | s, a_t) sum_j p(i | j) b_{t-1}(j, s)
 //   evidence   c_t = sum_{i,s} b'(i, s) p(o_t | s) p(r_t | phi^i, x), x = s (reward follows

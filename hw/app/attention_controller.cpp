@@ -32,7 +32,9 @@ std::string filter_error_text(rt::FilterError error) {
     case rt::FilterError::kWorkspaceTooSmall:
       return "workspace too small";
     case rt::FilterError::kNoRobustSection:
-      return "filter.mode robust needs a catalog with an observation model; use paper";
+      return "filter.mode needs the catalog's noise model, which it lacks; use paper";
+    case rt::FilterError::kWrongCatalogKind:
+      return "filter.mode joint is for discrete catalogs and noise_aware for continuous ones";
     case rt::FilterError::kBadOptions:
       return "a filter option is out of range";
     case rt::FilterError::kEmptyCatalog:

@@ -66,6 +66,7 @@ LoopResult run_loop(LoopParts& parts, const LoopOptions& options) {
     const PerceptionResult seen = parts.perception.step(std::get<Frame>(next));
     log::StepRecord record = parts.controller.decide(seen, time_s, robot);
     if (parts.truth) record.truth = parts.truth();
+    record.link = parts.link.link_record();
     parts.link.command(velocity_of(record), time_s);
     if (parts.on_step) parts.on_step(record);
     ++result.steps;

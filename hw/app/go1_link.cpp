@@ -26,7 +26,19 @@ std::string Go1Link::silence_report() const {
   if (status.send_failures > 0) report << "; sending failed: " << status.last_send_error;
   if (status.states_refused > 0)
     report << "; refused " << status.states_refused << " answers: " << status.last_refusal;
+  if (status.datagrams_ignored > 0) report << "; " << go1::ignored_datagrams_text(status);
   return report.str();
+}
+
+std::optional<log::LinkRecord> Go1Link::link_record() const {
+  const go1::SenderStatus status = sender_->status();
+  log::LinkRecord record;
+  record.states_received = status.states_received;
+  record.states_refused = status.states_refused;
+  record.datagrams_ignored = status.datagrams_ignored;
+  if (status.last_ignored_from)
+    record.last_ignored_from = go1::to_string(*status.last_ignored_from);
+  return record;
 }
 
 void Go1Link::command(const go1::VelocityCommand& velocity, double /*time_s*/) {

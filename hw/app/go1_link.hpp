@@ -16,9 +16,10 @@ class Go1Link final : public RobotLink {
   // The robot is told to stand until the first command().
   explicit Go1Link(go1::SenderOptions options);
 
-  // Waits for the robot's first valid HighState. False if none came within `timeout`: the
-  // robot is off, on another network, or speaks another level flag (hw/README.md, "First
-  // checks"); the caller must not start the loop then.
+  // Waits for the robot's first valid HighState from the robot's own address and port (a
+  // packet from anyone else is ignored, go1/sender.hpp). False if none came within `timeout`:
+  // the robot is off, on another network, answers from another address, or speaks another
+  // level flag (hw/README.md, "First checks"); the caller must not start the loop then.
   bool wait_for_robot(std::chrono::milliseconds timeout) const;
 
   // Why wait_for_robot() failed, for the error message: what was sent and what came back.
@@ -28,6 +29,7 @@ class Go1Link final : public RobotLink {
   go1::Pose pose() const override;
   void shut_down() override { sender_->stop(); }
   std::string describe() const override;
+  std::optional<log::LinkRecord> link_record() const override;
 
   const go1::Sender& sender() const { return *sender_; }
 

@@ -3,10 +3,12 @@
 // the Go1 over UDP (go1_link.hpp: the real robot, or the fake one on loopback) and a dry run
 // that sends nothing and integrates its own commands, so that a synthetic world still sees the
 // robot move.
+#include <optional>
 #include <string>
 
 #include "go1/motion_limits.hpp"
 #include "go1/planar_pose.hpp"
+#include "log/step_record.hpp"
 
 namespace oasis::hw::app {
 
@@ -25,6 +27,9 @@ class RobotLink {
   virtual void shut_down() = 0;
 
   virtual std::string describe() const = 0;
+
+  // What the link has received so far, for the step log; nothing for a link without a robot.
+  virtual std::optional<log::LinkRecord> link_record() const { return std::nullopt; }
 };
 
 // Sends nothing. The pose follows the commands as a robot without limits or latency would:

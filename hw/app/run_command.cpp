@@ -10,6 +10,7 @@
 
 #include "app/commands.hpp"
 #include "app/control_loop.hpp"
+#include "app/profile_controller.hpp"
 #include "app/session.hpp"
 #include "go1/endpoint.hpp"
 #include "go1/stop_signal.hpp"
@@ -26,7 +27,8 @@ struct RunRequest {
   std::string source;  // empty: the config's
   std::string catalog;
   std::string catalog_spec;
-  std::string robot;  // ADDRESS[:PORT]; empty: the config's
+  std::string controller;  // empty: the config's loop.controller
+  std::string robot;       // ADDRESS[:PORT]; empty: the config's
   std::string log_path;
   std::optional<std::uint64_t> steps;
   bool dry_run = false;
@@ -41,6 +43,7 @@ settings::Go1Settings effective_settings(const RunRequest& request) {
   if (!request.source.empty()) result.source = source_option(request.source);
   if (!request.catalog.empty()) result.loop.catalog = request.catalog;
   if (!request.catalog_spec.empty()) result.loop.catalog_spec = request.catalog_spec;
+  if (!request.controller.empty()) result.loop.controller = request.controller;
   if (!request.robot.empty()) {
     try {
       const bool has_port = request.robot.find(':') != std::string::npos;
@@ -73,6 +76,17 @@ void print_step(const log::StepRecord& record) {
               record.action_name.c_str(), record.reward, record.holder);
 }
 
+// "received 1500 HighState, refused 0, ignored 12 datagrams from 192.168.12.40:5555 (not the
+// robot)": the last step's link counts, printed when the run ends.
+std::string link_summary(const log::LinkRecord& counts) {
+  std::string text = "received " + std::to_string(counts.states_received) + " HighState, refused " +
+                     std::to_string(counts.states_refused);
+  if (counts.datagrams_ignored > 0)
+    text += ", ignored " + std::to_string(counts.datagrams_ignored) + " datagrams, the last from " +
+            counts.last_ignored_from + " (not the robot)";
+  return text;
+}
+
 // The session's result as the log's Table II row, when the log has ground truth.
 void print_score(const std::vector<log::StepRecord>& records) {
   if (records.empty() || !records.front().truth) return;
@@ -83,7 +97,10 @@ void print_score(const std::vector<log::StepRecord>& records) {
 int run_session(const RunRequest& request) {
   const settings::Go1Settings settings = effective_settings(request);
   const SessionCatalog catalog(settings.loop.catalog, settings.loop.catalog_spec);
-  ControllerSettings controller_options = controller_settings(settings, catalog.view());
+  const settings::ControllerProfile profile =
+      robot_profile(settings.loop.controller, catalog.view());
+  const std::unique_ptr<LoopController> controller =
+      make_controller(profile, {catalog.view(), controller_settings(settings, catalog.view()), {}});
 
   go1::install_stop_signal_handlers();
   std::unique_ptr<RobotLink> link = open_link(settings, request.dry_run || request.replay,
@@ -93,11 +110,10 @@ int run_session(const RunRequest& request) {
   if (!request.log_path.empty()) log_writer.emplace(request.log_path);
 
   Perception perception(settings.perception);
-  AttentionController controller(catalog.view(), std::move(controller_options));
   std::vector<log::StepRecord> records;
   LoopParts parts{*source.source,
                   perception,
-                  controller,
+                  *controller,
                   *link,
                   source.truth,
                   [&](const log::StepRecord& record) {
@@ -111,8 +127,10 @@ int run_session(const RunRequest& request) {
   options.keepalive_s = std::chrono::duration<double>(settings.loop.keepalive).count();
   options.realtime = source.realtime_only || !(request.fast || request.replay);
   options.max_steps = request.steps;
-  std::cerr << "oasis-go1: " << catalog.describe() << "; " << source.description << "; "
-            << link->describe() << (options.realtime ? "" : "; as fast as it computes") << '\n';
+  std::cerr << "oasis-go1: " << catalog.describe() << "; controller " << profile.name << " ("
+            << profile.origin << ": " << settings::profile_summary(profile) << "); "
+            << source.description << "; " << link->describe()
+            << (options.realtime ? "" : "; as fast as it computes") << '\n';
 
   LoopResult result;
   try {
@@ -122,6 +140,8 @@ int run_session(const RunRequest& request) {
     throw;
   }
   link->shut_down();
+  if (const std::optional<log::LinkRecord> counts = link->link_record())
+    std::cerr << "oasis-go1: link: " << link_summary(*counts) << '\n';
   std::cerr << "oasis-go1: " << result.steps << " steps, " << end_text(result.end)
             << (result.reason.empty() ? "" : ": " + result.reason)
             << (request.dry_run || request.replay ? "" : "; the robot was told to stop and stand")
@@ -149,6 +169,10 @@ void add_common_options(CLI::App& command, RunRequest& request) {
                      "the spec the catalog must have been compiled from, checked by its spec hash: "
                      "'linked' (the linked catalog's spec), a .oasis file, or 'any'; default: "
                      "the config's loop.catalog_spec");
+  command.add_option("--controller", request.controller,
+                     "the controller profile: " + settings::shipped_profile_names() +
+                         " (hw/config/controllers/; oracle and no-attention are sim baselines), "
+                         "or a path to a .yaml profile; default: the config's loop.controller");
   command.add_option("--steps", request.steps, "stop after this many control steps");
   command.add_option("--log", request.log_path,
                      "write every step as a JSON line (hw/log/README.md) to this file");

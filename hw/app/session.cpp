@@ -67,14 +67,33 @@ ControllerSettings controller_settings(const settings::Go1Settings& settings,
   const std::string mismatch = settings::validate_against_catalog(settings, catalog);
   if (!mismatch.empty()) throw SetupError(mismatch);
   ControllerSettings result;
-  result.filter = settings.filter;
   result.action_velocity = settings::velocity_table(settings, catalog);
   result.hold_last_seen = settings.loop.missing_human == settings::MissingHuman::kHoldLast;
   result.clamp_to_domain = settings.loop.clamp_to_domain;
-  result.treat_sighting = settings.loop.treat_sighting;
-  result.tag_unseen_likelihood = settings.loop.tag_unseen_likelihood;
-  result.unknown_reward_when_tag_cut = settings.loop.unknown_reward_when_tag_cut;
   return result;
+}
+
+settings::ControllerProfile robot_profile(const std::string& name_or_path,
+                                          const rt::CatalogView& catalog) {
+  settings::ControllerProfile profile;
+  try {
+    profile = settings::find_controller_profile(name_or_path, "--controller");
+  } catch (const settings::SettingsError& e) {
+    throw SetupError(e.what());
+  }
+  if (profile.kind == settings::ControllerKind::kOracle)
+    throw SetupError("controller " + profile.name +
+                     " is told who holds the treat, which only oasis-go1 sim knows; pick "
+                     "another (" +
+                     settings::shipped_profile_names() + ")");
+  if (profile.catalog == settings::ProfileCatalog::kFullState)
+    throw SetupError("controller " + profile.name +
+                     " is a simulation baseline on the no-attention catalog; run it with "
+                     "oasis-go1 sim, or give a profile with catalog: session");
+  if (const std::string problem = settings::validate_profile_against_catalog(profile, catalog);
+      !problem.empty())
+    throw SetupError(problem);
+  return profile;
 }
 
 namespace {

@@ -16,6 +16,7 @@
 #include "oasis/rt/catalog_file.hpp"
 #include "perception/frame.hpp"
 #include "perception/treat_holder.hpp"
+#include "settings/controller_profile.hpp"
 #include "settings/settings.hpp"
 
 namespace oasis::hw::app {
@@ -48,10 +49,17 @@ class SessionCatalog {
   std::string description_;
 };
 
-// The controller's settings (filter options, action velocities, missing people) from the
-// settings. Throws SetupError when the actions do not match the catalog's.
+// The robot-side part of the controller's settings (action velocities, missing people, the
+// domain clamp) from the settings; the profile's options go on top (with_profile()). Throws
+// SetupError when the actions do not match the catalog's.
 ControllerSettings controller_settings(const settings::Go1Settings& settings,
                                        const rt::CatalogView& catalog);
+
+// The controller profile `run` and `replay` drive with: a shipped profile by name or a .yaml
+// path (loop.controller, or --controller). Throws SetupError when there is no such profile,
+// or it cannot drive a robot (the oracle, a no-attention baseline) or run on this catalog.
+settings::ControllerProfile robot_profile(const std::string& name_or_path,
+                                          const rt::CatalogView& catalog);
 
 // The Go1 link after the robot answered, or a dry run. Throws SetupError when the robot does
 // not answer within `robot_timeout` (the sender meanwhile only ever commanded stand).

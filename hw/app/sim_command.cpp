@@ -11,8 +11,8 @@
 #include <vector>
 
 #include "app/commands.hpp"
+#include "app/profile_controller.hpp"
 #include "app/session.hpp"
-#include "app/sim_controllers.hpp"
 #include "app/sim_trial.hpp"
 #include "log/step_log_writer.hpp"
 #include "log/table2_metrics.hpp"
@@ -30,7 +30,7 @@ struct SimRequest {
   std::string no_attention_catalog = OASIS_NO_ATTENTION_CATALOG;
   int trials = 12;
   std::uint64_t seed = 1;
-  std::vector<std::string> controllers{"oracle", "paper", "guard", "no-attention", "ours"};
+  std::vector<std::string> controllers;  // profile names or .yaml paths; empty: every shipped one
   std::string perception = "fast";
   std::optional<std::uint64_t> steps;
   std::string logs;
@@ -80,7 +80,8 @@ void write_outputs(const SimRequest& request, const std::string& name, const Sim
 }
 
 log::Table2Summary run_controller(const SimRequest& request, const SimTrialSetup& setup,
-                                  const rt::CatalogView& catalog, const SimControllerKind& kind) {
+                                  const rt::CatalogView& catalog,
+                                  const settings::ControllerProfile& kind) {
   std::vector<log::TrialScore> scores;
   for (int trial = 0; trial < request.trials; ++trial) {
     const SimTrialResult result =
@@ -97,16 +98,30 @@ log::Table2Summary run_controller(const SimRequest& request, const SimTrialSetup
   return log::summarize_trials(scores);
 }
 
-void check_request(const SimRequest& request) {
-  for (const std::string& name : request.controllers)
-    if (!find_sim_controller(name)) {
-      std::string known;
-      for (const SimControllerKind& kind : sim_controller_kinds())
-        known += (known.empty() ? "" : ", ") + kind.name;
-      throw SetupError("--controllers: no controller \"" + name + "\"; there are " + known);
+// The profiles to run, in the order asked: every shipped one by default.
+std::vector<settings::ControllerProfile> requested_profiles(const SimRequest& request) {
+  if (request.controllers.empty()) return settings::shipped_controller_profiles();
+  std::vector<settings::ControllerProfile> profiles;
+  for (const std::string& name : request.controllers) {
+    try {
+      profiles.push_back(settings::find_controller_profile(name, "--controllers"));
+    } catch (const settings::SettingsError& e) {
+      throw SetupError(e.what());
     }
+  }
+  return profiles;
+}
+
+void make_output_folders(const SimRequest& request) {
   for (const std::string& folder : {request.logs, request.plots})
     if (!folder.empty()) std::filesystem::create_directories(folder);
+}
+
+// What a profile is, as the tables and the JSON say it: where it came from and what it sets.
+nlohmann::ordered_json profile_json(const settings::ControllerProfile& profile) {
+  return {{"origin", profile.origin},
+          {"description", profile.description},
+          {"options", settings::profile_summary(profile)}};
 }
 
 int simulate(const SimRequest& request) {
@@ -115,7 +130,8 @@ int simulate(const SimRequest& request) {
         request.scenario.empty() ? sim::HallwayScenario{} : sim::load_scenario(request.scenario));
     return 0;
   }
-  check_request(request);
+  const std::vector<settings::ControllerProfile> profiles = requested_profiles(request);
+  make_output_folders(request);
   settings::Go1Settings settings = settings_or_defaults(request.config);
   if (!request.catalog.empty()) settings.loop.catalog = request.catalog;
   if (!request.catalog_spec.empty()) settings.loop.catalog_spec = request.catalog_spec;
@@ -128,18 +144,23 @@ int simulate(const SimRequest& request) {
   // The no-attention catalog, loaded when a controller runs on it.
   std::optional<SessionCatalog> full_state;
   nlohmann::ordered_json json = nlohmann::ordered_json::object();
-  for (const std::string& name : request.controllers) {
-    const SimControllerKind& kind = *find_sim_controller(name);
-    if (kind.full_state_catalog && !full_state)
+  for (const settings::ControllerProfile& profile : profiles) {
+    const bool full_state_catalog = profile.catalog == settings::ProfileCatalog::kFullState;
+    if (full_state_catalog && !full_state)
       full_state.emplace(request.no_attention_catalog, settings.loop.catalog_spec);
-    const rt::CatalogView& view = kind.full_state_catalog ? full_state->view() : catalog.view();
+    const rt::CatalogView& view = full_state_catalog ? full_state->view() : catalog.view();
+    if (const std::string problem = settings::validate_profile_against_catalog(profile, view);
+        !problem.empty())
+      throw SetupError(problem);
     const log::Table2Summary summary =
-        run_controller(request, trial_setup(request, settings, view), view, kind);
+        run_controller(request, trial_setup(request, settings, view), view, profile);
     if (request.json) {
-      json[name] = log::table2_json(summary);
+      json[profile.name] = log::table2_json(summary);
+      json[profile.name]["profile"] = profile_json(profile);
       continue;
     }
-    std::cout << "\n== " << name << ": " << kind.description << '\n';
+    std::cout << "\n== " << profile.name << " (" << profile.origin << "): " << profile.description
+              << "\n   " << settings::profile_summary(profile) << '\n';
     log::print_table2(std::cout, summary);
   }
   if (request.json) std::cout << json.dump(2) << '\n';
@@ -147,9 +168,11 @@ int simulate(const SimRequest& request) {
 }
 
 std::string controller_help() {
-  std::string text = "comma-separated, in the order run:";
-  for (const SimControllerKind& kind : sim_controller_kinds())
-    text += "\n  " + kind.name + ": " + kind.description;
+  std::string text =
+      "controller profiles, comma-separated, in the order run: shipped ones by name, or .yaml "
+      "files of your own (hw/config/controllers/README.md); default: every shipped one:";
+  for (const settings::ControllerProfile& profile : settings::shipped_controller_profiles())
+    text += "\n  " + profile.name + ": " + profile.description;
   return text;
 }
 

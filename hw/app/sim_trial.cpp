@@ -60,7 +60,7 @@ sim::TraceStep trace_step(const log::StepRecord& record, const sim::FrameTruth& 
 }  // namespace
 
 SimTrialResult run_sim_trial(const rt::CatalogView& catalog, const SimTrialSetup& setup,
-                             const SimControllerKind& controller, std::uint64_t seed) {
+                             const settings::ControllerProfile& controller, std::uint64_t seed) {
   const Contexts contexts = contexts_of(catalog);
   DryRunLink link;
   sim::HallwayWorld world(world_options(setup, seed), [&link] { return link.pose(); });
@@ -75,7 +75,7 @@ SimTrialResult run_sim_trial(const rt::CatalogView& catalog, const SimTrialSetup
     return contexts.of(truth->scene.holder);
   };
   const std::unique_ptr<LoopController> decider =
-      controller.make({catalog, setup.controller, truth_context});
+      make_controller(controller, {catalog, setup.controller, truth_context});
 
   SimTrialResult result;
   LoopParts parts{

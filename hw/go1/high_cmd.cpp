@@ -21,13 +21,14 @@ HighCmdBytes encode_high_cmd(const HighCommand& command, std::uint8_t level_flag
   for (std::size_t i = 0; i < 2; ++i)
     put_f32(packet, o::kVelocity + 4 * i, command.velocity[i]);
   put_f32(packet, o::kYawSpeed, command.yaw_speed);
-  seal_frame(packet, level_flag);
+  seal_frame(packet, level_flag, CrcForm::kPlain);  // SetSend(HighCmd&): plain
   return packet;
 }
 
 DecodeResult<HighCommand> decode_high_cmd(std::span<const std::uint8_t> packet,
                                           std::optional<std::uint8_t> expected_level_flag) {
-  if (auto refused = check_frame(packet, kHighCmdLength, expected_level_flag)) return *refused;
+  if (auto refused = check_frame(packet, kHighCmdLength, expected_level_flag, {CrcForm::kPlain}))
+    return *refused;
   HighCommand command;
   command.mode = static_cast<Mode>(packet[o::kMode]);
   command.gait_type = static_cast<GaitType>(packet[o::kGaitType]);

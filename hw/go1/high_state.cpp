@@ -25,7 +25,12 @@ void get_floats(std::span<const std::uint8_t> packet, std::size_t offset,
 
 }  // namespace
 
-HighStateBytes encode_high_state(const HighState& state, std::uint8_t level_flag) {
+CrcForm robot_crc_form(std::uint8_t level_flag) {
+  return level_flag == kLevelFlagHighLevel ? CrcForm::kEncrypted : CrcForm::kPlain;
+}
+
+HighStateBytes encode_high_state(const HighState& state, std::uint8_t level_flag,
+                                 std::optional<CrcForm> crc_form) {
   HighStateBytes packet{};
   put_floats(packet, o::kImuQuaternion, state.imu_quaternion);
   put_floats(packet, o::kImuGyroscope, state.imu_gyroscope);
@@ -44,14 +49,16 @@ HighStateBytes encode_high_state(const HighState& state, std::uint8_t level_flag
   put_floats(packet, o::kVelocity, state.velocity);
   put_f32(packet, o::kYawSpeed, state.yaw_speed);
   put_floats(packet, o::kRangeObstacle, state.range_obstacle);
-  seal_frame(packet, level_flag);
+  seal_frame(packet, level_flag, crc_form.value_or(robot_crc_form(level_flag)));
   return packet;
 }
 
 DecodeResult<HighState> decode_high_state(std::span<const std::uint8_t> packet,
                                           std::optional<std::uint8_t> expected_level_flag,
                                           bool check_crc) {
-  if (auto refused = check_frame(packet, kHighStateLength, expected_level_flag, check_crc))
+  const AcceptedCrcForms robot_or_developer{CrcForm::kEncrypted, CrcForm::kPlain};
+  if (auto refused = check_frame(packet, kHighStateLength, expected_level_flag,
+                                 check_crc ? robot_or_developer : AcceptedCrcForms{}))
     return *refused;
   HighState state;
   get_floats(packet, o::kImuQuaternion, state.imu_quaternion);

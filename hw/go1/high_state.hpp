@@ -9,6 +9,7 @@
 #include <optional>
 #include <span>
 
+#include "go1/crc_cipher.hpp"
 #include "go1/packet_refusal.hpp"
 #include "go1/protocol.hpp"
 
@@ -57,11 +58,18 @@ inline constexpr std::size_t kCrc = 1083;
 
 using HighStateBytes = std::array<std::uint8_t, kHighStateLength>;
 
-HighStateBytes encode_high_state(const HighState& state, std::uint8_t level_flag);
+// The CRC form Unitree's library checks a HighState with: encrypted when the level flag is 0xEE
+// (high level, as the robot sends it), plain otherwise (UDP::Recv()).
+CrcForm robot_crc_form(std::uint8_t level_flag);
 
-// `check_crc` exists because the SDK passes the received CRC through decryptCRC() first, whose
-// effect is not known (NOTES "Not confirmed"): if a real robot's states are all refused with
-// "bad crc", this is the switch to try.
+// Without `crc_form`, the CRC is stored as the robot stores it (robot_crc_form()); kPlain
+// writes what a developer-mode peer sends.
+HighStateBytes encode_high_state(const HighState& state, std::uint8_t level_flag,
+                                 std::optional<CrcForm> crc_form = std::nullopt);
+
+// With `check_crc`, the CRC must be stored encrypted (as the robot sends it) or plain (as
+// Unitree's library also accepts in its developer mode); the refusal names both values tried.
+// Without it, the CRC is not looked at.
 DecodeResult<HighState> decode_high_state(std::span<const std::uint8_t> packet,
                                           std::optional<std::uint8_t> expected_level_flag,
                                           bool check_crc = true);

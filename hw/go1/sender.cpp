@@ -24,6 +24,12 @@ HighCommand stand_command() {
   return HighCommand{};
 }  // idle mode, idle gait, all zero
 
+// Whether `from` is the robot's own address and port (compared as numbers, not as text).
+bool same_endpoint(const Endpoint& from, const sockaddr_in& robot) {
+  const sockaddr_in source = to_sockaddr(from);
+  return source.sin_addr.s_addr == robot.sin_addr.s_addr && source.sin_port == robot.sin_port;
+}
+
 }  // namespace
 
 Sender::Sender(SenderOptions options)
@@ -141,8 +147,24 @@ void Sender::send(const HighCommand& command) {
   status_.last_send_error = std::move(*error);
 }
 
+std::string ignored_datagrams_text(const SenderStatus& status) {
+  if (status.datagrams_ignored == 0) return "";
+  std::string text = "ignored " + std::to_string(status.datagrams_ignored) +
+                     (status.datagrams_ignored == 1 ? " datagram" : " datagrams");
+  if (status.last_ignored_from)
+    text += (status.datagrams_ignored == 1 ? " from " : ", the last from ") +
+            to_string(*status.last_ignored_from);
+  return text + " (not the robot)";
+}
+
 void Sender::read_states() {
   while (std::optional<Datagram> datagram = socket_.receive(std::chrono::milliseconds(0))) {
+    if (!same_endpoint(datagram->from, robot_address_)) {
+      const std::lock_guard lock(mutex_);
+      ++status_.datagrams_ignored;
+      status_.last_ignored_from = datagram->from;
+      continue;
+    }
     const DecodeResult<HighState> decoded =
         decode_high_state(datagram->bytes, options_.state_level_flag, options_.check_state_crc);
     const std::lock_guard lock(mutex_);

@@ -3,6 +3,12 @@
 // latest set_command() after clamping and ramping, and reads back HighState packets on the same
 // socket (the robot answers the command's source address, NOTES §1 "Addresses").
 //
+// State is taken only from the robot: a datagram from any other address or port is dropped
+// before it is decoded and counted (SenderStatus::datagrams_ignored). The CRC is no
+// authentication, its rule is public, so without this any host on the robot's network could set
+// the odometry the loop relies on. (Unitree's library connects its socket to the robot, and the
+// kernel drops such datagrams; we compare instead, so that they can be counted and reported.)
+//
 // Fail safe (the watchdog rule, watchdog.hpp): when no set_command() came for
 // `watchdog_timeout`, the sender commands stop (walking mode, zero velocity) for `stop_hold` and
 // then stand (idle mode). stop(), the destructor and SIGINT/SIGTERM (once
@@ -56,7 +62,12 @@ struct SenderStatus {
   std::uint64_t states_refused = 0;
   std::string last_refusal;  // why the last refused HighState was refused
   std::optional<HighState> latest_state;
+  std::uint64_t datagrams_ignored = 0;        // from anyone but the robot: never decoded
+  std::optional<Endpoint> last_ignored_from;  // the source of the last of them
 };
+
+// "ignored 12 datagrams from 192.168.12.40:5555 (not the robot)", or "" when none were.
+std::string ignored_datagrams_text(const SenderStatus& status);
 
 class Sender {
  public:

@@ -148,6 +148,21 @@ std::optional<GroundTruth> read_truth(const Json& object) {
   return truth;
 }
 
+std::optional<LinkRecord> read_link(const Json& object) {
+  if (!object.contains("link")) return std::nullopt;
+  const Json& value = object_at(object, "", "link");
+  LinkRecord link;
+  link.states_received =
+      read_unsigned(field(value, "link.", "states_received"), "link.states_received", kU64Max);
+  link.states_refused =
+      read_unsigned(field(value, "link.", "states_refused"), "link.states_refused", kU64Max);
+  link.datagrams_ignored =
+      read_unsigned(field(value, "link.", "datagrams_ignored"), "link.datagrams_ignored", kU64Max);
+  link.last_ignored_from =
+      read_string(field(value, "link.", "last_ignored_from"), "link.last_ignored_from");
+  return link;
+}
+
 double read_time(const Json& object) {
   const Json& value = field(object, "", "time_s");
   if (!value.is_number()) ill_typed("time_s", value, "a finite number");
@@ -174,6 +189,7 @@ StepRecord read_record(const Json& object) {
   record.command = read_command(object);
   record.filter_status = read_string(field(object, "", "filter_status"), "filter_status");
   record.truth = read_truth(object);
+  record.link = read_link(object);
   return record;
 }
 
@@ -198,6 +214,11 @@ Json step_to_json(const StepRecord& record) {
   if (record.truth)
     object["truth"] = Json{{"abstraction", record.truth->abstraction},
                            {"reward", double_json(record.truth->reward)}};
+  if (record.link)
+    object["link"] = Json{{"states_received", record.link->states_received},
+                          {"states_refused", record.link->states_refused},
+                          {"datagrams_ignored", record.link->datagrams_ignored},
+                          {"last_ignored_from", record.link->last_ignored_from}};
   return object;
 }
 

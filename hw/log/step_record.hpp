@@ -33,6 +33,17 @@ struct GroundTruth {
   double reward = 0.0;            // the reward of the true state under the true context
 };
 
+// What the robot link has seen so far (cumulative counts), when the loop drives a Go1 (the real
+// one or the fake); absent in dry runs and replays.
+struct LinkRecord {
+  std::uint64_t states_received = 0;    // valid HighState packets from the robot
+  std::uint64_t states_refused = 0;     // from the robot, but refused (length, head, flag, CRC)
+  std::uint64_t datagrams_ignored = 0;  // from anyone but the robot: never decoded
+  std::string last_ignored_from;        // "ADDRESS:PORT" of the last of them; "" if none
+
+  bool operator==(const LinkRecord&) const = default;
+};
+
 struct StepRecord {
   std::uint64_t step = 0;               // 0, 1, 2, ... within one run
   double time_s = 0.0;                  // seconds since the run started (frame time when replayed)
@@ -48,6 +59,7 @@ struct StepRecord {
   CommandRecord command;
   std::string filter_status;  // "ok", "zero_likelihood", ...
   std::optional<GroundTruth> truth;
+  std::optional<LinkRecord> link;
 };
 
 }  // namespace oasis::hw::log

@@ -56,14 +56,7 @@ std::string action_problems(const Go1Settings& settings, const rt::CatalogView& 
 }  // namespace
 
 std::string validate_against_catalog(const Go1Settings& settings, const rt::CatalogView& catalog) {
-  std::string text = action_problems(settings, catalog);
-  if (settings.filter.mode == rt::FilterMode::kRobust && !catalog.has_robust_section()) {
-    if (!text.empty()) text += "\n";
-    text += "filter.mode: robust needs a catalog with a robust section, and \"" +
-            std::string(catalog.name != nullptr ? catalog.name : "?") +
-            "\" has none (a continuous catalog never has one); use paper";
-  }
-  return text;
+  return action_problems(settings, catalog);
 }
 
 std::vector<go1::VelocityCommand> velocity_table(const Go1Settings& settings,

@@ -7,6 +7,9 @@
 
 #include <arpa/inet.h>
 
+#include "settings/controller_profile.hpp"
+#include "settings/shipped_profiles.hpp"
+
 namespace oasis::hw::settings::detail {
 
 namespace {
@@ -170,6 +173,26 @@ bool CatalogSpecCodec::parse(std::string_view text, std::string& out) const {
   if (text != kLinkedCatalog && text != kAnyCatalogSpec && !spec) return false;
   out = std::string(text);
   return true;
+}
+
+std::string ControllerCodec::expected() const {
+  return "a controller profile (" + shipped_profile_names() + ") or a path to a .yaml profile";
+}
+
+bool ControllerCodec::parse(std::string_view text, std::string& out) const {
+  bool known = is_profile_path(text);
+  for (const std::string& name : spellings())
+    known = known || name == text;
+  if (!known) return false;
+  out = std::string(text);
+  return true;
+}
+
+std::vector<std::string> ControllerCodec::spellings() const {
+  std::vector<std::string> names;
+  for (const detail::ShippedProfileText& shipped : shipped_profile_texts())
+    names.push_back(shipped.name);
+  return names;
 }
 
 bool SourceCodec::parse(std::string_view text, FrameSourceSetting& out) const {

@@ -207,6 +207,15 @@ struct CatalogSpecCodec {
   std::string format(const std::string& value) const { return yaml_string(value); }
 };
 
+// A controller profile: the name of a shipped one (hw/config/controllers/), or a path to a
+// .yaml profile (controller_profile.hpp).
+struct ControllerCodec {
+  std::string expected() const;
+  bool parse(std::string_view text, std::string& out) const;
+  std::string format(const std::string& value) const { return yaml_string(value); }
+  std::vector<std::string> spellings() const;
+};
+
 // The dotted path of `key` inside the sections `prefix` ("robot", "port" -> "robot.port"), as
 // errors and comparisons name keys.
 inline std::string dotted_key(const std::vector<std::string>& prefix, std::string_view key) {

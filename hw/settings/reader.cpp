@@ -6,6 +6,15 @@
 #include "settings/schema_reader.hpp"
 
 namespace oasis::hw::settings {
+namespace {
+
+// The controller's options moved from the settings into controller profiles (issue 22).
+constexpr const char* kMovedToProfile =
+    "the filter's options and the tag evidence live in controller profiles now "
+    "(hw/config/controllers/); pick one with loop.controller or --controller, or write your own "
+    "profile file and give its path";
+
+}  // namespace
 
 Go1Settings parse_settings(std::string_view yaml_text, std::string_view file_name) {
   Go1Settings settings = default_settings();
@@ -13,7 +22,11 @@ Go1Settings parse_settings(std::string_view yaml_text, std::string_view file_nam
       yaml_text, file_name, settings,
       [](auto& visitor, auto& values) { detail::describe(visitor, values); },
       [](const Go1Settings& values) { return detail::cross_check(values); },
-      "robot:, limits:, actions:, camera:, perception:, filter:, loop:, source:");
+      "robot:, limits:, actions:, camera:, perception:, loop:, source:",
+      {{"filter", kMovedToProfile},
+       {"loop.treat_sighting", kMovedToProfile},
+       {"loop.tag_unseen_likelihood", kMovedToProfile},
+       {"loop.unknown_reward_when_tag_cut", kMovedToProfile}});
   return settings;
 }
 

@@ -21,10 +21,6 @@ inline const EnumCodec<go1::GaitType> kGaitCodec{{{"idle", go1::GaitType::kIdle}
                                                   {"trot_running", go1::GaitType::kTrotRunning},
                                                   {"climb_stair", go1::GaitType::kClimbStair},
                                                   {"trot_obstacle", go1::GaitType::kTrotObstacle}}};
-inline const EnumCodec<rt::FilterMode> kModeCodec{
-    {{"paper", rt::FilterMode::kPaper}, {"robust", rt::FilterMode::kRobust}}};
-inline const EnumCodec<rt::TieRule> kTieRuleCodec{
-    {{"keep", rt::TieRule::kKeep}, {"random", rt::TieRule::kRandom}}};
 inline const EnumCodec<MissingHuman> kMissingHumanCodec{
     {{"hold_last", MissingHuman::kHoldLast}, {"outside", MissingHuman::kOutside}}};
 
@@ -219,25 +215,6 @@ void describe(V& v, S& s) {
                   });
       });
 
-  v.section(
-      "filter",
-      "The attention filter (runtime/include/oasis/rt/attention_filter.hpp). The defaults are\n"
-      "Algorithm 1 of the paper.",
-      [&] {
-        v.value("mode", s.filter.mode, kModeCodec, "paper, or robust (needs a robust section)");
-        v.value("tie_rule", s.filter.tie_rule, kTieRuleCodec,
-                "ties: keep the current abstraction, or random");
-        v.value("seed", s.filter.seed, SeedCodec{}, "seed of the random tie rule");
-        v.value("tie_tolerance", s.filter.tie_tolerance, non_negative<double>(),
-                "beliefs this close are tied");
-        v.value("reward_tolerance", s.filter.reward_tolerance, non_negative<double>(),
-                "|observed - expected reward| <= this: a match");
-        v.value("detection_epsilon", s.filter.detection_epsilon,
-                RealCodec<double>{0.0, 1.0, false, true}, "0: the paper's exact detection model");
-        v.value("zero_likelihood_guard", s.filter.zero_likelihood_guard, BoolCodec{},
-                "no hypothesis fits: keep prediction, or prior");
-      });
-
   v.section("loop", "The control loop of oasis-go1: camera -> perception -> filter -> link.", [&] {
     v.value("rate_hz", s.loop.rate_hz, RealCodec<double>{0.0, 100.0, true},
             "the spec's period 0.2 s; actions: assumes it");
@@ -251,12 +228,8 @@ void describe(V& v, S& s) {
             "a person outside the catalog's domain: put at its edge");
     v.value("keepalive_ms", s.loop.keepalive, MillisecondsCodec{5, 500},
             "repeat the command this often between decisions");
-    v.value("treat_sighting", s.loop.treat_sighting, RealCodec<double>{0.0, 1.0, false, true},
-            "0: the tag gives the reward; p: a seen tag names its holder");
-    v.value("tag_unseen_likelihood", s.loop.tag_unseen_likelihood,
-            RealCodec<double>{0.0, 1.0, true, false}, "1: no tag says nothing; p: see README");
-    v.value("unknown_reward_when_tag_cut", s.loop.unknown_reward_when_tag_cut, BoolCodec{},
-            "no tag, a tag in reach out of image: reward unknown");
+    v.value("controller", s.loop.controller, ControllerCodec{},
+            "a profile of hw/config/controllers/, or a .yaml path");
   });
 
   v.value("source", s.source, SourceCodec{}, "synthetic, camera, or recorded:DIR (a recording)");

@@ -85,8 +85,13 @@ class Reader {
     YAML::Node value;
   };
 
-  Reader(std::string_view text, std::vector<std::string> schema_paths)
-      : lines_(split_lines(text)), schema_paths_(std::move(schema_paths)) {}
+  // `moved`: keys that earlier versions had, by dotted path, and where they went; such a key
+  // is an error that says so.
+  Reader(std::string_view text, std::vector<std::string> schema_paths,
+         std::vector<std::pair<std::string, std::string>> moved = {})
+      : lines_(split_lines(text)),
+        schema_paths_(std::move(schema_paths)),
+        moved_(std::move(moved)) {}
 
   // `describe(visitor)` walks the schema with this reader as the visitor; `sections` lists the
   // top-level keys for the message when the file is not a mapping ("robot:, limits:, ...").
@@ -256,6 +261,9 @@ class Reader {
   }
 
   std::string unknown_key_message(const Frame& frame, const std::string& key) const {
+    const std::string dotted = frame.path.empty() ? key : frame.path + "." + key;
+    for (const auto& [old_path, where_now] : moved_)
+      if (old_path == dotted) return "no longer a key here: " + where_now;
     if (const auto close = closest_candidate(key, frame.known))
       return "unknown key; did you mean \"" + *close + "\"?";
     for (const std::string& path : schema_paths_) {
@@ -381,6 +389,7 @@ class Reader {
 
   std::vector<std::string> lines_;
   std::vector<std::string> schema_paths_;
+  std::vector<std::pair<std::string, std::string>> moved_;
   std::vector<Frame> frames_;
   std::map<std::string, YAML::Mark> marks_;  // path -> where the file wrote it
   std::vector<Diagnostic> diagnostics_;
@@ -407,9 +416,11 @@ inline std::optional<std::size_t> second_document_line(std::string_view yaml_tex
 // `cross_check(values)` returns the CrossProblems between keys; it runs only when every key is
 // valid on its own, since a failed key's default would only add confusing follow-up errors.
 // Throws SettingsError with every problem found.
+// `moved` lists keys of earlier versions and where they went (see Reader).
 template <class Values, class Describe, class CrossCheck>
 void parse_with_schema(std::string_view yaml_text, std::string_view file_name, Values& values,
-                       Describe&& describe, CrossCheck&& cross_check, std::string_view sections) {
+                       Describe&& describe, CrossCheck&& cross_check, std::string_view sections,
+                       std::vector<std::pair<std::string, std::string>> moved = {}) {
   const std::string file(file_name);
   // Not YAML::LoadAll: Debian 12's yaml-cpp 0.7.0 loops forever, allocating, on a stray comma
   // (upstream jbeder/yaml-cpp#1040; found by tests/fuzz/settings_fuzz.cpp). YAML::Load reads the
@@ -433,7 +444,8 @@ void parse_with_schema(std::string_view yaml_text, std::string_view file_name, V
                                 {}}});
 
   const Values defaults = values;
-  Reader reader(yaml_text, schema_paths([&](auto& lister) { describe(lister, defaults); }));
+  Reader reader(yaml_text, schema_paths([&](auto& lister) { describe(lister, defaults); }),
+                std::move(moved));
   reader.read(
       document, [&](auto& visitor) { describe(visitor, values); }, sections);
   if (reader.diagnostics().empty())

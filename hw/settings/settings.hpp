@@ -21,6 +21,7 @@
 #include "oasis/rt/attention_filter.hpp"
 #include "oasis/rt/catalog_view.hpp"
 #include "perception/perception.hpp"
+#include "settings/controller_profile.hpp"
 #include "settings/settings_error.hpp"
 
 namespace oasis::hw::settings {
@@ -82,21 +83,17 @@ struct LoopSettings {
   // Between decisions the loop repeats its command this often, so the watchdog only fires when
   // the loop itself stalls (app/control_loop.hpp).
   std::chrono::milliseconds keepalive{50};
-  // Beyond the paper (app/attention_controller.hpp's ControllerSettings): a seen treat tag as a
-  // second measurement of the context, right with this probability (0: off, the paper); no tag
-  // on someone whose tag would show as evidence against them (1: off); and the reward as
-  // unknown when a tag in reach could be out of the image.
-  double treat_sighting = 0.0;
-  double tag_unseen_likelihood = 1.0;
-  bool unknown_reward_when_tag_cut = false;
+  // The controller: a profile of hw/config/controllers/ by name, or a path to a .yaml profile
+  // (controller_profile.hpp): the filter's options and the tag evidence live there, so that
+  // `sim`, `run` and `replay` read the same ones.
+  std::string controller = std::string(kDefaultController);
 };
 
 struct Go1Settings {
   go1::SenderOptions link = default_link_options();  // YAML robot: and limits: (link.limits)
   camera::LiveCameraOptions camera;
   PerceptionConfig perception;  // YAML perception:, and camera.mount: (perception.mount)
-  rt::FilterOptions filter;
-  LoopSettings loop;  // YAML loop:, and actions: (loop.actions)
+  LoopSettings loop;            // YAML loop:, and actions: (loop.actions)
   FrameSourceSetting source;
 };
 
@@ -128,8 +125,8 @@ inline bool operator==(const Go1Settings& a, const Go1Settings& b) {
 }
 
 // Checks the settings against the catalog the loop will run: every catalog action must have a
-// velocity and every velocity must name a catalog action; filter.mode robust needs a catalog
-// with a robust section. Returns one line per problem (naming both action lists), or "".
+// velocity and every velocity must name a catalog action. Returns one line per problem (naming
+// both action lists), or "". (The controller's own check: validate_profile_against_catalog.)
 std::string validate_against_catalog(const Go1Settings& settings, const rt::CatalogView& catalog);
 
 // The velocity of each catalog action, indexed like catalog.action_names. Throws

@@ -131,7 +131,7 @@ struct DiscreteFilter<false> {
   explicit DiscreteFilter(const CatalogView& view) : filter(view, options(), workspace) {}
   static FilterOptions options() {
     FilterOptions robust;
-    robust.mode = FilterMode::kRobust;
+    robust.mode = FilterMode::kJoint;
     return robust;
   }
 };
@@ -347,7 +347,7 @@ void BM_Go1Step(benchmark::State& state) {
     return;
   }
   FilterOptions options;
-  options.mode = state.range(0) == 1 ? FilterMode::kRobust : FilterMode::kPaper;
+  options.mode = state.range(0) == 1 ? FilterMode::kNoiseAware : FilterMode::kPaper;
   options.zero_likelihood_guard = true;
   std::vector<double> workspace(AttentionFilter::workspace_size(catalog.view(), options));
   AttentionFilter filter(catalog.view(), options, workspace.data(), workspace.size());
@@ -359,7 +359,7 @@ void BM_Go1Step(benchmark::State& state) {
     const double reward = reading[0] >= 0.3 && reading[0] <= 0.8 && std::fabs(reading[1]) <= 0.25;
     benchmark::DoNotOptimize(filter.step(reading.data(), 4, reward, 0));
   }
-  if (options.mode == FilterMode::kRobust) {
+  if (options.mode == FilterMode::kNoiseAware) {
     // Boxes per step, measured on the same readings outside the timed loop.
     std::vector<double> mass_workspace(RewardMass::workspace_size(catalog.view()));
     RewardMass mass(catalog.view(), {}, mass_workspace.data());

@@ -27,7 +27,7 @@ app::SimTrialSetup fast_setup() {
 
 void run_trials(benchmark::State& state, const std::string& controller,
                 const app::SimTrialSetup& setup) {
-  const app::SimControllerKind& kind = *app::find_sim_controller(controller);
+  const settings::ControllerProfile kind = settings::find_controller_profile(controller);
   std::uint64_t seed = 1;
   std::size_t steps = 0;
   for (auto _ : state) {

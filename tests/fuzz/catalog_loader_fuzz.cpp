@@ -28,8 +28,9 @@ void load_and_drive(const std::uint8_t* data, std::size_t size) {
   std::string why;
   FUZZ_REQUIRE(rt::validate(loaded.view(), &why));
   drive_filter(loaded.view(), rt::FilterMode::kPaper, FuzzSteps(data, size));
-  if (loaded.view().has_robust_section())
-    drive_filter(loaded.view(), rt::FilterMode::kRobust, FuzzSteps(data, size));
+  if (loaded.view()
+          .has_noise_model())  // the filter of the catalog's own kind that models the noise
+    drive_filter(loaded.view(), rt::noise_model_mode(loaded.view()), FuzzSteps(data, size));
 }
 
 }  // namespace

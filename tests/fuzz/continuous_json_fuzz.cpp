@@ -26,7 +26,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     return 0;
   }
   fuzz::drive_filter(view, rt::FilterMode::kPaper, fuzz::FuzzSteps(data, size));
-  if (view.has_robust_section())
-    fuzz::drive_filter(view, rt::FilterMode::kRobust, fuzz::FuzzSteps(data, size));
+  if (view.has_noise_model())  // the filter of the catalog's own kind that models the noise
+    fuzz::drive_filter(view, rt::noise_model_mode(view), fuzz::FuzzSteps(data, size));
   return 0;
 }

@@ -85,7 +85,7 @@ TEST(CatalogFile, RobustSectionRoundTrips) {
   ASSERT_TRUE(loaded.ok()) << loaded.error();
   EXPECT_TRUE(loaded.view().has_robust_section());
   EXPECT_DOUBLE_EQ(loaded.view().observation.p_correct, 0.3);
-  expect_same_decisions(catalog.view(), loaded.view(), rt::FilterMode::kRobust);
+  expect_same_decisions(catalog.view(), loaded.view(), rt::FilterMode::kJoint);
 }
 
 TEST(CatalogFile, FileOnDiskLoads) {
@@ -176,7 +176,7 @@ TEST(CatalogFile, MutationsWithAFixedChecksumNeverBreakTheLoader) {
     std::string why;
     ASSERT_TRUE(rt::validate(loaded.view(), &why)) << why;
     rt::FilterOptions options;
-    options.mode = rt::FilterMode::kRobust;
+    options.mode = rt::FilterMode::kJoint;
     std::vector<double> work(rt::AttentionFilter::workspace_size(loaded.view(), options));
     rt::AttentionFilter filter(loaded.view(), options, work.data(), work.size());
     if (!filter.ok()) continue;

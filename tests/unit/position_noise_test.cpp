@@ -178,7 +178,7 @@ TEST(PositionNoiseCatalog, TheNoiseAwareFilterWeighsReadingsNearTheRegionsEdge) 
   const rt::CatalogView view = data.view();
   rt::FilterOptions paper;
   rt::FilterOptions robust;
-  robust.mode = rt::FilterMode::kRobust;
+  robust.mode = rt::FilterMode::kNoiseAware;
   std::vector<double> paper_work(rt::AttentionFilter::workspace_size(view, paper));
   std::vector<double> robust_work(rt::AttentionFilter::workspace_size(view, robust));
   rt::AttentionFilter algorithm1(view, paper, paper_work.data(), paper_work.size());

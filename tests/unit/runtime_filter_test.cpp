@@ -316,7 +316,7 @@ TEST(RuntimeCatalog, CorruptedArraysAreRejectedOrHarmless) {
     }
     if (!validate(ex.view)) continue;
     ++accepted;
-    for (FilterMode mode : {FilterMode::kPaper, FilterMode::kRobust}) {
+    for (FilterMode mode : {FilterMode::kPaper, FilterMode::kJoint}) {
       FilterOptions options;
       options.mode = mode;
       FixedWorkspace<2, 3> ws;
@@ -568,9 +568,14 @@ TEST(RuntimeFilter, ConstructionErrors) {
 
   FixedWorkspace<2, 3> ws;
   FilterOptions robust;
-  robust.mode = FilterMode::kRobust;
+  robust.mode = FilterMode::kJoint;
   AttentionFilter no_section(ex.view, robust, ws);
   EXPECT_EQ(no_section.error(), oasis::rt::FilterError::kNoRobustSection);
+  FilterOptions noise_aware;
+  noise_aware.mode = FilterMode::kNoiseAware;  // a continuous catalog's mode
+  AttentionFilter wrong_kind(ex.view, noise_aware, ws);
+  EXPECT_EQ(wrong_kind.error(), oasis::rt::FilterError::kWrongCatalogKind);
+  EXPECT_EQ(oasis::rt::noise_model_mode(ex.view), FilterMode::kJoint);
 
   FilterOptions bad;
   bad.detection_epsilon = 1.0;
@@ -628,7 +633,7 @@ TEST(RuntimeFilter, RobustModeSurvivesOneWrongStateObservation) {
   AttentionFilter paper(ex.view, FilterOptions{}, paper_ws);
   FixedWorkspace<2, 3> robust_ws;
   FilterOptions options;
-  options.mode = FilterMode::kRobust;
+  options.mode = FilterMode::kJoint;
   AttentionFilter robust(ex.view, options, robust_ws);
   ASSERT_TRUE(robust.ok());
 
@@ -665,7 +670,7 @@ TEST(RuntimeFilter, RobustStepMatchesHandComputation) {
   DiscreteExample ex(true, 0.7);
   FixedWorkspace<2, 3> ws;
   FilterOptions options;
-  options.mode = FilterMode::kRobust;
+  options.mode = FilterMode::kJoint;
   AttentionFilter f(ex.view, options, ws);
   ASSERT_EQ(f.start(kS2), StepStatus::kOk);
   EXPECT_NEAR(f.joint_belief(0, kS1), 0.075, kEps);
@@ -692,7 +697,7 @@ TEST(RuntimeFilter, RobustZeroLikelihoodNeverNaN) {
     DiscreteExample ex(true, 1.0);  // a perfect sensor makes contradictions easy
     FixedWorkspace<2, 3> ws;
     FilterOptions options;
-    options.mode = FilterMode::kRobust;
+    options.mode = FilterMode::kJoint;
     options.zero_likelihood_guard = guard;
     AttentionFilter f(ex.view, options, ws);
     f.start(kS3);
@@ -720,7 +725,7 @@ TEST(RuntimeFilter, RewardEvidenceMatchesHandComputation) {
   DiscreteExample ex(true, 0.7);
   FixedWorkspace<2, 3> ws;
   FilterOptions options;
-  options.mode = FilterMode::kRobust;
+  options.mode = FilterMode::kJoint;
   AttentionFilter robust(ex.view, options, ws);
   robust.start(kS2);
   EXPECT_EQ(robust.reward_evidence(), 1.0);
@@ -748,7 +753,7 @@ TEST(RuntimeFilter, RobustRewardCanFollowTheObservedState) {
   ex.view.observation.reward_source = RewardSource::kObservedState;
   FixedWorkspace<2, 3> ws;
   FilterOptions options;
-  options.mode = FilterMode::kRobust;
+  options.mode = FilterMode::kJoint;
   AttentionFilter f(ex.view, options, ws);
   f.start(kS2);
   EXPECT_EQ(f.step(kS2, 0.0, kL), StepStatus::kOk);
@@ -805,7 +810,7 @@ TEST(RuntimeFilter, WeighContextScalesTheRobustJointBelief) {
   DiscreteExample ex(true, 0.7);
   FixedWorkspace<2, 3> ws;
   FilterOptions options;
-  options.mode = FilterMode::kRobust;
+  options.mode = FilterMode::kJoint;
   AttentionFilter f(ex.view, options, ws);
   f.start(kS2);
   f.step(kS3, 1.0, kR);
@@ -837,6 +842,37 @@ TEST(HedgedFilter, NeedsAnObservationModelAndSaneOptions) {
   options.share = 1.0;
   EXPECT_EQ(HedgedFilter(ex.view, options, ws.data(), ws.size()).error(),
             oasis::rt::FilterError::kBadOptions);
+}
+
+// The hedged filter breaks ties by the paper options' tie rule, through the same routine as
+// AttentionFilter: at the uniform prior both abstractions tie; kKeep takes the lowest, kRandom
+// draws among them, the same draws for the same seed, and both over several seeds.
+TEST(HedgedFilter, TiesFollowTheTieRule) {
+  DiscreteExample ex(true, 0.7);
+  HedgeOptions options;
+  std::vector<double> ws = hedged_workspace(ex.view, options);
+  {
+    HedgedFilter keep(ex.view, options, ws.data(), ws.size());
+    ASSERT_TRUE(keep.ok());
+    EXPECT_EQ(keep.ml_abstraction(), 0u);
+  }
+  options.paper.tie_rule = oasis::rt::TieRule::kRandom;
+  bool picked[2] = {false, false};
+  for (std::uint64_t seed = 0; seed < 32; ++seed) {
+    options.paper.seed = seed;
+    HedgedFilter first(ex.view, options, ws.data(), ws.size());
+    ASSERT_TRUE(first.ok());
+    const std::uint32_t choice = first.ml_abstraction();
+    first.reset();
+    EXPECT_EQ(first.ml_abstraction(), choice) << "the same seed draws the same";
+    // AttentionFilter's own choice at the same prior, seed and rule: the one routine.
+    FilterOptions paper = options.paper;
+    FixedWorkspace<2, 3> alone_ws;
+    AttentionFilter alone(ex.view, paper, alone_ws);
+    EXPECT_EQ(alone.ml_abstraction(), choice) << seed;
+    picked[choice] = true;
+  }
+  EXPECT_TRUE(picked[0] && picked[1]) << "the random rule never picked one of the tied";
 }
 
 // A wrong state with the true state's reward (the robust model's world, as in

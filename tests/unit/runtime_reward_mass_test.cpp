@@ -251,7 +251,7 @@ TEST(NoiseAwareFilter, AReadingJustPastTheRewardBoxStillExplainsTheReward) {
   // with certainty; the noise-aware filter keeps both nearly even.
   NoisyCatalog catalog;
   Filter paper(catalog.view, rt::FilterMode::kPaper);
-  Filter robust(catalog.view, rt::FilterMode::kRobust);
+  Filter robust(catalog.view, rt::FilterMode::kNoiseAware);
   ASSERT_TRUE(robust.filter.ok());
   const double state[2] = {2.02, 0.5};
   for (Filter* f : {&paper, &robust}) {
@@ -270,7 +270,7 @@ TEST(NoiseAwareFilter, AReadingJustPastTheRewardBoxStillExplainsTheReward) {
 
 TEST(NoiseAwareFilter, AMissedObjectOnlyPredicts) {
   NoisyCatalog catalog;
-  Filter robust(catalog.view, rt::FilterMode::kRobust);
+  Filter robust(catalog.view, rt::FilterMode::kNoiseAware);
   const double seen[2] = {1.5, 0.5};
   ASSERT_EQ(robust.filter.start(seen, 2), rt::StepStatus::kOk);
   ASSERT_EQ(robust.filter.step(seen, 2, 1.0, 0), rt::StepStatus::kOk);
@@ -288,9 +288,17 @@ TEST(NoiseAwareFilter, AMissedObjectOnlyPredicts) {
 TEST(NoiseAwareFilter, NeedsAPositionNoiseModel) {
   NoisyCatalog catalog;
   catalog.view.observation.position = {};
-  Filter robust(catalog.view, rt::FilterMode::kRobust);
+  Filter robust(catalog.view, rt::FilterMode::kNoiseAware);
   EXPECT_FALSE(robust.filter.ok());
   EXPECT_EQ(robust.filter.error(), rt::FilterError::kNoRobustSection);
+}
+
+// The discrete joint filter's mode is refused on a continuous catalog, by name.
+TEST(NoiseAwareFilter, TheJointModeIsForDiscreteCatalogs) {
+  NoisyCatalog catalog;
+  Filter joint(catalog.view, rt::FilterMode::kJoint);
+  EXPECT_EQ(joint.filter.error(), rt::FilterError::kWrongCatalogKind);
+  EXPECT_EQ(rt::noise_model_mode(catalog.view), rt::FilterMode::kNoiseAware);
 }
 
 TEST(NoiseAwareFilter, ValidateRefusesABrokenNoiseModel) {

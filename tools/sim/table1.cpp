@@ -29,7 +29,7 @@ rt::FilterOptions filter_options(FilterKind filter, std::uint64_t seed) {
       break;
     case FilterKind::kRobust:
     case FilterKind::kHedged:  // its robust part; the hedge sets the mode itself
-      options.mode = rt::FilterMode::kRobust;
+      options.mode = rt::FilterMode::kJoint;
       break;
   }
   return options;

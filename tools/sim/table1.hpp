@@ -41,7 +41,7 @@ namespace oasis::sim {
 //  guard  - zero_likelihood_guard (keep the prediction instead of resetting to the prior when
 //           no abstraction explains the observation);
 //  soft   - detection_epsilon = 0.05 (soft detection model);
-//  robust - FilterMode::kRobust (joint belief over abstraction and true state, observation
+//  robust - FilterMode::kJoint (joint belief over abstraction and true state, observation
 //           model p_correct = 1 - sigma, the reward following the state the declared reading
 //           says), random ties;
 //  hedged - rt::HedgedFilter: Algorithm 1 and the robust filter of the declared reading,

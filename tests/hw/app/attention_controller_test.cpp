@@ -110,7 +110,7 @@ TEST(AttentionController, RefusesVelocitiesThatDoNotCoverTheActions) {
 TEST(AttentionController, RobustModeNeedsTheCatalogsObservationModel) {
   const rt::CatalogView& catalog = go1_treat::catalog();
   ControllerSettings settings = spec_settings(catalog);
-  settings.filter.mode = rt::FilterMode::kRobust;
+  settings.filter.mode = rt::FilterMode::kNoiseAware;
   AttentionController noise_aware(catalog, settings);  // the spec declares its camera
   noise_aware.decide(seen_at(0.6, 0.0, 2.0, -0.5, 1.0), 0.0, {});
   const log::StepRecord second = noise_aware.decide(seen_at(0.6, 0.0, 2.0, -0.5, 1.0), 0.2, {});
@@ -184,7 +184,7 @@ TEST(AttentionController, AnUnknownRewardIsNotTakenForZero) {
   EXPECT_DOUBLE_EQ(ruled_out.belief[human1], 0.0);
   EXPECT_EQ(ruled_out.reward, 0.0);
 
-  settings.filter.mode = rt::FilterMode::kRobust;
+  settings.filter.mode = rt::FilterMode::kNoiseAware;
   settings.unknown_reward_when_tag_cut = true;
   AttentionController careful(catalog, settings);
   careful.decide(too_near, 0.0, {});

@@ -264,10 +264,58 @@ TEST(OasisGo1Program, SimWritesTable2JsonPerControllerAndLogsThatScoreReads) {
 TEST(OasisGo1Program, SimRefusesAnUnknownController) {
   const Outcome sim = run({"sim", "--controllers", "oracle,psychic"});
   EXPECT_EQ(sim.status, 1);
-  EXPECT_NE(sim.output.find(
-                "no controller \"psychic\"; there are oracle, paper, guard, no-attention, ours"),
+  EXPECT_NE(sim.output.find("no controller profile \"psychic\"; the shipped ones are oracle, "
+                            "paper, guard, no-attention, ours"),
             std::string::npos)
       << sim.output;
+}
+
+// The text between `before` and the next `after` in `text`, or "" if absent.
+std::string between(const std::string& text, const std::string& before, const std::string& after) {
+  const std::size_t start = text.find(before);
+  if (start == std::string::npos) return "";
+  const std::size_t from = start + before.size();
+  const std::size_t end = text.find(after, from);
+  return end == std::string::npos ? "" : text.substr(from, end - from);
+}
+
+// Issue 22: the controller that `sim` scores is the one `run` drives. Both print the summary of
+// the profile they built their controller from (every option that differs from the paper's
+// defaults, settings::profile_summary), for a shipped profile and for a file of one's own.
+TEST(OasisGo1Program, SimScoresTheControllerThatRunDrives) {
+  const fs::path mine = write_config("mine.yaml",
+                                     "description: a profile of my own\n"
+                                     "filter:\n  mode: noise_aware\n  tie_rule: random\n"
+                                     "  seed: 3\n  tie_tolerance: 0.02\n"
+                                     "  zero_likelihood_guard: true\n"
+                                     "evidence:\n  treat_sighting: 0.8\n");
+  for (const std::string& controller : {std::string("ours"), mine.string()}) {
+    const Outcome sim =
+        run({"sim", "--controllers", controller, "--trials", "1", "--steps", "5", "--json"});
+    ASSERT_EQ(sim.status, 0) << sim.output;
+    const std::string scored = between(sim.output, "\"options\": \"", "\"");
+    const Outcome driven = run({"run", "--dry-run", "--source", "synthetic", "--fast", "--steps",
+                                "2", "--quiet", "--controller", controller});
+    ASSERT_EQ(driven.status, 0) << driven.output;
+    const std::string ran = between(driven.output, ".yaml: ", "); ");
+    EXPECT_FALSE(scored.empty()) << sim.output;
+    EXPECT_EQ(scored, ran) << controller << "\n" << sim.output << "\n" << driven.output;
+  }
+  // Without --controller, run drives the settings' loop.controller: ours, what sim measured best.
+  const Outcome by_default =
+      run({"run", "--dry-run", "--source", "synthetic", "--fast", "--steps", "2", "--quiet"});
+  EXPECT_NE(by_default.output.find("controller ours (hw/config/controllers/ours.yaml: "),
+            std::string::npos)
+      << by_default.output;
+}
+
+TEST(OasisGo1Program, RunRefusesTheSimulationBaselines) {
+  for (const char* baseline : {"oracle", "no-attention"}) {
+    const Outcome outcome = run({"run", "--dry-run", "--source", "synthetic", "--fast", "--steps",
+                                 "2", "--quiet", "--controller", baseline});
+    EXPECT_EQ(outcome.status, 1) << baseline;
+    EXPECT_NE(outcome.output.find("oasis-go1 sim"), std::string::npos) << outcome.output;
+  }
 }
 
 TEST(OasisGo1Program, MissingCameraNamesTheDevice) {

@@ -12,6 +12,7 @@
 #include "log/step_log_reader.hpp"
 #include "log/step_log_writer.hpp"
 #include "log/table2_metrics.hpp"
+#include "settings/settings_error.hpp"
 #include "spec_controller_settings.hpp"
 
 namespace oasis::hw::app {
@@ -27,7 +28,8 @@ SimTrialSetup setup_for(sim::ObservationPath path, std::optional<std::uint64_t> 
 
 SimTrialResult trial(const std::string& controller, const SimTrialSetup& setup,
                      std::uint64_t seed = 5) {
-  return run_sim_trial(go1_treat::catalog(), setup, *find_sim_controller(controller), seed);
+  return run_sim_trial(go1_treat::catalog(), setup, settings::find_controller_profile(controller),
+                       seed);
 }
 
 TEST(SimTrial, AFastTrialIsOneMinuteWithTruthOnEveryStep) {
@@ -89,10 +91,12 @@ TEST(SimTrial, AShortRenderedTrialRunsTheRealPerception) {
   EXPECT_GT(seen, 0);  // the shirts were found in rendered pixels
 }
 
-TEST(SimTrial, ControllersAreFoundByName) {
-  for (const char* name : {"oracle", "paper", "guard", "no-attention", "ours"})
-    EXPECT_NE(find_sim_controller(name), nullptr) << name;
-  EXPECT_EQ(find_sim_controller("no-such"), nullptr);
+TEST(SimTrial, ControllersAreTheShippedProfiles) {
+  std::vector<std::string> names;
+  for (const settings::ControllerProfile& profile : settings::shipped_controller_profiles())
+    names.push_back(profile.name);
+  EXPECT_EQ(names, (std::vector<std::string>{"oracle", "paper", "guard", "no-attention", "ours"}));
+  EXPECT_THROW(settings::find_controller_profile("no-such"), settings::SettingsError);
 }
 
 }  // namespace

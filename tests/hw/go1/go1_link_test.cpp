@@ -12,9 +12,11 @@
 
 #include "go1/fake_go1.hpp"
 #include "go1/high_cmd.hpp"
+#include "go1/high_state.hpp"
 #include "go1/link_error.hpp"
 #include "go1/sender.hpp"
 #include "go1/stop_signal.hpp"
+#include "go1/udp_socket.hpp"
 #include "loopback_link.hpp"
 
 namespace oasis::hw::go1 {
@@ -297,6 +299,47 @@ TEST(Go1Link, SilentRobotLeavesNoStateAndStopsCleanly) {
   const SenderStatus status = sender.status();
   EXPECT_GT(status.packets_sent, 0u);
   EXPECT_FALSE(status.latest_state.has_value());
+}
+
+// Issue 27: state is taken only from the robot's own address and port. A well-formed HighState
+// from a second socket (another port on the same host) is ignored and counted, never decoded;
+// the robot's own packets are still taken.
+TEST(Go1Link, StateFromAnyoneButTheRobotIsIgnoredAndCounted) {
+  UdpSocket robot(Endpoint{"127.0.0.1", 0});
+  UdpSocket stranger(Endpoint{"127.0.0.1", 0});
+  Sender sender(loopback_options(robot.local_endpoint(), milliseconds(20), milliseconds(20)));
+  const sockaddr_in sender_address = to_sockaddr(sender.local_endpoint());
+
+  HighState forged;
+  forged.position = {9.0f, 9.0f, 0.0f};
+  const HighStateBytes forged_bytes = encode_high_state(forged, kLevelFlagHighLevel);
+  for (int i = 0; i < 12; ++i)
+    ASSERT_FALSE(stranger.send_to(forged_bytes, sender_address).has_value());
+  const Clock::time_point deadline = Clock::now() + milliseconds(1000);
+  while (sender.status().datagrams_ignored < 12 && Clock::now() < deadline)
+    std::this_thread::sleep_for(milliseconds(5));
+  SenderStatus status = sender.status();
+  EXPECT_EQ(status.datagrams_ignored, 12u);
+  ASSERT_TRUE(status.last_ignored_from.has_value());
+  EXPECT_EQ(*status.last_ignored_from, stranger.local_endpoint());
+  EXPECT_EQ(status.states_received, 0u);
+  EXPECT_EQ(status.states_refused, 0u);
+  EXPECT_FALSE(status.latest_state.has_value());
+  EXPECT_EQ(ignored_datagrams_text(status), "ignored 12 datagrams, the last from " +
+                                                to_string(stranger.local_endpoint()) +
+                                                " (not the robot)");
+
+  HighState real;
+  real.position = {1.0f, 2.0f, 0.0f};
+  ASSERT_FALSE(robot.send_to(encode_high_state(real, kLevelFlagHighLevel), sender_address));
+  while (sender.status().states_received == 0 && Clock::now() < deadline + milliseconds(1000))
+    std::this_thread::sleep_for(milliseconds(5));
+  status = sender.status();
+  EXPECT_EQ(status.states_received, 1u);
+  ASSERT_TRUE(status.latest_state.has_value());
+  EXPECT_EQ(status.latest_state->position[0], 1.0f);
+  EXPECT_EQ(status.latest_state->position[1], 2.0f);
+  EXPECT_EQ(status.datagrams_ignored, 12u);
 }
 
 }  // namespace

@@ -3,6 +3,7 @@
 
 #include <bit>
 #include <cstdint>
+#include <cstdio>
 #include <cstring>
 #include <string>
 #include <vector>
@@ -10,6 +11,7 @@
 #include <gtest/gtest.h>
 
 #include "go1/crc32.hpp"
+#include "go1/crc_cipher.hpp"
 #include "go1/high_cmd.hpp"
 #include "go1/high_state.hpp"
 
@@ -56,6 +58,32 @@ HighCommand sample_walk() {
   command.yaw_speed = 0.5f;
   command.body_height = -0.05f;
   return command;
+}
+
+// The library's encryptCRC (NOTES §1 "CRC": XOR 0xEDCAB9DE, then byte swaps (1,2), (0,3),
+// (0,2)) moves byte k of the XORed value to byte k - 1: a rotation right by 8 bits. Written
+// this way here, independently of crc_cipher.cpp's swaps.
+std::uint32_t encrypted_by_rotation(std::uint32_t crc) {
+  return std::rotr(crc ^ 0xEDCAB9DEu, 8);
+}
+
+std::string hex(std::uint32_t value) {
+  char text[16];
+  std::snprintf(text, sizeof text, "0x%08x", value);
+  return text;
+}
+
+TEST(Go1Crc, EncryptionIsTheLibrarysRotationAndDecryptionUndoesIt) {
+  std::uint32_t seed = 777;
+  for (int i = 0; i < 1000; ++i) {
+    seed = seed * 1103515245u + 12345u;
+    const std::uint32_t crc = seed ^ (seed << 13);
+    EXPECT_EQ(encrypt_crc(crc), encrypted_by_rotation(crc));
+    EXPECT_EQ(decrypt_crc(encrypt_crc(crc)), crc);
+    EXPECT_EQ(encrypt_crc(decrypt_crc(crc)), crc);
+  }
+  EXPECT_EQ(decrypt_crc(0x00000000u), 0xEDCAB9DEu);
+  EXPECT_EQ(stored_crc(0x12345678u, CrcForm::kPlain), 0x12345678u);
 }
 
 TEST(Go1Crc, MpegCheckValueOfTheReferenceImplementation) {
@@ -171,7 +199,7 @@ TEST(Go1HighState, FieldsSitAtTheDocumentedOffsetsAndRoundTrip) {
   EXPECT_EQ(bytes[838], 87);  // bms.SOC
   std::vector<std::uint8_t> all(bytes.begin(), bytes.end());
   EXPECT_EQ(bytes[1083] | bytes[1084] << 8 | bytes[1085] << 16 | std::uint32_t{bytes[1086]} << 24,
-            crc_by_mpeg2(all, 270));
+            encrypted_by_rotation(crc_by_mpeg2(all, 270)));
 
   const auto decoded = decode_high_state(bytes, 0xEE);
   ASSERT_TRUE(decoded.ok()) << decoded.refused().detail;
@@ -185,6 +213,56 @@ TEST(Go1HighState, FlippedByteIsRefusedUnlessTheCrcCheckIsOff) {
   ASSERT_FALSE(decoded.ok());
   EXPECT_EQ(decoded.refused().reason, PacketRefusal::kBadCrc);
   EXPECT_TRUE(decode_high_state(bytes, 0xEE, /*check_crc=*/false).ok());
+}
+
+// The robot's form (encrypted) and the developer-mode form (plain) are both read; a CRC in
+// neither form is refused with both values the decoder tried.
+TEST(Go1HighState, TheEncryptedAndThePlainCrcAreReadAndTheRefusalNamesBoth) {
+  HighState state;
+  state.position = {0.5f, 0.25f, 0.0f};
+  const HighStateBytes robot = encode_high_state(state, 0xEE);
+  const HighStateBytes developer = encode_high_state(state, 0xEE, CrcForm::kPlain);
+  EXPECT_NE(robot, developer);
+  for (const HighStateBytes& bytes : {robot, developer}) {
+    const auto decoded = decode_high_state(bytes, 0xEE);
+    ASSERT_TRUE(decoded.ok()) << decoded.refused().detail;
+    EXPECT_EQ(decoded.packet(), state);
+  }
+  HighStateBytes neither = robot;
+  neither[1083] ^= 0x01;
+  const auto refused = decode_high_state(neither, 0xEE);
+  ASSERT_FALSE(refused.ok());
+  EXPECT_EQ(refused.refused().reason, PacketRefusal::kBadCrc);
+  const std::vector<std::uint8_t> all(robot.begin(), robot.end());
+  const std::uint32_t crc = crc_by_mpeg2(all, 270);
+  EXPECT_NE(refused.refused().detail.find("encrypted " + hex(encrypted_by_rotation(crc))),
+            std::string::npos)
+      << refused.refused().detail;
+  EXPECT_NE(refused.refused().detail.find("plain " + hex(crc)), std::string::npos)
+      << refused.refused().detail;
+}
+
+// As Unitree's library reads them: a high-level (0xEE) HighState with the encrypted CRC, any
+// other level flag with the plain one.
+TEST(Go1HighState, TheCrcFormFollowsTheLevelFlagAsTheLibraryReadsIt) {
+  EXPECT_EQ(robot_crc_form(0xEE), CrcForm::kEncrypted);
+  EXPECT_EQ(robot_crc_form(0x00), CrcForm::kPlain);
+  EXPECT_EQ(encode_high_state(HighState{}, 0x00),
+            encode_high_state(HighState{}, 0x00, CrcForm::kPlain));
+  EXPECT_TRUE(decode_high_state(encode_high_state(HighState{}, 0x00), 0x00).ok());
+}
+
+// A HighCmd carries the plain CRC (the library's SetSend(HighCmd&)): the encrypted form is
+// refused there.
+TEST(Go1HighCmd, OnlyThePlainCrcIsRead) {
+  HighCmdBytes bytes = encode_high_cmd(sample_walk(), 0xEE);
+  std::uint32_t stored = 0;
+  std::memcpy(&stored, &bytes[125], 4);
+  const std::uint32_t encrypted = encrypt_crc(stored);
+  std::memcpy(&bytes[125], &encrypted, 4);
+  const auto decoded = decode_high_cmd(bytes, 0xEE);
+  ASSERT_FALSE(decoded.ok());
+  EXPECT_EQ(decoded.refused().reason, PacketRefusal::kBadCrc);
 }
 
 }  // namespace

@@ -42,14 +42,19 @@ TEST(SettingsCatalog, MatchingActionsGiveATableInCatalogOrder) {
                 {0.0f, 0.0f, 0.0f}, {0.0f, 0.0f, 0.5f}, {0.2f, 0.0f, 0.0f}}));
 }
 
-TEST(SettingsCatalog, RobustFilterNeedsARobustSection) {
-  const TinyCatalog catalog;
-  Go1Settings settings = default_settings();
-  settings.loop.actions = {{"stop", {}}, {"left", {}}, {"hop", {}}};
-  settings.filter.mode = rt::FilterMode::kRobust;
-  EXPECT_EQ(validate_against_catalog(settings, catalog.view),
-            "filter.mode: robust needs a catalog with a robust section, and \"tiny\" has none (a "
-            "continuous catalog never has one); use paper");
+TEST(SettingsCatalog, AProfilesFilterModeMustFitTheCatalog) {
+  const TinyCatalog catalog;  // discrete, without a robust section
+  ControllerProfile profile = find_controller_profile("guard");
+  EXPECT_EQ(validate_profile_against_catalog(profile, catalog.view), "");
+  profile.filter.mode = rt::FilterMode::kJoint;
+  EXPECT_EQ(validate_profile_against_catalog(profile, catalog.view),
+            "controller guard (hw/config/controllers/guard.yaml): filter.mode joint needs the "
+            "catalog's noise model, and \"tiny\" has none (the spec's observation block); use a "
+            "profile whose filter.mode is paper, such as guard");
+  profile.filter.mode = rt::FilterMode::kNoiseAware;
+  EXPECT_EQ(validate_profile_against_catalog(profile, catalog.view),
+            "controller guard (hw/config/controllers/guard.yaml): filter.mode noise_aware runs on "
+            "continuous catalogs, and \"tiny\" is discrete: use joint");
 }
 
 }  // namespace

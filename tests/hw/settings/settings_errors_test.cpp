@@ -90,9 +90,13 @@ TEST(SettingsErrors, WrongTypeNamesKeyLineAndValue) {
                "t.yaml:2:3: error: robot.port: expected an integer in 1..65535, got nothing");
   EXPECT_ERROR("robot:\n  address: robot.local\n",
                "robot.address: expected a dotted-quad IPv4 address");
-  EXPECT_ERROR("filter:\n  mode: robutst\n",
-               "t.yaml:2:9: error: filter.mode: expected one of paper, robust, got \"robutst\"; "
-               "did you mean \"robust\"?");
+  EXPECT_ERROR("loop:\n  missing_human: hold_lats\n",
+               "t.yaml:2:18: error: loop.missing_human: expected one of hold_last, outside, got "
+               "\"hold_lats\"; did you mean \"hold_last\"?");
+  EXPECT_ERROR("loop:\n  controller: ourz\n",
+               "t.yaml:2:15: error: loop.controller: expected a controller profile (oracle, paper, "
+               "guard, no-attention, ours) or a path to a .yaml profile, got \"ourz\"; did you "
+               "mean \"ours\"?");
   EXPECT_ERROR("source: camra\n",
                "source: expected synthetic, camera, or recorded:DIR, got "
                "\"camra\"; did you mean \"camera\"?");
@@ -112,8 +116,6 @@ TEST(SettingsErrors, OutOfRangeNamesTheRange) {
   EXPECT_ERROR("limits:\n  max_backward: -0.1\n", "limits.max_backward: expected a number in");
   EXPECT_ERROR("limits:\n  max_yaw_acceleration: .inf\n",
                "limits.max_yaw_acceleration: expected a number > 0.0");
-  EXPECT_ERROR("filter:\n  detection_epsilon: 1\n",
-               "filter.detection_epsilon: expected a number in [0.0, 1.0), got \"1\"");
   EXPECT_ERROR("perception:\n  treat_tag_id: 587\n",
                "perception.treat_tag_id: expected any, or an integer in 0..586");
 }

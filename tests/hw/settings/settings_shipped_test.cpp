@@ -68,11 +68,7 @@ Go1Settings unusual_settings() {
   s.perception.segmentation.red.bands = {{cv::Scalar(1, 2, 3), cv::Scalar(4, 5, 6)}};
   s.perception.treat_tag_id = 586;
   s.perception.reach = {0.25, 1.0, -0.5, 0.125};
-  s.filter.mode = rt::FilterMode::kRobust;
-  s.filter.tie_rule = rt::TieRule::kRandom;
-  s.filter.seed = std::numeric_limits<std::uint64_t>::max();
-  s.filter.detection_epsilon = 0.05;
-  s.filter.zero_likelihood_guard = true;
+  s.loop.controller = "profiles/my controller.yaml";
   s.loop.rate_hz = 10.0;
   s.loop.catalog = "catalogs/go1 treat: v2.bin";
   s.loop.catalog_spec = "any";
@@ -91,7 +87,7 @@ TEST(SettingsRoundTrip, PrintedSettingsReadBackIdentically) {
   // Spot checks of the fields themselves, not only of their printed form.
   EXPECT_EQ(back.link.limits.max_yaw_rate, 1.0f / 3.0f);
   EXPECT_EQ(back.link.rate_hz, 1000.0 / 3.0);
-  EXPECT_EQ(back.filter.seed, std::numeric_limits<std::uint64_t>::max());
+  EXPECT_EQ(back.loop.controller, "profiles/my controller.yaml");
   EXPECT_FALSE(back.link.state_level_flag.has_value());
   EXPECT_EQ(back.source.directory, "/data/run #3");
   EXPECT_EQ(back.camera.depth_device, "yes");
@@ -157,9 +153,8 @@ TEST(SettingsPartial, ScalarSpellings) {
       "  fps: \"15\"\n"
       "perception:\n"
       "  treat_tag_id: 7\n"
-      "filter:\n"
-      "  tie_tolerance: +1.5e-6\n"
       "loop:\n"
+      "  controller: guard\n"
       "  catalog: /opt/oasis/go1_treat.bin\n"
       "  catalog_spec: /opt/oasis/specs/go1_treat.oasis\n"
       "source: recorded:/data/run1\n",
@@ -169,7 +164,7 @@ TEST(SettingsPartial, ScalarSpellings) {
   EXPECT_FALSE(s.link.check_state_crc);
   EXPECT_EQ(s.camera.fps, 15);
   EXPECT_EQ(s.perception.treat_tag_id, 7);
-  EXPECT_EQ(s.filter.tie_tolerance, 1.5e-6);
+  EXPECT_EQ(s.loop.controller, "guard");
   EXPECT_EQ(s.loop.catalog, "/opt/oasis/go1_treat.bin");
   EXPECT_EQ(s.loop.catalog_spec, "/opt/oasis/specs/go1_treat.oasis");
   EXPECT_EQ(s.source, (FrameSourceSetting{FrameSourceSetting::Kind::kRecorded, "/data/run1"}));

@@ -12,8 +12,9 @@
 // tolerance, else 0, where R^i(s) = block_reward[block_of[s]] of abstraction i.
 //
 // Options beyond the paper (all off by default, see FilterOptions): a zero-likelihood guard,
-// a soft detection model, and a robust joint filter over (abstraction, true state). And one
-// call beyond it: weigh_context(), a second measurement of the step from a sensor that sees
+// a soft detection model, and two filters that know the sensor's noise: the joint filter over
+// (abstraction, true state) on discrete catalogs, and the noise-aware filter on continuous ones.
+// And one call beyond it: weigh_context(), a second measurement of the step from a sensor that sees
 // the context itself now and then (the Go1's camera seeing the treat in someone's hand).
 //
 // No heap allocation after construction: the filter works in a caller-provided buffer of
@@ -22,7 +23,7 @@
 // filter. The filter is not thread-safe; use one per thread.
 //
 // Cost of one step(): paper mode O(N^2) for N abstractions (the dense switching product) plus
-// O(N) for the measurement; robust mode O(N^2 * S + N * (S + E_a)) where S is
+// O(N) for the measurement; joint mode O(N^2 * S + N * (S + E_a)) where S is
 // num_states and E_a the number of full-state edges of the action taken, i.e. one sparse
 // matrix-vector product per abstraction plus the dense switching product per state.
 #pragma once
@@ -37,26 +38,18 @@
 #include "oasis/rt/catalog_view.hpp"
 #include "oasis/rt/grid_locator.hpp"
 #include "oasis/rt/reward_mass.hpp"
+#include "oasis/rt/split_mix64.hpp"
+#include "oasis/rt/tie_break.hpp"
 
 namespace oasis::rt {
-
-/// How the ML selection breaks ties. Two beliefs are tied when they differ by at most
-/// FilterOptions::tie_tolerance (absolute).
-enum class TieRule : std::uint32_t {
-  /// Keep the current ML abstraction if it is among the tied; otherwise the lowest index.
-  /// At construction there is no current abstraction, so the lowest tied index is taken.
-  kKeep = 0,
-  /// Pick uniformly among the tied with the filter's own PRNG (SplitMix64, seeded by
-  /// FilterOptions::seed): the same seed gives the same choices on every platform. One PRNG
-  /// draw (occasionally more, by rejection) per selection with two or more tied.
-  kRandom = 1,
-};
 
 /// Which filter runs.
 enum class FilterMode : std::uint32_t {
   /// Algorithm 1 of the paper: a belief over abstractions, the observed state taken as true.
+  /// Any catalog.
   kPaper = 0,
-  /// Joint belief over (abstraction i, true state s); needs the catalog's robust section.
+  /// The joint filter, discrete catalogs only: a belief over (abstraction i, true state s) that
+  /// uses the catalog's observation model and full-state transitions (has_robust_section()).
   ///  predict:  b'(i, s') = sum_j p(i | j) sum_s P^i(s' | s, a_{t-1}) b(j, s)
   ///            (the context at time t governs the move s_{t-1} -> s_t; an (s, a) pair with
   ///            no successors in P^i loses its mass: the action could not have been taken
@@ -69,18 +62,26 @@ enum class FilterMode : std::uint32_t {
   ///  abstract state for the policy: z = block_of^i(s*) with s* = argmax_s b(i, s) for the ML
   ///  abstraction i (ties: lowest state index).
   /// The first observation (start()) sets b(i, s) ~ prior(i) * p(o_0 | s).
-  ///
-  /// On a continuous catalog it needs the catalog's position noise (PositionNoise) and runs
-  /// Algorithm 1 with the noise-aware likelihood
+  kJoint = 1,
+  /// The noise-aware filter, continuous catalogs only: needs the catalog's position noise
+  /// (PositionNoise) and runs Algorithm 1 with the noise-aware likelihood
   ///   p(r_t | phi^i, s_obs) = P(true state in a cell of phi^i whose reward matches r_t | s_obs)
   /// under the Gaussian sigma(d) of each variable (reward_mass.hpp: exact on grids, within a
   /// reported error on polytope cells), softened by detection_epsilon like the paper's model.
   /// A reading with a missed object (a non-finite relevant coordinate), or no reward observed
   /// (a non-finite reward: the robot could not see whether it was rewarded), skips the
   /// measurement update: the belief is the prediction alone (StepStatus::kMissingObservation).
-  /// The policy is evaluated at the reading's block, as in Algorithm 1.
-  kRobust = 1,
+  /// The policy is evaluated at the reading's block, as in Algorithm 1. It weighs each reading
+  /// on its own and trusts the declared sigma(d); docs/RESULTS.md measures it when the camera's
+  /// true noise differs.
+  kNoiseAware = 2,
 };
+
+/// The mode that models the sensor's noise on `catalog`: kJoint on a discrete catalog,
+/// kNoiseAware on a continuous one.
+inline FilterMode noise_model_mode(const CatalogView& catalog) noexcept {
+  return catalog.is_continuous() ? FilterMode::kNoiseAware : FilterMode::kJoint;
+}
 
 /// Options of AttentionFilter. The defaults give Algorithm 1 of the paper.
 struct FilterOptions {
@@ -106,11 +107,11 @@ struct FilterOptions {
   /// in [0, 1); with epsilon > 0 no likelihood is ever 0, so the guard below never fires.
   double detection_epsilon = 0.0;
 
-  /// Zero-likelihood guard. When every abstraction (every (abstraction, state) pair in robust
+  /// Zero-likelihood guard. When every abstraction (every (abstraction, state) pair in joint
   /// mode) has likelihood 0 the paper's normalisation divides 0 by 0: Algorithm 1 is
   /// undefined there. With the guard on, the filter keeps the predicted belief (the dynamics
   /// update alone). With it off (the default) the filter resets the belief to the prior (in
-  /// robust mode: prior(i) * p(o_t | s), normalised, or prior(i) / S if that is 0 too): the
+  /// joint mode: prior(i) * p(o_t | s), normalised, or prior(i) / S if that is 0 too): the
   /// observation contradicts every hypothesis, so it restarts from what it knew at t = 0.
   /// Either way step() reports StepStatus::kZeroLikelihood and the belief stays a
   /// distribution: the filter never produces a NaN.
@@ -128,7 +129,7 @@ enum class StepStatus : std::uint32_t {
   kBadState = 2,        ///< observed_state >= num_states: input rejected, filter unchanged
   kBadAction = 3,       ///< action_taken >= num_actions: input rejected, filter unchanged
   kNotReady = 4,        ///< the filter could not be constructed (see error()); nothing done
-  /// Continuous robust mode: the reading missed an object the abstractions attend to, so only
+  /// Noise-aware mode: the reading missed an object the abstractions attend to, so only
   /// the dynamics update ran (the belief is the prediction).
   kMissingObservation = 5,
 };
@@ -137,14 +138,15 @@ enum class StepStatus : std::uint32_t {
 enum class FilterError : std::uint32_t {
   kNone = 0,
   kWorkspaceTooSmall = 1,  ///< fewer doubles than workspace_size() asks for
-  kNoRobustSection = 2,    ///< kRobust requested on a catalog without an observation model
+  kNoRobustSection = 2,    ///< kJoint / kNoiseAware on a catalog without its noise model
   kBadOptions = 3,         ///< an option out of range (epsilon, tolerances)
   kEmptyCatalog = 4,       ///< num_abstractions, num_states or num_actions is 0
+  kWrongCatalogKind = 5,   ///< kJoint on a continuous catalog, or kNoiseAware on a discrete one
 };
 
 /// Storage for a filter whose sizes are bounded at compile time: holds enough doubles for
 /// MaxAbstractions abstractions of a discrete or continuous catalog (workspace_size()) and,
-/// when MaxStates > 0, robust mode over MaxStates states.
+/// when MaxStates > 0, joint mode over MaxStates states.
 template <std::size_t MaxAbstractions, std::size_t MaxStates = 0>
 struct FixedWorkspace {
   static constexpr std::size_t kDoubles = 3 * MaxAbstractions > 2 * MaxAbstractions*(1 + MaxStates)
@@ -159,15 +161,16 @@ struct FixedWorkspace {
 class AttentionFilter {
  public:
   /// Number of doubles the workspace must hold for `catalog` under `options`:
-  /// 2N in paper mode (3N on a continuous catalog), 2N + 2NS in robust mode (N abstractions,
-  /// S states), 4N + RewardMass::workspace_size() in robust mode on a continuous catalog.
+  /// 2N in paper mode (3N on a continuous catalog), 2N + 2NS in joint mode (N abstractions,
+  /// S states), 4N + RewardMass::workspace_size() in noise-aware mode.
   static std::size_t workspace_size(const CatalogView& catalog,
                                     const FilterOptions& options) noexcept {
     const std::size_t n = catalog.num_abstractions;
-    const bool robust = options.mode == FilterMode::kRobust;
     if (catalog.is_continuous())  // and the block of the state in each
-      return robust ? 4 * n + RewardMass::workspace_size(catalog) : 3 * n;
-    if (robust) return 2 * n + 2 * n * static_cast<std::size_t>(catalog.num_states);
+      return options.mode == FilterMode::kNoiseAware ? 4 * n + RewardMass::workspace_size(catalog)
+                                                     : 3 * n;
+    if (options.mode == FilterMode::kJoint)
+      return 2 * n + 2 * n * static_cast<std::size_t>(catalog.num_states);
     return 2 * n;
   }
 
@@ -188,7 +191,9 @@ class AttentionFilter {
                !(options.mass_limits.tolerance > 0.0 && options.mass_limits.tolerance < 1.0) ||
                options.mass_limits.max_boxes == 0) {
       error_ = FilterError::kBadOptions;
-    } else if (options.mode == FilterMode::kRobust && !catalog.has_noise_model()) {
+    } else if (options.mode != FilterMode::kPaper && options.mode != noise_model_mode(catalog)) {
+      error_ = FilterError::kWrongCatalogKind;
+    } else if (options.mode != FilterMode::kPaper && !catalog.has_noise_model()) {
       error_ = FilterError::kNoRobustSection;
     } else if (workspace == nullptr || workspace_doubles < workspace_size(catalog, options)) {
       error_ = FilterError::kWorkspaceTooSmall;
@@ -199,11 +204,11 @@ class AttentionFilter {
     scratch_ = workspace + n;
     if (catalog.is_continuous()) {
       located_ = workspace + 2 * n;
-      if (options.mode == FilterMode::kRobust) {
+      if (options.mode == FilterMode::kNoiseAware) {
         likelihood_ = workspace + 3 * n;
         mass_ = RewardMass(catalog, options.mass_limits, workspace + 4 * n);
       }
-    } else if (options.mode == FilterMode::kRobust) {
+    } else if (options.mode == FilterMode::kJoint) {
       joint_ = workspace + 2 * n;
       joint_scratch_ = joint_ + n * catalog.num_states;
     }
@@ -225,19 +230,19 @@ class AttentionFilter {
 
   /// Back to t = 0: belief = prior, ML = argmax prior (tie rule applies; with kKeep the lowest
   /// tied index), PRNG reseeded, no observed state (action() is kNoAction until start() or
-  /// step()). O(N) (paper) or O(N S) (robust).
+  /// step()). O(N) (paper) or O(N S) (joint).
   void reset() noexcept {
     if (!ok()) return;
-    rng_state_ = options_.seed;
+    random_.reseed(options_.seed);
     reward_evidence_ = 1.0;
     mass_error_ = 0.0;
     has_state_ = false;
     state_ = 0;
-    ml_ = kNone_;
+    ml_ = kNoChoice;
     const std::uint32_t n = catalog_->num_abstractions;
     for (std::uint32_t i = 0; i < n; ++i)
       belief_[i] = catalog_->prior[i];
-    if (joint_robust()) {
+    if (joint_mode()) {
       const std::uint32_t states = catalog_->num_states;
       for (std::uint32_t i = 0; i < n; ++i)
         for (std::uint32_t s = 0; s < states; ++s)
@@ -249,14 +254,14 @@ class AttentionFilter {
   /// Records the initial observed state s_0 (Algorithm 1, line 1) so that action() can answer
   /// a_1 = pi^i(z^i(s_0)). Paper mode: the belief is unchanged (Algorithm 1 does not update on
   /// s_0). Robust mode: b(i, s) ~ prior(i) * p(o_0 | s). Returns kBadState (and changes
-  /// nothing) if observed_state >= num_states. O(1) paper, O(N S) robust.
+  /// nothing) if observed_state >= num_states. O(1) paper, O(N S) joint.
   StepStatus start(std::uint32_t observed_state) noexcept {
     if (!ok()) return StepStatus::kNotReady;
     if (observed_state >= catalog_->num_states) return StepStatus::kBadState;
     reset();
     state_ = observed_state;
     has_state_ = true;
-    if (robust()) {
+    if (joint_mode()) {
       reset_joint_to_prior(observed_state);
       marginalise();
       select_ml();
@@ -276,8 +281,9 @@ class AttentionFilter {
     if (!ok()) return StepStatus::kNotReady;
     if (observed_state >= catalog_->num_states) return StepStatus::kBadState;
     if (action_taken >= catalog_->num_actions) return StepStatus::kBadAction;
-    const StepStatus status = robust() ? robust_step(observed_state, observed_reward, action_taken)
-                                       : paper_step(observed_state, observed_reward);
+    const StepStatus status = joint_mode()
+                                  ? joint_step(observed_state, observed_reward, action_taken)
+                                  : paper_step(observed_state, observed_reward);
     state_ = observed_state;
     has_state_ = true;
     select_ml();
@@ -301,10 +307,10 @@ class AttentionFilter {
 
   /// Continuous catalogs: one iteration of Algorithm 1 with the observed state vector. The
   /// detection model compares the reward with block_reward of the state's block in each
-  /// abstraction (robust mode: the noise-aware likelihood, see FilterMode::kRobust). Inputs
-  /// are checked as by the discrete step(); a NaN coordinate puts the state outside (robust
-  /// mode: a missed observation). Cost O(N^2 + N sum_i log cells_i), plus in robust mode one
-  /// RewardMass::match_mass() per abstraction. No allocation.
+  /// abstraction (kNoiseAware: the noise-aware likelihood, see FilterMode::kNoiseAware). Inputs
+  /// are checked as by the discrete step(); a NaN coordinate puts the state outside
+  /// (kNoiseAware: a missed observation). Cost O(N^2 + N sum_i log cells_i), plus in noise-aware
+  /// mode one RewardMass::match_mass() per abstraction. No allocation.
   StepStatus step(const double* state, std::size_t size, double observed_reward,
                   std::uint32_t action_taken) noexcept {
     if (!ok()) return StepStatus::kNotReady;
@@ -312,23 +318,24 @@ class AttentionFilter {
       return StepStatus::kBadState;
     if (action_taken >= catalog_->num_actions) return StepStatus::kBadAction;
     locate(state, size);
-    const StepStatus status =
-        robust() ? noise_aware_update(state, observed_reward) : paper_update([&](std::uint32_t i) {
-          return detection_at(i, located_block(i), observed_reward);
-        });
+    const StepStatus status = noise_aware()
+                                  ? noise_aware_update(state, observed_reward)
+                                  : paper_update([&](std::uint32_t i) {
+                                      return detection_at(i, located_block(i), observed_reward);
+                                    });
     has_state_ = true;
     select_ml();
     return status;
   }
 
   /// A second measurement of the same time step, independent of the reward given the context:
-  /// b(i) ~ likelihood[i] * b(i) (robust mode on a discrete catalog: every b(i, s) of row i),
+  /// b(i) ~ likelihood[i] * b(i) (joint mode: every b(i, s) of row i),
   /// then the ML selection again. For a sensor that sees the context itself, now and then (the
   /// Go1's camera seeing the treat in someone's hand): call it after step() with p(what was
   /// seen | context i) per abstraction; call nothing when nothing was seen. `count` must be
   /// num_abstractions and every entry finite and >= 0 (else kBadState, belief unchanged). All
   /// zero, or zero wherever the belief is not, is kZeroLikelihood and the belief is kept.
-  /// O(N) (O(N S) joint robust). No allocation.
+  /// O(N) (O(N S) joint mode). No allocation.
   StepStatus weigh_context(const double* likelihood, std::size_t count) noexcept {
     if (!ok()) return StepStatus::kNotReady;
     const std::uint32_t n = catalog_->num_abstractions;
@@ -341,7 +348,7 @@ class AttentionFilter {
     if (!(total > 0.0) || !std::isfinite(total)) return StepStatus::kZeroLikelihood;
     for (std::uint32_t i = 0; i < n; ++i)
       belief_[i] = likelihood[i] * belief_[i] / total;
-    if (joint_robust()) {
+    if (joint_mode()) {
       const std::uint32_t states = catalog_->num_states;
       for (std::uint32_t i = 0; i < n; ++i)
         for (std::uint32_t s = 0; s < states; ++s)
@@ -352,9 +359,9 @@ class AttentionFilter {
   }
 
   /// pi^i(z^i(s)) for the ML abstraction i and the current state s (the last observed state in
-  /// paper mode; the most likely true state under i in robust mode). kNoAction before the
+  /// paper mode; the most likely true state under i in joint mode). kNoAction before the
   /// first start()/step(), if construction failed, or if the block has no enabled action.
-  /// O(1) in paper mode, O(S) in robust mode (finds the most likely state).
+  /// O(1) in paper mode, O(S) in joint mode (finds the most likely state).
   std::uint32_t action() const noexcept {
     if (!ok() || !has_state_) return kNoAction;
     return catalog_->abstractions[ml_].policy[abstract_state()];
@@ -371,14 +378,14 @@ class AttentionFilter {
   }
 
   /// The state the policy is evaluated at: the last observed state (paper mode) or the most
-  /// likely true state under the ML abstraction (robust mode).
+  /// likely true state under the ML abstraction (joint mode).
   std::uint32_t policy_state() const noexcept { return policy_state_under(ml_); }
 
   /// The same under abstraction i (< num_abstractions): the last observed state (paper mode)
-  /// or argmax_s b(i, s) (robust mode; ties: lowest state). O(1) paper, O(S) robust.
+  /// or argmax_s b(i, s) (joint mode; ties: lowest state). O(1) paper, O(S) joint.
   std::uint32_t policy_state_under(std::uint32_t i) const noexcept {
     if (!ok() || !has_state_) return 0;
-    if (!joint_robust()) return state_;
+    if (!joint_mode()) return state_;
     const std::uint32_t states = catalog_->num_states;
     const double* row = joint_ + static_cast<std::size_t>(i) * states;
     std::uint32_t best = 0;
@@ -388,17 +395,17 @@ class AttentionFilter {
   }
 
   /// How well this filter's model predicted the last step's reward: p(r_t | observations up
-  /// to t, rewards before t) (paper mode: sum_i p(r_t | phi^i, s_t) b'(i); robust mode: the same
+  /// to t, rewards before t) (paper mode: sum_i p(r_t | phi^i, s_t) b'(i); joint mode: the same
   /// sum over (i, s) after weighting by p(o_t | s)). 0 when no hypothesis explained the reward
   /// (StepStatus::kZeroLikelihood); 1 after reset() and start(). Comparable between filters
   /// over the same observations: the hedged filter (hedged_filter.hpp) weighs models by it.
   double reward_evidence() const noexcept { return ok() ? reward_evidence_ : 0.0; }
 
-  /// Continuous robust mode: the largest error bound of the last step's likelihoods
+  /// Noise-aware mode: the largest error bound of the last step's likelihoods
   /// (MassResult::error); 0 otherwise.
   double likelihood_error() const noexcept { return ok() ? mass_error_ : 0.0; }
 
-  /// p(phi = i | history): the belief (the marginal in robust mode). i < num_abstractions.
+  /// p(phi = i | history): the belief (the marginal in joint mode). i < num_abstractions.
   double belief(std::uint32_t i) const noexcept { return ok() ? belief_[i] : 0.0; }
 
   /// The whole belief, num_abstractions entries (null if construction failed).
@@ -406,7 +413,7 @@ class AttentionFilter {
 
   /// Robust mode only: b(i, s), the joint belief (0 in paper mode).
   double joint_belief(std::uint32_t i, std::uint32_t s) const noexcept {
-    if (!ok() || !joint_robust()) return 0.0;
+    if (!ok() || !joint_mode()) return 0.0;
     return joint_[static_cast<std::size_t>(i) * catalog_->num_states + s];
   }
 
@@ -414,11 +421,10 @@ class AttentionFilter {
   const CatalogView& catalog() const noexcept { return *catalog_; }
 
  private:
-  static constexpr std::uint32_t kNone_ = std::numeric_limits<std::uint32_t>::max();
-
-  bool robust() const noexcept { return options_.mode == FilterMode::kRobust; }
-  /// The joint filter over (abstraction, state): robust mode on a discrete catalog.
-  bool joint_robust() const noexcept { return robust() && !catalog_->is_continuous(); }
+  /// The joint filter over (abstraction, state) on a discrete catalog.
+  bool joint_mode() const noexcept { return options_.mode == FilterMode::kJoint; }
+  /// The noise-aware filter on a continuous catalog.
+  bool noise_aware() const noexcept { return options_.mode == FilterMode::kNoiseAware; }
 
   /// p(r | phi^i, s) under the deterministic or soft detection model.
   double detection(std::uint32_t i, std::uint32_t s, double reward) const noexcept {
@@ -433,7 +439,7 @@ class AttentionFilter {
     return match ? 1.0 - options_.detection_epsilon : options_.detection_epsilon;
   }
 
-  /// p(o | s) under the catalog's observation model (robust mode only).
+  /// p(o | s) under the catalog's observation model (joint mode only).
   double observation(std::uint32_t observed, std::uint32_t s) const noexcept {
     const ObservationModel& obs = catalog_->observation;
     const std::uint32_t states = catalog_->num_states;
@@ -535,7 +541,7 @@ class AttentionFilter {
     return StepStatus::kZeroLikelihood;
   }
 
-  StepStatus robust_step(std::uint32_t observed, double reward, std::uint32_t action) noexcept {
+  StepStatus joint_step(std::uint32_t observed, double reward, std::uint32_t action) noexcept {
     const std::uint32_t n = catalog_->num_abstractions;
     const std::uint32_t states = catalog_->num_states;
     const std::uint32_t actions = catalog_->num_actions;
@@ -628,68 +634,26 @@ class AttentionFilter {
     }
   }
 
-  /// SplitMix64 (Steele, Lea, Flood 2014): a tiny PRNG with identical output everywhere.
-  std::uint64_t next_random() noexcept {
-    std::uint64_t z = (rng_state_ += 0x9E3779B97F4A7C15ull);
-    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-    return z ^ (z >> 31);
-  }
-
-  /// Uniform in [0, bound) by rejection (no modulo bias). bound >= 1.
-  std::uint64_t uniform_below(std::uint64_t bound) noexcept {
-    const std::uint64_t threshold = (0 - bound) % bound;  // 2^64 mod bound
-    for (;;) {
-      const std::uint64_t r = next_random();
-      if (r >= threshold) return r % bound;
-    }
-  }
-
-  /// i = argmax belief, ties per options_.tie_rule. O(N).
+  /// i = argmax belief, ties per options_.tie_rule (tie_break.hpp). O(N).
   void select_ml() noexcept {
-    const std::uint32_t n = catalog_->num_abstractions;
-    double best = belief_[0];
-    for (std::uint32_t i = 1; i < n; ++i)
-      if (belief_[i] > best) best = belief_[i];
-    const double floor = best - options_.tie_tolerance;
-    std::uint32_t tied = 0;
-    std::uint32_t lowest = kNone_;
-    bool current_tied = false;
-    for (std::uint32_t i = 0; i < n; ++i) {
-      if (belief_[i] < floor) continue;
-      if (lowest == kNone_) lowest = i;
-      if (i == ml_) current_tied = true;
-      ++tied;
-    }
-    if (tied <= 1 || options_.tie_rule == TieRule::kKeep) {
-      ml_ = (tied > 1 && current_tied) ? ml_ : lowest;
-      return;
-    }
-    std::uint64_t pick = uniform_below(tied);
-    for (std::uint32_t i = 0; i < n; ++i) {
-      if (belief_[i] < floor) continue;
-      if (pick == 0) {
-        ml_ = i;
-        return;
-      }
-      --pick;
-    }
+    ml_ = select_with_ties(belief_, catalog_->num_abstractions, options_.tie_tolerance,
+                           options_.tie_rule, ml_, random_);
   }
 
   const CatalogView* catalog_;
   FilterOptions options_;
   FilterError error_ = FilterError::kNone;
-  double* belief_ = nullptr;         // [N] current belief (marginal in robust mode)
+  double* belief_ = nullptr;         // [N] current belief (marginal in joint mode)
   double* scratch_ = nullptr;        // [N] predicted belief (paper mode)
-  double* joint_ = nullptr;          // [N*S] robust joint belief, row i = abstraction
-  double* joint_scratch_ = nullptr;  // [N*S] robust scratch
+  double* joint_ = nullptr;          // [N*S] joint belief, row i = abstraction
+  double* joint_scratch_ = nullptr;  // [N*S] joint mode scratch
   double* located_ = nullptr;        // [N] continuous catalogs: the state's block per abstraction
-  double* likelihood_ = nullptr;     // [N] continuous robust mode: p(r_t | phi^i, s_obs)
-  RewardMass mass_;                  // continuous robust mode: the likelihoods' integrator
-  std::uint64_t rng_state_ = 0;
+  double* likelihood_ = nullptr;     // [N] noise-aware mode: p(r_t | phi^i, s_obs)
+  RewardMass mass_;                  // noise-aware mode: the likelihoods' integrator
+  SplitMix64 random_;                // the random tie rule's draws
   double reward_evidence_ = 1.0;
   double mass_error_ = 0.0;
-  std::uint32_t ml_ = kNone_;
+  std::uint32_t ml_ = kNoChoice;
   std::uint32_t state_ = 0;
   bool has_state_ = false;
 };

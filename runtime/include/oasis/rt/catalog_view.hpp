@@ -267,8 +267,9 @@ struct CatalogView {
   /// True for a catalog over continuous states.
   bool is_continuous() const noexcept { return state_dimension > 0; }
 
-  /// True if the noise-aware filter (FilterMode::kRobust) can run on this catalog: a discrete
-  /// catalog with a robust section, or a continuous one with a position-noise model.
+  /// True if a filter that models the noise can run on this catalog (FilterMode::kJoint on a
+  /// discrete catalog with a robust section, FilterMode::kNoiseAware on a continuous one with a
+  /// position-noise model).
   bool has_noise_model() const noexcept {
     return is_continuous() ? observation.position.num_objects > 0 : has_robust_section();
   }

@@ -1,6 +1,6 @@
 // oasis/rt/hedged_filter.hpp: a filter that is never much worse than Algorithm 1.
 //
-// The robust joint filter (FilterMode::kRobust) is right when the catalog's observation model
+// The joint filter (FilterMode::kJoint) is right when the catalog's observation model
 // is, and can be far worse than the paper's Algorithm 1 when it is not (Table I: 0.45 against
 // 0.95 when the reward follows the observed state but the model says the true one). A robot
 // cannot know which kind of noise it has, so HedgedFilter runs both and weighs them by how well
@@ -9,8 +9,8 @@
 //   w_m  <-  w_m * e_m(t) / sum_k w_k * e_k(t)         e_m(t) = p(r_t | o_1..t, r_1..t-1, m)
 //   w_m  <-  (1 - share) * w_m + share / 2             (fixed share: a model written off can
 //                                                       come back when the noise changes)
-//   B(i) =   w_paper * b_paper(i) + w_robust * b_robust(i),   ML over B (ties: the heavier
-//                                                       model's own choice, see mix())
+//   B(i) =   w_paper * b_paper(i) + w_robust * b_robust(i),   ML over B (ties: the paper
+//                                                       options' tie rule, tie_break.hpp)
 //
 // Both models condition on the same observed states, so their reward evidence is comparable
 // (AttentionFilter::reward_evidence()). The action is the ML abstraction's policy at the state
@@ -26,13 +26,15 @@
 
 #include "oasis/rt/attention_filter.hpp"
 #include "oasis/rt/catalog_view.hpp"
+#include "oasis/rt/split_mix64.hpp"
+#include "oasis/rt/tie_break.hpp"
 
 namespace oasis::rt {
 
 struct HedgeOptions {
   /// Algorithm 1 as the paper states it (the defaults), or with the usual options.
   FilterOptions paper;
-  /// The model-based filter; its mode is forced to FilterMode::kRobust.
+  /// The model-based filter; its mode is forced to FilterMode::kJoint.
   FilterOptions robust;
   /// Prior weight of the robust model, in (0, 1).
   double robust_prior = 0.5;
@@ -88,6 +90,8 @@ class HedgedFilter {
     paper_.reset();
     robust_.reset();
     robust_weight_ = options_.robust_prior;
+    random_.reseed(options_.paper.seed);
+    ml_ = kNoChoice;
     mix();
   }
 
@@ -98,6 +102,8 @@ class HedgedFilter {
     if (status != StepStatus::kOk) return status;
     robust_.start(observed_state);
     robust_weight_ = options_.robust_prior;
+    random_.reseed(options_.paper.seed);
+    ml_ = kNoChoice;
     mix();
     return StepStatus::kOk;
   }
@@ -141,7 +147,7 @@ class HedgedFilter {
  private:
   static FilterOptions robust_options(const HedgeOptions& options) noexcept {
     FilterOptions robust = options.robust;
-    robust.mode = FilterMode::kRobust;
+    robust.mode = FilterMode::kJoint;
     return robust;
   }
   // The two filters' shares of the buffer; 0 when it is too small (each then fails on its own).
@@ -157,27 +163,14 @@ class HedgedFilter {
     return before > 0 && available - before >= wanted ? wanted : 0;
   }
 
-  // The mixed belief and its ML abstraction. Ties (within the paper options' tie_tolerance)
-  // go to the heavier model's own ML abstraction if it is among them - so the paper's tie
-  // rule holds while the paper model leads - else to the lowest tied index.
+  // The mixed belief and its ML abstraction, ties broken by the paper options' tie rule and
+  // tolerance through the runtime's one routine (kKeep keeps this filter's own last choice).
   void mix() noexcept {
     const std::uint32_t n = catalog_->num_abstractions;
-    double best = 0.0;
-    for (std::uint32_t i = 0; i < n; ++i) {
-      mixed_[i] = (1.0 - robust_weight_) * paper_.belief(i) + robust_weight_ * robust_.belief(i);
-      if (mixed_[i] > best) best = mixed_[i];
-    }
-    const double floor = best - options_.paper.tie_tolerance;
-    const std::uint32_t lead = (robust_weight_ > 0.5 ? robust_ : paper_).ml_abstraction();
-    if (mixed_[lead] >= floor) {
-      ml_ = lead;
-      return;
-    }
     for (std::uint32_t i = 0; i < n; ++i)
-      if (mixed_[i] >= floor) {
-        ml_ = i;
-        return;
-      }
+      mixed_[i] = (1.0 - robust_weight_) * paper_.belief(i) + robust_weight_ * robust_.belief(i);
+    ml_ = select_with_ties(mixed_, n, options_.paper.tie_tolerance, options_.paper.tie_rule, ml_,
+                           random_);
   }
 
   const CatalogView* catalog_;
@@ -187,7 +180,8 @@ class HedgedFilter {
   FilterError error_ = FilterError::kNone;
   double* mixed_ = nullptr;
   double robust_weight_ = 0.5;
-  std::uint32_t ml_ = 0;
+  SplitMix64 random_;  // the random tie rule's draws, seeded by the paper options' seed
+  std::uint32_t ml_ = kNoChoice;
 };
 
 }  // namespace oasis::rt
