@@ -4,6 +4,7 @@
 #include <fstream>
 #include <optional>
 #include <sstream>
+#include <stdexcept>
 
 #include "app/go1_link.hpp"
 #include "app/synthetic_world.hpp"
@@ -73,23 +74,38 @@ ControllerSettings controller_settings(const settings::Go1Settings& settings,
   return result;
 }
 
+namespace {
+
+// The shipped profiles a robot can run: "paper, guard, ours".
+std::string robot_profile_names() {
+  std::string names;
+  for (const settings::ControllerProfile& profile : settings::shipped_controller_profiles())
+    if (profile.kind == settings::ControllerKind::kAttention &&
+        profile.catalog == settings::ProfileCatalog::kSession)
+      names += (names.empty() ? "" : ", ") + profile.name;
+  return names;
+}
+
+}  // namespace
+
 settings::ControllerProfile robot_profile(const std::string& name_or_path,
                                           const rt::CatalogView& catalog) {
   settings::ControllerProfile profile;
   try {
     profile = settings::find_controller_profile(name_or_path, "--controller");
-  } catch (const settings::SettingsError& e) {
+  } catch (const std::invalid_argument& e) {
     throw SetupError(e.what());
   }
   if (profile.kind == settings::ControllerKind::kOracle)
     throw SetupError("controller " + profile.name +
-                     " is told who holds the treat, which only oasis-go1 sim knows; pick "
-                     "another (" +
-                     settings::shipped_profile_names() + ")");
+                     " is told who holds the treat, which only oasis-go1 sim knows; a robot "
+                     "runs " +
+                     robot_profile_names());
   if (profile.catalog == settings::ProfileCatalog::kFullState)
     throw SetupError("controller " + profile.name +
-                     " is a simulation baseline on the no-attention catalog; run it with "
-                     "oasis-go1 sim, or give a profile with catalog: session");
+                     " is a simulation baseline on the no-attention catalog: run it with "
+                     "oasis-go1 sim; a robot runs " +
+                     robot_profile_names());
   if (const std::string problem = settings::validate_profile_against_catalog(profile, catalog);
       !problem.empty())
     throw SetupError(problem);

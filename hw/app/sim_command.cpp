@@ -7,6 +7,7 @@
 #include <iostream>
 #include <memory>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -105,7 +106,7 @@ std::vector<settings::ControllerProfile> requested_profiles(const SimRequest& re
   for (const std::string& name : request.controllers) {
     try {
       profiles.push_back(settings::find_controller_profile(name, "--controllers"));
-    } catch (const settings::SettingsError& e) {
+    } catch (const std::invalid_argument& e) {
       throw SetupError(e.what());
     }
   }

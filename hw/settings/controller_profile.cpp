@@ -4,6 +4,7 @@
 #include "settings/controller_profile.hpp"
 
 #include <sstream>
+#include <stdexcept>
 #include <string>
 
 #include "settings/profile_schema.hpp"
@@ -99,12 +100,10 @@ ControllerProfile find_controller_profile(std::string_view name_or_path, std::st
     return load_controller_profile(std::filesystem::path(name_or_path));
   for (const ControllerProfile& profile : shipped_controller_profiles())
     if (profile.name == name_or_path) return profile;
-  throw SettingsError(std::string(where),
-                      {{0, 0, "",
-                        "no controller profile \"" + std::string(name_or_path) +
-                            "\"; the shipped ones are " + shipped_profile_names() +
-                            " (hw/config/controllers/), or give a path to a .yaml profile",
-                        ""}});
+  throw std::invalid_argument(std::string(where) + ": no controller profile \"" +
+                              std::string(name_or_path) + "\"; the shipped ones are " +
+                              shipped_profile_names() +
+                              " (hw/config/controllers/), or give a path to a .yaml profile");
 }
 
 std::string profile_to_yaml(const ControllerProfile& profile) {

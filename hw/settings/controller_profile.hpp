@@ -78,8 +78,8 @@ bool is_profile_path(std::string_view text);
 std::string shipped_profile_names();
 
 // A shipped profile by name, or a profile file when `name_or_path` ends in .yaml or .yml.
-// Throws SettingsError when there is no such profile (naming the shipped ones, with `where`,
-// e.g. "--controller", as the message's place) or the file is not a valid profile.
+// Throws std::invalid_argument when there is no such shipped profile (naming the shipped ones,
+// after `where`, e.g. "--controller"), SettingsError when the file is not a valid profile.
 ControllerProfile find_controller_profile(std::string_view name_or_path,
                                           std::string_view where = "controller");
 

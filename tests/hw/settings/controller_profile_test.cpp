@@ -4,6 +4,7 @@
 #include "settings/controller_profile.hpp"
 
 #include <filesystem>
+#include <stdexcept>
 
 #include <gtest/gtest.h>
 
@@ -88,7 +89,7 @@ TEST(ControllerProfiles, AProfileFileHoldsOnlyWhatDiffersAndErrorsAreLocated) {
   }
   EXPECT_THROW(parse_controller_profile("kind: oracle\ncatalog: full_state\n", "x.yaml", "x"),
                SettingsError);
-  EXPECT_THROW(find_controller_profile("psychic"), SettingsError);
+  EXPECT_THROW(find_controller_profile("psychic"), std::invalid_argument);
 }
 
 // The settings no longer hold the filter: a file of the old layout says where it went.
