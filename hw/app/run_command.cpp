@@ -13,6 +13,7 @@
 #include "app/profile_controller.hpp"
 #include "app/session.hpp"
 #include "go1/endpoint.hpp"
+#include "go1/sender.hpp"
 #include "go1/stop_signal.hpp"
 #include "log/step_log_writer.hpp"
 #include "log/table2_metrics.hpp"
@@ -76,14 +77,13 @@ void print_step(const log::StepRecord& record) {
               record.action_name.c_str(), record.reward, record.holder);
 }
 
-// "received 1500 HighState, refused 0, ignored 12 datagrams from 192.168.12.40:5555 (not the
-// robot)": the last step's link counts, printed when the run ends.
+// "received 1500 HighState, refused 0, ignored 12 datagrams, the last from 192.168.12.40:5555
+// (not the robot)": the link's counts, printed when the run ends.
 std::string link_summary(const log::LinkRecord& counts) {
   std::string text = "received " + std::to_string(counts.states_received) + " HighState, refused " +
                      std::to_string(counts.states_refused);
   if (counts.datagrams_ignored > 0)
-    text += ", ignored " + std::to_string(counts.datagrams_ignored) + " datagrams, the last from " +
-            counts.last_ignored_from + " (not the robot)";
+    text += ", " + go1::ignored_datagrams_text(counts.datagrams_ignored, counts.last_ignored_from);
   return text;
 }
 
@@ -97,8 +97,7 @@ void print_score(const std::vector<log::StepRecord>& records) {
 int run_session(const RunRequest& request) {
   const settings::Go1Settings settings = effective_settings(request);
   const SessionCatalog catalog(settings.loop.catalog, settings.loop.catalog_spec);
-  const settings::ControllerProfile profile =
-      robot_profile(settings.loop.controller, catalog.view());
+  const settings::ControllerProfile profile = robot_profile(settings.loop.controller);
   const std::unique_ptr<LoopController> controller =
       make_controller(profile, {catalog.view(), controller_settings(settings, catalog.view()), {}});
 

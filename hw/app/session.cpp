@@ -88,8 +88,7 @@ std::string robot_profile_names() {
 
 }  // namespace
 
-settings::ControllerProfile robot_profile(const std::string& name_or_path,
-                                          const rt::CatalogView& catalog) {
+settings::ControllerProfile robot_profile(const std::string& name_or_path) {
   settings::ControllerProfile profile;
   try {
     profile = settings::find_controller_profile(name_or_path, "--controller");
@@ -106,9 +105,6 @@ settings::ControllerProfile robot_profile(const std::string& name_or_path,
                      " is a simulation baseline on the no-attention catalog: run it with "
                      "oasis-go1 sim; a robot runs " +
                      robot_profile_names());
-  if (const std::string problem = settings::validate_profile_against_catalog(profile, catalog);
-      !problem.empty())
-    throw SetupError(problem);
   return profile;
 }
 

@@ -57,9 +57,9 @@ ControllerSettings controller_settings(const settings::Go1Settings& settings,
 
 // The controller profile `run` and `replay` drive with: a shipped profile by name or a .yaml
 // path (loop.controller, or --controller). Throws SetupError when there is no such profile,
-// or it cannot drive a robot (the oracle, a no-attention baseline) or run on this catalog.
-settings::ControllerProfile robot_profile(const std::string& name_or_path,
-                                          const rt::CatalogView& catalog);
+// or it cannot drive a robot (the oracle, a no-attention baseline). Whether it fits the
+// catalog, make_controller() checks (profile_controller.hpp).
+settings::ControllerProfile robot_profile(const std::string& name_or_path);
 
 // The Go1 link after the robot answered, or a dry run. Throws SetupError when the robot does
 // not answer within `robot_timeout` (the sender meanwhile only ever commanded stand).

@@ -82,19 +82,20 @@ void write_outputs(const SimRequest& request, const std::string& name, const Sim
 
 log::Table2Summary run_controller(const SimRequest& request, const SimTrialSetup& setup,
                                   const rt::CatalogView& catalog,
-                                  const settings::ControllerProfile& kind) {
+                                  const settings::ControllerProfile& profile) {
   std::vector<log::TrialScore> scores;
   for (int trial = 0; trial < request.trials; ++trial) {
     const SimTrialResult result =
-        run_sim_trial(catalog, setup, kind, trial_seed(request.seed, trial));
-    write_outputs(request, trial_name(kind.name, trial), result, setup.scenario.hallway.width_m);
+        run_sim_trial(catalog, setup, profile, trial_seed(request.seed, trial));
+    write_outputs(request, trial_name(profile.name, trial), result, setup.scenario.hallway.width_m);
     log::ScoreOptions options;
     options.period_s = setup.period_s;
     scores.push_back(log::score_trial(result.records, options));
     if (!request.quiet && !request.json)
-      std::cerr << "oasis-go1 sim: " << kind.name << " trial " << trial + 1 << "/" << request.trials
-                << ": accuracy " << (scores.back().accuracy ? *scores.back().accuracy : 0.0)
-                << ", reward " << scores.back().normalized_reward.value_or(0.0) << '\n';
+      std::cerr << "oasis-go1 sim: " << profile.name << " trial " << trial + 1 << "/"
+                << request.trials << ": accuracy "
+                << (scores.back().accuracy ? *scores.back().accuracy : 0.0) << ", reward "
+                << scores.back().normalized_reward.value_or(0.0) << '\n';
   }
   return log::summarize_trials(scores);
 }
@@ -150,9 +151,6 @@ int simulate(const SimRequest& request) {
     if (full_state_catalog && !full_state)
       full_state.emplace(request.no_attention_catalog, settings.loop.catalog_spec);
     const rt::CatalogView& view = full_state_catalog ? full_state->view() : catalog.view();
-    if (const std::string problem = settings::validate_profile_against_catalog(profile, view);
-        !problem.empty())
-      throw SetupError(problem);
     const log::Table2Summary summary =
         run_controller(request, trial_setup(request, settings, view), view, profile);
     if (request.json) {

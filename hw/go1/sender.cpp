@@ -147,14 +147,18 @@ void Sender::send(const HighCommand& command) {
   status_.last_send_error = std::move(*error);
 }
 
-std::string ignored_datagrams_text(const SenderStatus& status) {
-  if (status.datagrams_ignored == 0) return "";
-  std::string text = "ignored " + std::to_string(status.datagrams_ignored) +
-                     (status.datagrams_ignored == 1 ? " datagram" : " datagrams");
-  if (status.last_ignored_from)
-    text += (status.datagrams_ignored == 1 ? " from " : ", the last from ") +
-            to_string(*status.last_ignored_from);
+std::string ignored_datagrams_text(std::uint64_t count, std::string_view last_from) {
+  if (count == 0) return "";
+  std::string text = "ignored " + std::to_string(count) + (count == 1 ? " datagram" : " datagrams");
+  if (!last_from.empty())
+    text += (count == 1 ? " from " : ", the last from ") + std::string(last_from);
   return text + " (not the robot)";
+}
+
+std::string ignored_datagrams_text(const SenderStatus& status) {
+  return ignored_datagrams_text(status.datagrams_ignored, status.last_ignored_from
+                                                              ? to_string(*status.last_ignored_from)
+                                                              : std::string());
 }
 
 void Sender::read_states() {

@@ -22,6 +22,7 @@
 #include <mutex>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <thread>
 
 #include "go1/endpoint.hpp"
@@ -66,7 +67,9 @@ struct SenderStatus {
   std::optional<Endpoint> last_ignored_from;  // the source of the last of them
 };
 
-// "ignored 12 datagrams from 192.168.12.40:5555 (not the robot)", or "" when none were.
+// "ignored 12 datagrams, the last from 192.168.12.40:5555 (not the robot)", or "" when none
+// were: the one wording of the silence report, the end-of-run line and the tests.
+std::string ignored_datagrams_text(std::uint64_t count, std::string_view last_from);
 std::string ignored_datagrams_text(const SenderStatus& status);
 
 class Sender {

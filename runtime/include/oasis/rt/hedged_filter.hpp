@@ -89,10 +89,7 @@ class HedgedFilter {
     if (!ok()) return;
     paper_.reset();
     robust_.reset();
-    robust_weight_ = options_.robust_prior;
-    random_.reseed(options_.paper.seed);
-    ml_ = kNoChoice;
-    mix();
+    restart_mix();
   }
 
   /// As AttentionFilter::start().
@@ -101,10 +98,7 @@ class HedgedFilter {
     const StepStatus status = paper_.start(observed_state);
     if (status != StepStatus::kOk) return status;
     robust_.start(observed_state);
-    robust_weight_ = options_.robust_prior;
-    random_.reseed(options_.paper.seed);
-    ml_ = kNoChoice;
-    mix();
+    restart_mix();
     return StepStatus::kOk;
   }
 
@@ -161,6 +155,14 @@ class HedgedFilter {
     const std::size_t before = paper_size(catalog, options, available);
     const std::size_t wanted = AttentionFilter::workspace_size(catalog, robust_options(options));
     return before > 0 && available - before >= wanted ? wanted : 0;
+  }
+
+  // Back to t = 0 for the mixing: the prior weight, the tie rule's PRNG reseeded, no choice.
+  void restart_mix() noexcept {
+    robust_weight_ = options_.robust_prior;
+    random_.reseed(options_.paper.seed);
+    ml_ = kNoChoice;
+    mix();
   }
 
   // The mixed belief and its ML abstraction, ties broken by the paper options' tie rule and
