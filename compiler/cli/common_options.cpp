@@ -1,6 +1,7 @@
 #include <unistd.h>
 
 #include "cli/commands.hpp"
+#include "cli/number_options.hpp"
 
 namespace oasis::cli {
 
@@ -9,10 +10,10 @@ void add_common_options(CLI::App& command, CommonOptions& options) {
       .add_option("--max-states", options.load.max_states,
                   "Stop exploring a factored model past this many states")
       ->capture_default_str()
-      ->check(CLI::Range(1U, 4'000'000'000U));
+      ->check(whole_in(1, 4'000'000'000U));
   command.add_option("--max-errors", options.max_errors, "Stop after this many errors")
       ->capture_default_str()
-      ->check(CLI::Range(std::size_t{1}, std::size_t{100000}));
+      ->check(whole_in(1, 100000));
   command
       .add_option("--max-spec-size", options.load.max_spec_bytes,
                   "Refuse .oasis files larger than this (bytes, or with a unit: 64M)")
@@ -28,7 +29,7 @@ void add_common_options(CLI::App& command, CommonOptions& options) {
       .add_option("--max-number-bits", options.load.max_number_bits,
                   "Refuse exact numbers whose numerator or denominator has more bits than this")
       ->capture_default_str()
-      ->check(CLI::Range(std::size_t{64}, std::size_t{1} << 34));
+      ->check(whole_in(64, std::uint64_t{1} << 34));
   command
       .add_option("--progress", options.progress,
                   "Show progress on stderr (exploration, the stages of a continuous compile): auto "

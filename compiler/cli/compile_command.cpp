@@ -12,6 +12,7 @@
 #include <set>
 
 #include "cli/commands.hpp"
+#include "cli/number_options.hpp"
 #include "codegen/abstraction_svg.hpp"
 #include "codegen/binary_catalog.hpp"
 #include "codegen/continuous_json.hpp"
@@ -25,10 +26,26 @@
 #include "pipeline/continuous_catalog_data.hpp"
 #include "pipeline/discrete_catalog.hpp"
 #include "support/atomic_file.hpp"
+#include "support/limits.hpp"
 #include "support/staged_directory.hpp"
 
 namespace oasis::cli {
 namespace {
+
+// --basename names files inside the output folder: a plain name, never a path ("../evil",
+// "/etc/x"), so that compile writes nowhere else.
+CLI::Validator plain_file_name() {
+  return CLI::Validator(
+      [](std::string& name) -> std::string {
+        const bool plain = !name.empty() && name != "." && name != ".." &&
+                           name.find('/') == std::string::npos &&
+                           name.find('\0') == std::string::npos;
+        return plain ? ""
+                     : "\"" + name.substr(0, 60) +
+                           "\" is not a plain file name (no '/', not '.' or '..', not empty)";
+      },
+      "NAME");
+}
 
 namespace fs = std::filesystem;
 
@@ -347,30 +364,33 @@ CommandRunner add_compile_command(CLI::App& app) {
                    "Formats: bin, json, dot, svg, cpp (default: bin,json,dot or bin,json,svg)")
       ->delimiter(',')
       ->check(CLI::IsMember({"bin", "json", "dot", "svg", "cpp"}));
-  command->add_option("--basename", options->basename,
-                      "File name (without extension) of the C++ output");
+  command
+      ->add_option("--basename", options->basename,
+                   "File name (without extension) of the C++ output, inside the output folder")
+      ->check(plain_file_name());
   command
       ->add_option("--robust", options->p_correct,
                    "Add the robust filter's section with this sensor accuracy P = 1 - noise "
                    "(discrete), overriding the spec's observation noise")
-      ->check(CLI::Range(0.0, 1.0));
+      ->check(real_in(closed(0.0, 1.0)));
   command
       ->add_option("--epsilon", options->epsilon,
                    "Continuous: the error bound every transition row must meet (default: the "
                    "spec's 'epsilon', else 0.1)")
-      ->check(CLI::PositiveNumber);
+      ->check(real_in(RealBounds{0.0, 1.0, true, false}));
   command
       ->add_option("--max-cells", options->max_cells,
                    "Continuous: cells per context at most (default: the spec's 'max_cells', else " +
                        std::to_string(pipeline::kDefaultGridCells) + " on a grid, " +
                        std::to_string(pipeline::kDefaultPolytopeCells) + " polytope cells)")
-      ->check(CLI::PositiveNumber);
+      ->check(whole_in(1, static_cast<std::uint64_t>(limits::kMaxCellsSetting)));
   command->add_flag("--no-attention", options->no_attention,
                     "Continuous: partition every variable (the no-attention baseline)");
   command->add_flag("--with-transitions", options->with_transitions,
                     "Continuous: also write the quotient's transition rows (large)");
   command->add_option("-j,--jobs", options->jobs, "Contexts abstracted in parallel (0: all cores)")
-      ->capture_default_str();
+      ->capture_default_str()
+      ->check(whole_in(0, limits::kMaxJobs));
   add_common_options(*command, options->common);
   return [options] { return run_compile(*options); };
 }

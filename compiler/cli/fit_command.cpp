@@ -12,6 +12,7 @@
 #include <unistd.h>
 
 #include "cli/commands.hpp"
+#include "cli/number_options.hpp"
 #include "fit/csv_table.hpp"
 #include "fit/depth_noise_fit.hpp"
 #include "fit/forward_algorithm.hpp"
@@ -452,14 +453,14 @@ CommandRunner add_fit_command(CLI::App& app) {
   sw->add_option("--detection-epsilon", switching->detection_epsilon,
                  "Soft detection model: p(r | phi, s) = epsilon when r != R(s)")
       ->capture_default_str()
-      ->check(CLI::Range(0.0, 0.5));
+      ->check(real_in(closed(0.0, 0.5)));
   sw->add_option("--reward-tolerance", switching->reward_tolerance,
                  "A logged reward matches R(s) within this absolute tolerance")
       ->capture_default_str()
-      ->check(CLI::NonNegativeNumber);
+      ->check(real_in(non_negative()));
   sw->add_option("--state-noise", switching->state_noise,
                  "Symmetric state noise P(observed != true): use the joint forward algorithm")
-      ->check(CLI::Range(0.0, 1.0));
+      ->check(real_in(closed(0.0, 1.0)));
   sw->add_option("--reward-follows", switching->reward_follows,
                  "With state noise: the reward belongs to the true or the observed state "
                  "(default: the spec's observation block, else true)")
@@ -484,9 +485,9 @@ CommandRunner add_fit_command(CLI::App& app) {
   ns->add_flag("--matrix", noise->matrix, "Fit the full confusion matrix p(observed | true)");
   ns->add_option("--pseudo-count", noise->pseudo_count,
                  "--matrix: add this to every count (not the MLE; unseen confusions stay "
-                 "possible)")
+                 "possible; at most 10^6, beyond which it outweighs any data)")
       ->capture_default_str()
-      ->check(CLI::NonNegativeNumber);
+      ->check(real_in(non_negative(1e6)));
   ns->add_option("--reward-follows", noise->reward_follows,
                  "What the fragment declares: the reward belongs to the true or observed state")
       ->capture_default_str()
@@ -501,13 +502,14 @@ CommandRunner add_fit_command(CLI::App& app) {
       ->required();
   dn->add_option("--degree", depth->degree, "Degree of sigma(d): 0, 1 or 2")
       ->capture_default_str()
-      ->check(CLI::Range(0U, 2U));
+      ->check(whole_in(0, 2));
   dn->add_option("--bias", depth->bias,
                  "Mean error of a measurement: none, constant (b0) or linear (b0 + b1*d)")
       ->capture_default_str()
       ->check(CLI::IsMember({"none", "constant", "linear"}));
   dn->add_option("--at", depth->at, "Distances (m) at which to print sigma(d) with its interval")
-      ->delimiter(',');
+      ->delimiter(',')
+      ->check(real_in(non_negative(1000.0)));
   dn->add_option("--object", depth->object, "The object the fragment declares")
       ->capture_default_str();
   dn->add_option("--variables", depth->variables,
@@ -517,7 +519,7 @@ CommandRunner add_fit_command(CLI::App& app) {
   add_fragment_output(*dn, depth->output);
   dn->add_option("--max-errors", depth->max_errors, "Stop after this many errors")
       ->capture_default_str()
-      ->check(CLI::Range(std::size_t{1}, std::size_t{100000}));
+      ->check(whole_in(1, 100000));
 
   return [command, sw, ns, switching, noise, depth] {
     if (command->got_subcommand(sw)) return run_switching(*switching);

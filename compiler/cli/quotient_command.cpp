@@ -12,10 +12,12 @@
 
 #include "bisim/quotient.hpp"
 #include "cli/commands.hpp"
+#include "cli/number_options.hpp"
 #include "cli/quotient_output.hpp"
 #include "formats/aut_writer.hpp"
 #include "pipeline/discrete_catalog.hpp"
 #include "support/atomic_file.hpp"
+#include "support/limits.hpp"
 
 namespace oasis::cli {
 namespace {
@@ -201,9 +203,10 @@ CommandRunner add_quotient_command(CLI::App& app) {
   command
       ->add_option("--epsilon", options->epsilon,
                    "Compare probabilities rounded to multiples of E (approximate mode)")
-      ->check(CLI::Range(1e-15, 0.5));
-  command->add_option("-j,--jobs", options->jobs,
-                      "Contexts quotiented in parallel (default: cores)");
+      ->check(real_in(closed(1e-15, 0.5)));
+  command
+      ->add_option("-j,--jobs", options->jobs, "Contexts quotiented in parallel (default: cores)")
+      ->check(whole_in(0, limits::kMaxJobs));
   add_common_options(*command, options->common);
   return [options] { return run_quotient(*options); };
 }

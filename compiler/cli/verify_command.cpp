@@ -7,6 +7,7 @@
 #include <optional>
 
 #include "cli/commands.hpp"
+#include "cli/number_options.hpp"
 #include "codegen/continuous_json_reader.hpp"
 #include "oasis/rt/catalog_file.hpp"
 #include "oasis/rt/spec_hash.hpp"
@@ -203,7 +204,7 @@ CommandRunner add_verify_command(CLI::App& app) {
       ->add_option("--robust", options->p_correct,
                    "The catalog was compiled with --robust P: expect its symmetric observation "
                    "model with p_correct P instead of the spec's")
-      ->check(CLI::Range(0.0, 1.0));
+      ->check(real_in(closed(0.0, 1.0)));
   add_common_options(*command, options->common);
   return [options] { return run_verify(*options); };
 }

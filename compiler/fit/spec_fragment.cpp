@@ -3,6 +3,7 @@
 #include <cmath>
 #include <iomanip>
 #include <sstream>
+#include <stdexcept>
 
 namespace oasis::fit {
 namespace {
@@ -43,7 +44,10 @@ std::string distribution(const std::vector<std::string>& texts,
 }  // namespace
 
 std::string decimal_text(double value, int decimals) {
-  return fixed_point_text(std::llround(value * static_cast<double>(scale_of(decimals))), decimals);
+  const double scaled = value * static_cast<double>(scale_of(decimals));
+  if (!std::isfinite(scaled) || std::fabs(scaled) > 9e18)
+    throw std::domain_error("cannot write " + std::to_string(value) + " as a decimal number");
+  return fixed_point_text(std::llround(scaled), decimals);
 }
 
 std::vector<std::string> exact_row(const std::vector<double>& row, int decimals) {
@@ -80,8 +84,14 @@ std::string switching_matrix_fragment(const std::vector<double>& matrix,
 }
 
 std::string state_noise_fragment(double sigma, const std::string& reward_follows, int decimals) {
-  return "observation {\n  state noise " + decimal_text(sigma, decimals) + ";\n  reward follows " +
-         reward_follows + ";\n}\n";
+  const std::string noise = decimal_text(sigma, decimals);
+  if (!(sigma >= 0.0) || noise == "1")
+    throw std::domain_error(
+        "the fitted state noise is " + noise +
+        ": (nearly) every label is wrong, which no state noise in [0, 1) describes; "
+        "are the columns true_state,observed_state swapped?");
+  return "observation {\n  state noise " + noise + ";\n  reward follows " + reward_follows +
+         ";\n}\n";
 }
 
 std::string confusion_fragment(const std::vector<double>& matrix,

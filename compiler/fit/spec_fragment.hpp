@@ -11,6 +11,9 @@
 namespace oasis::fit {
 
 // `value` with at most `decimals` digits after the point, trailing zeros dropped ("0.8").
+// `value` rounded to `decimals` places, trailing zeros dropped ("0.25"). Throws
+// std::domain_error for a value that is not finite or too large for 18 digits, rather than
+// rounding it into undefined behaviour.
 std::string decimal_text(double value, int decimals);
 
 // A probability row as decimals that sum to exactly 1 (entries that round to 0 stay "0").
@@ -25,6 +28,8 @@ std::string switching_matrix_fragment(const std::vector<double>& matrix,
                                       const std::vector<std::string>& contexts, int decimals = 4);
 
 // The observation block: `observation { state noise sigma; reward follows true; }`.
+// Throws std::domain_error when sigma, so rounded, is not a state noise the spec language
+// takes ([0, 1)): a fragment that `oasisc check` would refuse is never printed.
 std::string state_noise_fragment(double sigma, const std::string& reward_follows, int decimals = 4);
 
 // The same with a confusion matrix, one row per true state:

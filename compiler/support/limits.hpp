@@ -56,6 +56,9 @@ inline constexpr std::int64_t kMaxHorizon = 1'000'000'000;
 // neither gives one are pipeline::kDefaultGridCells and pipeline::kDefaultPolytopeCells.
 inline constexpr std::int64_t kMaxCellsSetting = 100'000'000;
 
+// -j N: threads at most (far beyond any machine's cores; a typo must not start a million).
+inline constexpr unsigned kMaxJobs = 1024;
+
 // --- The work ----------------------------------------------------------------------------
 
 // Exploration of a factored spec, and the state count an .aut or PRISM header may declare,

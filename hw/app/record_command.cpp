@@ -10,6 +10,7 @@
 #include "app/robot_link.hpp"
 #include "app/session.hpp"
 #include "camera/recording_writer.hpp"
+#include "cli/number_options.hpp"
 #include "settings/settings.hpp"
 
 namespace oasis::hw::app {
@@ -55,7 +56,7 @@ CommandRunner add_record_command(CLI::App& app) {
   command->add_option("folder", request->folder, "the recording's folder (created)")->required();
   command->add_option("--source", request->source, "synthetic (default) or camera");
   command->add_option("--frames", request->frames, "how many frames (default 50)")
-      ->check(CLI::Range(1, 100000));
+      ->check(oasis::cli::whole_in(1, 100000));
   command->add_option("--config", request->config, "YAML settings (camera, perception)")
       ->check(CLI::ExistingFile);
   command->add_flag("--replace", request->replace, "replace an earlier recording in the folder");

@@ -12,6 +12,7 @@
 #include "app/control_loop.hpp"
 #include "app/profile_controller.hpp"
 #include "app/session.hpp"
+#include "cli/number_options.hpp"
 #include "go1/endpoint.hpp"
 #include "go1/sender.hpp"
 #include "go1/stop_signal.hpp"
@@ -172,7 +173,8 @@ void add_common_options(CLI::App& command, RunRequest& request) {
                      "the controller profile: " + settings::shipped_profile_names() +
                          " (hw/config/controllers/; oracle and no-attention are sim baselines), "
                          "or a path to a .yaml profile; default: the config's loop.controller");
-  command.add_option("--steps", request.steps, "stop after this many control steps");
+  command.add_option("--steps", request.steps, "stop after this many control steps")
+      ->check(oasis::cli::whole_in(0, oasis::cli::max_of<std::uint64_t>()));
   command.add_option("--log", request.log_path,
                      "write every step as a JSON line (hw/log/README.md) to this file");
   command.add_flag("--quiet", request.quiet, "no line per step, no score table");
@@ -196,7 +198,7 @@ CommandRunner add_run_command(CLI::App& app) {
   command
       ->add_option("--robot-timeout-ms", request->robot_timeout_ms,
                    "how long to wait for the robot's first state packet before giving up")
-      ->check(CLI::Range(10, 60000));
+      ->check(oasis::cli::whole_in(10, 60000));
   command->add_flag("--fast", request->fast,
                     "with --dry-run and a synthetic or recorded source: do not wait for the "
                     "clock, run each step as soon as the last is done");

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "app/commands.hpp"
+#include "cli/number_options.hpp"
 #include "log/log_error.hpp"
 #include "log/step_log_reader.hpp"
 #include "log/table2_metrics.hpp"
@@ -31,6 +32,10 @@ int score(const ScoreRequest& request) {
       const log::StepLog step_log = log::read_step_log(path);
       for (const std::string& warning : step_log.warnings)
         std::cerr << warning << '\n';  // already "FILE:LINE: warning: ..."
+      if (step_log.records.empty()) {  // nothing to score is an error, not a table of zeros
+        std::cerr << path << ": error: the log has no steps to score\n";
+        return 1;
+      }
       trials.push_back(log::score_trial(step_log.records, options));
     }
   } catch (const log::LogError& e) {
@@ -60,7 +65,7 @@ CommandRunner add_score_command(CLI::App& app) {
   command
       ->add_option("--period", request->period_s,
                    "seconds per step for the lags; default: the median step of each log")
-      ->check(CLI::PositiveNumber);
+      ->check(oasis::cli::real_in(oasis::cli::positive(3600.0)));
   command->add_flag("--json", request->json,
                     "print {accuracy, avg_lag_s, max_lag_s, normalized_reward} as JSON, each "
                     "{mean, std} over the logs");

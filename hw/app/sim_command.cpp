@@ -9,12 +9,15 @@
 #include <sstream>
 #include <stdexcept>
 #include <string>
+#include <system_error>
+#include <utility>
 #include <vector>
 
 #include "app/commands.hpp"
 #include "app/profile_controller.hpp"
 #include "app/session.hpp"
 #include "app/sim_trial.hpp"
+#include "cli/number_options.hpp"
 #include "log/step_log_writer.hpp"
 #include "log/table2_metrics.hpp"
 #include "log/table2_report.hpp"
@@ -115,8 +118,16 @@ std::vector<settings::ControllerProfile> requested_profiles(const SimRequest& re
 }
 
 void make_output_folders(const SimRequest& request) {
-  for (const std::string& folder : {request.logs, request.plots})
-    if (!folder.empty()) std::filesystem::create_directories(folder);
+  const std::pair<const char*, const std::string*> folders[] = {{"--logs", &request.logs},
+                                                                {"--plots", &request.plots}};
+  for (const auto& [option, folder] : folders) {
+    if (folder->empty()) continue;
+    std::error_code error;
+    std::filesystem::create_directories(*folder, error);
+    if (error)
+      throw SetupError(std::string(option) + ": cannot create the folder " + *folder + ": " +
+                       error.message());
+  }
 }
 
 // What a profile is, as the tables and the JSON say it: where it came from and what it sets.
@@ -204,15 +215,17 @@ CommandRunner add_sim_command(CLI::App& app) {
                    "--no-attention; scripts/regen makes the shipped one)")
       ->capture_default_str();
   command->add_option("--trials", request->trials, "seeded trials per controller")
-      ->check(CLI::Range(1, 100000));
-  command->add_option("--seed", request->seed, "trial k uses seed * 1000 + k");
+      ->check(oasis::cli::whole_in(1, 100000));
+  command->add_option("--seed", request->seed, "trial k uses seed * 1000 + k")
+      ->check(oasis::cli::whole_in(0, oasis::cli::max_of<std::uint64_t>() / 1000 - 100000));
   command->add_option("--controllers", request->controllers, controller_help())->delimiter(',');
   command
       ->add_option("--perception", request->perception,
                    "fast (noisy positions drawn directly) or rendered (each frame rendered "
                    "and run through the real perception)")
       ->check(CLI::IsMember({"fast", "rendered"}));
-  command->add_option("--steps", request->steps, "cut each trial after this many steps");
+  command->add_option("--steps", request->steps, "cut each trial after this many steps")
+      ->check(oasis::cli::whole_in(1, oasis::cli::max_of<std::uint64_t>()));
   command->add_option(
       "--logs", request->logs,
       "write each trial's step log (hw/log/README.md) to DIR/CONTROLLER_trialNN.jsonl");

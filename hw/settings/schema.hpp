@@ -216,7 +216,7 @@ void describe(V& v, S& s) {
       });
 
   v.section("loop", "The control loop of oasis-go1: camera -> perception -> filter -> link.", [&] {
-    v.value("rate_hz", s.loop.rate_hz, RealCodec<double>{0.0, 100.0, true},
+    v.value("rate_hz", s.loop.rate_hz, closed<double>(0.01, 100.0),
             "the spec's period 0.2 s; actions: assumes it");
     v.value("catalog", s.loop.catalog, CatalogCodec{},
             "linked (built in), or a path to a .bin catalog");

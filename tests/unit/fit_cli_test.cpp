@@ -140,6 +140,18 @@ TEST(FitCli, NoisePrintsTheClosedFormAndAFragment) {
   expect_pastes("switching stay 0.8;\n" + confusion, "switching stay 0.8;\n");
 }
 
+// Issue 28: labels that are all wrong fit a state noise of 1, which the spec language refuses
+// ([0, 1)); no fragment that `oasisc check` would refuse is printed, and the status says so.
+TEST(FitCli, NoiseOfAllWrongLabelsIsRefusedNotPrintedAsAFragment) {
+  const auto result =
+      test::run_oasisc("fit noise " + kSpec + " " + data("all_wrong.csv") + " --progress never");
+  EXPECT_EQ(result.status, 1) << result.output;
+  EXPECT_NE(result.output.find("error: the fitted state noise is 1: (nearly) every label is wrong"),
+            std::string::npos)
+      << result.output;
+  EXPECT_EQ(result.output.find("state noise 1;"), std::string::npos) << result.output;
+}
+
 // The Go1 spec with its first object replaced by `object` checks.
 void expect_object_pastes(const std::string& object) {
   std::string spec = test::read_text_file(std::string(OASIS_SOURCE_DIR) + "/specs/go1_treat.oasis");

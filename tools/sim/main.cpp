@@ -11,6 +11,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "cli/number_options.hpp"
 #include "model/explorer.hpp"
 #include "oasis/rt/spec_hash.hpp"
 #include "pipeline/catalog_data.hpp"
@@ -162,13 +163,13 @@ int main(int argc, char** argv) {
   command->add_option("--spec", table1.spec, "the spec to load")->capture_default_str();
   command->add_option("--seeds", table1.seeds, "seeds per row (0 .. N-1)")
       ->capture_default_str()
-      ->check(CLI::PositiveNumber);
+      ->check(oasis::cli::whole_in(1, 100000));
   command->add_option("--steps", table1.steps, "steps per trial")
       ->capture_default_str()
-      ->check(CLI::PositiveNumber);
+      ->check(oasis::cli::whole_in(1, 10'000'000));
   command->add_option("--sigma", table1.sigma, "state-noise probability of the noisy patterns")
       ->capture_default_str()
-      ->check(CLI::Range(0.0, 1.0));
+      ->check(oasis::cli::real_in(oasis::cli::closed(0.0, 1.0)));
   command
       ->add_option("--noise", table1.noises,
                    "noise readings for the noisy patterns: perceived, process, observed")
@@ -186,13 +187,18 @@ int main(int argc, char** argv) {
       ->add_option("--fit-switching", table1.fit_runs,
                    "add a transition model whose p(stay) is fitted per row, by maximum "
                    "likelihood, from this many training runs (on other seeds)")
-      ->check(CLI::Range(1, 1000));
+      ->check(oasis::cli::whole_in(1, 1000));
   command->add_option("--json", table1.json, "write the rows as JSON to this file");
   command->add_option("--csv-dir", table1.csv_dir, "write per-trial CSV traces here");
   command->add_option("--plot", table1.plot_dir,
                       "write SVG plots (model (i), step/periodic/uniform_random, first 150 steps)");
   int status = 0;
   command->callback([&] { status = run_table1_command(table1); });
-  CLI11_PARSE(app, argc, argv);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    const int exit_status = app.exit(e);  // --help and --version: 0
+    return oasis::finish_standard_output("oasis-sim", exit_status == 0 ? 0 : 2);  // bad usage
+  }
   return oasis::finish_standard_output("oasis-sim", status);
 }

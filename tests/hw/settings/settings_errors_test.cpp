@@ -113,6 +113,9 @@ TEST(SettingsErrors, OutOfRangeNamesTheRange) {
                "in 50..1000, got \"20\"");
   EXPECT_ERROR("robot:\n  level_flag: 0x100\n", "robot.level_flag: expected a byte");
   EXPECT_ERROR("robot:\n  rate_hz: 0\n", "robot.rate_hz: expected a number in [1.0, 1000.0]");
+  // Issue 28: a loop rate so small that its period overflowed the loop's duration arithmetic.
+  EXPECT_ERROR("loop:\n  rate_hz: 1e-300\n",
+               "loop.rate_hz: expected a number in [0.01, 100.0], got \"1e-300\"");
   EXPECT_ERROR("limits:\n  max_backward: -0.1\n", "limits.max_backward: expected a number in");
   EXPECT_ERROR("limits:\n  max_yaw_acceleration: .inf\n",
                "limits.max_yaw_acceleration: expected a number > 0.0");
@@ -166,7 +169,7 @@ TEST(SettingsErrors, ChecksAcrossKeys) {
 TEST(SettingsErrors, EveryProblemIsReportedInFileOrderWithItsSourceLine) {
   const std::string text = error_of("loop:\n  rate_hz: -5\nrobot:\n  port: x\n  prot: 1\n");
   EXPECT_EQ(text,
-            "t.yaml:2:12: error: loop.rate_hz: expected a number in (0.0, 100.0], got \"-5\"\n"
+            "t.yaml:2:12: error: loop.rate_hz: expected a number in [0.01, 100.0], got \"-5\"\n"
             "    rate_hz: -5\n"
             "             ^\n"
             "t.yaml:4:9: error: robot.port: expected an integer in 1..65535, got \"x\"\n"
