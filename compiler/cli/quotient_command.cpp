@@ -151,8 +151,9 @@ int run_quotient(const QuotientOptions& options) {
   if (!loaded || diagnostics.has_errors()) return 1;
   if (!loaded->model) {
     std::cerr << options.file
-              << ": error: continuous models are partitioned by the geometry "
-                 "layer, which this build does not have yet\n";
+              << ": error: quotient takes explicit models; a continuous spec is partitioned and "
+                 "quotiented by 'oasisc compile " << options.file
+              << " -o DIR --format json' (its JSON has every context's cells and blocks)\n";
     return 1;
   }
   const double load_seconds =

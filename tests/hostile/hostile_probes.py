@@ -86,6 +86,8 @@ def other_probes(paths):
     yield [g, "sim", "--trials", "1", "--steps", "1", "--plots", "/proc/oasis-x"], 1, "--plots"
     yield [g, "score", paths.empty_log], 1, paths.empty_log
     yield [c, "fit", "noise", fit_spec, all_wrong], 1, "every label is wrong"
+    line = os.path.join(paths.source_dir, "tests/data/gaussian_line.oasis")
+    yield [c, "quotient", line], 1, "oasisc compile"
     yield [s, "table1", "--no-such-option"], 2, "--no-such-option"
     yield [s, "nonsense"], 2, "A subcommand is required"
 
