@@ -9,6 +9,7 @@
 #include <CLI/CLI.hpp>
 
 #include "cli/commands.hpp"
+#include "cli/empty_values.hpp"
 #include "support/gmp_allocation.hpp"
 #include "support/limits.hpp"
 #include "support/memory_budget.hpp"
@@ -91,6 +92,7 @@ int main(int argc, char** argv) {
 
   std::string memory_budget = "auto";
   add_memory_budget_option(app, memory_budget);
+  oasis::cli::refuse_empty_values(app);
 
   try {
     app.parse(argc, argv);

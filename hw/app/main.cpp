@@ -7,6 +7,7 @@
 #include <CLI/CLI.hpp>
 
 #include "app/commands.hpp"
+#include "cli/empty_values.hpp"
 #include "settings/settings_error.hpp"
 
 int main(int argc, char** argv) {
@@ -33,6 +34,7 @@ int main(int argc, char** argv) {
   add(oasis::hw::app::add_score_command(app));
   add(oasis::hw::app::add_config_command(app));
   add(oasis::hw::app::add_sim_command(app));
+  oasis::cli::refuse_empty_values(app);
 
   try {
     app.parse(argc, argv);

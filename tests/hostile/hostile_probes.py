@@ -88,6 +88,27 @@ def other_probes(paths):
     yield [c, "fit", "noise", fit_spec, all_wrong], 1, "every label is wrong"
     line = os.path.join(paths.source_dir, "tests/data/gaussian_line.oasis")
     yield [c, "quotient", line], 1, "oasisc compile"
+    # An empty value never means the default (it did for every string option).
+    empty = [
+        ([c, "quotient", spec, "-o"], "--output"),
+        ([c, "compile", spec, "-o"], "--output"),
+        ([c, "export", spec, "--format", "aut", "-o"], "--output"),
+        ([c, "quotient", spec, "--context"], "--context"),
+        ([c, "check", spec, "--memory-budget"], "--memory-budget"),
+        ([c, "check"], "files"),
+        ([s, "table1", "--json"], "--json"),
+        ([s, "table1", "--spec"], "--spec"),
+        ([s, "table1", "--filters"], "--filters"),
+        ([g, "run", "--dry-run", "--catalog"], "--catalog"),
+        ([g, "run", "--dry-run", "--controller"], "--controller"),
+        ([g, "run", "--dry-run", "--log"], "--log"),
+        ([g, "run", "--dry-run", "--robot"], "--robot"),
+        ([g, "sim", "--logs"], "--logs"),
+        ([g, "sim", "--controllers"], "--controllers"),
+        ([g, "config", "--controller"], "--controller"),
+    ]
+    for command, option in empty:
+        yield command + [""], 2, option
     yield [s, "table1", "--no-such-option"], 2, "--no-such-option"
     yield [s, "nonsense"], 2, "A subcommand is required"
 

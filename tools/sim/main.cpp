@@ -11,6 +11,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "cli/empty_values.hpp"
 #include "cli/number_options.hpp"
 #include "model/explorer.hpp"
 #include "oasis/rt/spec_hash.hpp"
@@ -192,6 +193,7 @@ int main(int argc, char** argv) {
   command->add_option("--csv-dir", table1.csv_dir, "write per-trial CSV traces here");
   command->add_option("--plot", table1.plot_dir,
                       "write SVG plots (model (i), step/periodic/uniform_random, first 150 steps)");
+  oasis::cli::refuse_empty_values(app);
   int status = 0;
   command->callback([&] { status = run_table1_command(table1); });
   try {
