@@ -2,9 +2,11 @@
 
 #include <cerrno>
 #include <cstring>
+#include <string>
 #include <utility>
 
 #include <fcntl.h>
+#include <poll.h>
 #include <sys/mman.h>
 #include <sys/stat.h>
 #include <unistd.h>
@@ -39,6 +41,25 @@ std::string too_large_message(std::size_t max_bytes) {
   return "file is larger than the limit of " + std::to_string(max_bytes) + " bytes";
 }
 
+// How long a FIFO (a named pipe, or `<(command)`) may stay silent before it counts as one that
+// nobody writes to: a writer that is there delivers at once; none would block open() forever.
+constexpr int kPipeWaitMs = 5000;
+
+// A pipe is usable once its writer has written or closed; false (with `error`) if neither
+// happened within kPipeWaitMs.
+bool wait_for_writer(int fd, std::string& error) {
+  pollfd waiting{fd, POLLIN, 0};
+  for (;;) {
+    const int ready = ::poll(&waiting, 1, kPipeWaitMs);
+    if (ready > 0) return true;
+    if (ready < 0 && errno == EINTR) continue;
+    error = ready == 0 ? "is a pipe that nobody writes to (nothing arrived in " +
+                             std::to_string(kPipeWaitMs / 1000) + " s)"
+                       : system_error_text(errno);
+    return false;
+  }
+}
+
 }  // namespace
 
 MappedFile::MappedFile(MappedFile&& other) noexcept {
@@ -71,7 +92,8 @@ void MappedFile::release() {
 
 bool MappedFile::open(const std::string& path, std::size_t max_bytes, std::string& error) {
   release();
-  FileDescriptor fd(::open(path.c_str(), O_RDONLY | O_CLOEXEC));
+  // Non-blocking, so that opening a FIFO nobody writes to does not wait forever.
+  FileDescriptor fd(::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC));
   if (fd.get() < 0) {
     error = system_error_text(errno);
     return false;
@@ -85,6 +107,9 @@ bool MappedFile::open(const std::string& path, std::size_t max_bytes, std::strin
     error = "is a directory";
     return false;
   }
+  if (S_ISFIFO(info.st_mode) && !wait_for_writer(fd.get(), error)) return false;
+  // Reading blocks again from here: a pipe with a writer delivers what it writes.
+  ::fcntl(fd.get(), F_SETFL, ::fcntl(fd.get(), F_GETFL) & ~O_NONBLOCK);
   if (S_ISREG(info.st_mode) && info.st_size > 0) {
     const auto size = static_cast<std::size_t>(info.st_size);
     if (size > max_bytes) {

@@ -1,6 +1,7 @@
 #include "app/session.hpp"
 
 #include <cstdint>
+#include <filesystem>
 #include <fstream>
 #include <optional>
 #include <sstream>
@@ -114,6 +115,11 @@ namespace {
 std::optional<std::uint64_t> expected_spec_hash(const std::string& spec_setting) {
   if (spec_setting == settings::kAnyCatalogSpec) return std::nullopt;
   if (spec_setting == settings::kLinkedCatalog) return go1_treat::catalog().spec_hash;
+  std::error_code ignored;
+  if (std::filesystem::exists(spec_setting, ignored) &&
+      !std::filesystem::is_regular_file(spec_setting, ignored))  // a FIFO would block forever
+    throw SetupError("loop.catalog_spec: cannot read " + spec_setting +
+                     ": not a regular file (a directory, FIFO or device)");
   std::ifstream in(spec_setting, std::ios::binary);
   std::ostringstream text;
   if (!(in && text << in.rdbuf()))

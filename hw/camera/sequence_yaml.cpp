@@ -4,6 +4,7 @@
 #include <array>
 #include <charconv>
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <optional>
 #include <span>
@@ -100,6 +101,9 @@ void SequenceReader::fail(const YAML::Mark& mark, const std::string& message) co
 }
 
 YAML::Node SequenceReader::load() const {
+  std::error_code ignored;
+  if (std::filesystem::exists(file_, ignored) && !std::filesystem::is_regular_file(file_, ignored))
+    throw CameraError(file_.string() + ": is not a regular file (a FIFO would block forever)");
   std::ifstream stream(file_);
   if (!stream) throw CameraError("cannot read " + file_.string());
   std::ostringstream text;

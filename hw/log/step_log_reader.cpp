@@ -2,6 +2,7 @@
 
 #include <cerrno>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <optional>
 #include <sstream>
@@ -74,6 +75,12 @@ StepLog parse_step_log(std::string_view text, const std::string& name) {
 }
 
 StepLog read_step_log(const std::filesystem::path& path) {
+  // Only a regular file: a directory is no log, and a FIFO nobody writes to would block forever.
+  std::error_code ignored;
+  if (std::filesystem::exists(path, ignored) && !std::filesystem::is_regular_file(path, ignored))
+    throw LogError(log_diagnostic(path.string(), 0, "error",
+                                  "is not a regular file (a directory, FIFO or device), not a "
+                                  "step log"));
   std::ifstream in(path, std::ios::binary);
   if (!in)
     throw LogError(log_diagnostic(path.string(), 0, "error",

@@ -4,6 +4,7 @@
 
 #include <cerrno>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 
@@ -68,6 +69,11 @@ std::string read_yaml_file(const std::filesystem::path& file) {
     throw SettingsError(name, {{0, 0, "", "no such settings file", {}}});
   if (std::filesystem::is_directory(file, ignored))
     throw SettingsError(name, {{0, 0, "", "is a directory, not a settings file", {}}});
+  // A FIFO nobody writes to would block the open below forever.
+  if (!std::filesystem::is_regular_file(file, ignored))
+    throw SettingsError(
+        name,
+        {{0, 0, "", "is not a regular file (a FIFO, socket or device), not a settings file", {}}});
   std::ifstream in(file, std::ios::binary);
   std::ostringstream text;
   if (in) text << in.rdbuf();

@@ -109,6 +109,21 @@ def other_probes(paths):
     ]
     for command, option in empty:
         yield command + [""], 2, option
+    # Inputs that are not files: a FIFO nobody writes to (it blocked open() forever) and a
+    # directory, wherever a program reads a file.
+    # (score checks its arguments are files while parsing: a folder is a usage error there)
+    for odd, score_status in [(paths.fifo, 1), (paths.folder, 2)]:
+        yield [c, "check", odd], 1, odd
+        yield [c, "fit", "noise", fit_spec, odd], 1, odd
+        yield [c, "verify", spec, odd], 1, odd
+        yield [g, "run", "--dry-run", "--source", "synthetic", "--fast", "--steps", "1",
+               "--catalog", odd], 1, odd
+        yield [g, "run", "--dry-run", "--source", "synthetic", "--fast", "--steps", "1",
+               "--catalog-spec", odd], 1, odd
+        yield [g, "score", odd], score_status, odd
+        yield [g, "sim", "--trials", "1", "--steps", "1", "--controllers", odd + ".yaml"], 1, odd
+    yield [g, "run", "--dry-run", "--config", paths.fifo], 1, paths.fifo
+    yield [g, "sim", "--trials", "1", "--steps", "1", "--scenario", paths.fifo], 1, paths.fifo
     yield [s, "table1", "--no-such-option"], 2, "--no-such-option"
     yield [s, "nonsense"], 2, "A subcommand is required"
 
@@ -131,6 +146,12 @@ def main():
         paths.scratch = os.path.join(scratch, "out")
         paths.empty_log = os.path.join(scratch, "empty.jsonl")
         open(paths.empty_log, "w", encoding="utf-8").close()
+        paths.fifo = os.path.join(scratch, "nobody_writes")
+        os.mkfifo(paths.fifo)
+        os.mkfifo(paths.fifo + ".yaml")
+        paths.folder = os.path.join(scratch, "a_folder")
+        os.mkdir(paths.folder)
+        os.mkdir(paths.folder + ".yaml")
         before = sorted(os.listdir(scratch))
         for arguments, expected, culprit in probes(paths):
             count += 1

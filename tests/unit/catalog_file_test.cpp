@@ -9,6 +9,7 @@
 #include <random>
 
 #include <gtest/gtest.h>
+#include <sys/stat.h>
 
 #include "../support/scratch_directory.hpp"
 #include "../support/spec_models.hpp"
@@ -99,6 +100,22 @@ TEST(CatalogFile, FileOnDiskLoads) {
   const rt::LoadedCatalog missing = rt::LoadedCatalog::from_file(path.string());
   EXPECT_FALSE(missing.ok());
   EXPECT_NE(missing.error().find("cannot open"), std::string::npos);
+}
+
+// Issue 28: a directory is not "too large for a catalog", and a FIFO nobody writes to is
+// refused at once rather than blocking the open forever.
+TEST(CatalogFile, ADirectoryOrAFifoIsRefusedForWhatItIs) {
+  const test::ScratchDirectory scratch("oasis_catalog_file_test");
+  const rt::LoadedCatalog folder = rt::LoadedCatalog::from_file(scratch.path().string());
+  EXPECT_FALSE(folder.ok());
+  EXPECT_NE(folder.error().find("is a directory, not a catalog file"), std::string::npos)
+      << folder.error();
+  const auto fifo = scratch.path() / "nobody_writes";
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+  const rt::LoadedCatalog pipe = rt::LoadedCatalog::from_file(fifo.string());
+  EXPECT_FALSE(pipe.ok());
+  EXPECT_NE(pipe.error().find("is not a regular file"), std::string::npos) << pipe.error();
+  std::filesystem::remove(fifo);
 }
 
 TEST(CatalogFile, ACatalogOfAnotherSpecIsRefusedByItsHash) {

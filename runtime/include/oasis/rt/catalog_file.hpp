@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <cstdint>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <memory>
 #include <string>
@@ -53,6 +54,15 @@ class LoadedCatalog {
 
   /// Reads and checks a file; a file that cannot be read is an error, not an exception.
   static LoadedCatalog from_file(const std::string& path) {
+    // Only a regular file: a directory is no catalog, and opening a FIFO nobody writes to
+    // would wait forever.
+    std::error_code ignored;
+    const std::filesystem::file_status status = std::filesystem::status(path, ignored);
+    if (std::filesystem::is_directory(status))
+      return failed(path + ": is a directory, not a catalog file");
+    if (std::filesystem::exists(status) && !std::filesystem::is_regular_file(status))
+      return failed(path +
+                    ": is not a regular file (a FIFO, socket or device), not a catalog file");
     std::ifstream in(path, std::ios::binary | std::ios::ate);
     if (!in) return failed("cannot open " + path);
     const std::streamoff length = in.tellg();
