@@ -152,7 +152,8 @@ int run_quotient(const QuotientOptions& options) {
   if (!loaded->model) {
     std::cerr << options.file
               << ": error: quotient takes explicit models; a continuous spec is partitioned and "
-                 "quotiented by 'oasisc compile " << options.file
+                 "quotiented by 'oasisc compile "
+              << options.file
               << " -o DIR --format json' (its JSON has every context's cells and blocks)\n";
     return 1;
   }
