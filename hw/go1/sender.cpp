@@ -24,17 +24,12 @@ HighCommand stand_command() {
   return HighCommand{};
 }  // idle mode, idle gait, all zero
 
-// Whether `from` is the robot's own address and port (compared as numbers, not as text).
-bool same_endpoint(const Endpoint& from, const sockaddr_in& robot) {
-  const sockaddr_in source = to_sockaddr(from);
-  return source.sin_addr.s_addr == robot.sin_addr.s_addr && source.sin_port == robot.sin_port;
-}
-
 }  // namespace
 
 Sender::Sender(SenderOptions options)
     : options_(checked(std::move(options))),
       robot_address_(to_sockaddr(options_.robot)),
+      robot_endpoint_(from_sockaddr(robot_address_)),
       tick_(std::chrono::duration_cast<Clock::duration>(
           std::chrono::duration<double>(1.0 / options_.rate_hz))),
       socket_(options_.local),
@@ -163,7 +158,7 @@ std::string ignored_datagrams_text(const SenderStatus& status) {
 
 void Sender::read_states() {
   while (std::optional<Datagram> datagram = socket_.receive(std::chrono::milliseconds(0))) {
-    if (!same_endpoint(datagram->from, robot_address_)) {
+    if (datagram->from != robot_endpoint_) {
       const std::lock_guard lock(mutex_);
       ++status_.datagrams_ignored;
       status_.last_ignored_from = datagram->from;

@@ -105,6 +105,9 @@ class Sender {
 
   const SenderOptions options_;
   const sockaddr_in robot_address_;
+  // The robot as a received datagram's source reads (the canonical dotted quad), so that each
+  // datagram is checked by one comparison, not by parsing its source again.
+  const Endpoint robot_endpoint_;
   const Clock::duration tick_;
   UdpSocket socket_;
 
