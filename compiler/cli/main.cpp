@@ -11,6 +11,7 @@
 #include "cli/commands.hpp"
 #include "cli/empty_values.hpp"
 #include "support/gmp_allocation.hpp"
+#include "support/interrupt_cleanup.hpp"
 #include "support/limits.hpp"
 #include "support/memory_budget.hpp"
 #include "support/standard_output.hpp"
@@ -67,6 +68,7 @@ std::optional<std::uint64_t> apply_budget(const CLI::App& app, const std::string
 
 int main(int argc, char** argv) {
   oasis::make_gmp_throw_on_allocation_failure();
+  oasis::interrupt::install_cleanup_handlers();  // a killed compile takes its staging with it
   CLI::App app{"oasisc " OASIS_VERSION
                ": compile MDP context specs into bisimulation abstractions for Online "
                "Attention Switching",

@@ -17,6 +17,7 @@
 #include "formats/aut_writer.hpp"
 #include "pipeline/discrete_catalog.hpp"
 #include "support/atomic_file.hpp"
+#include "support/atomic_file_set.hpp"
 #include "support/limits.hpp"
 
 namespace oasis::cli {
@@ -98,8 +99,19 @@ int write_output(const LoadedModel& loaded,
   if (options.format == "text") return 0;
 
   std::string error;
+  AtomicFileSet files;  // every context's file is replaced, or none
   for (std::size_t i = 0; i < results.size(); ++i) {
     if (options.format == "json" && i > 0) break;  // one JSON document holds every context
+    const std::string path =
+        output_path(options.output, options.format, model.contexts[results[i].context].name,
+                    options.format != "json" && results.size() > 1);
+    // Text for the terminal goes through std::cout; an .aut, even to '-', through AtomicFile.
+    const bool through_cout = to_stdout && options.format != "aut";
+    AtomicFile* file = through_cout ? nullptr : files.add(path, error);
+    if (!through_cout && file == nullptr) {
+      std::cerr << path << ": error: " << error << '\n';
+      return 1;
+    }
     std::string text;
     if (options.format == "json") {
       text = quotient_json(loaded, results, load_seconds, peak_memory_mib(), options.partition,
@@ -110,9 +122,7 @@ int write_output(const LoadedModel& loaded,
       const model::ExplicitModel quotient =
           bisim::build_quotient(model, results[i].context, results[i].partition);
       if (options.format == "aut") {
-        const std::string path = output_path(
-            options.output, "aut", model.contexts[results[i].context].name, results.size() > 1);
-        if (!formats::write_aut_file(quotient, 0, path, error)) {
+        if (!formats::write_aut(quotient, 0, *file, error)) {
           std::cerr << path << ": error: " << error << '\n';
           return 1;
         }
@@ -120,18 +130,15 @@ int write_output(const LoadedModel& loaded,
       }
       text = quotient_dot(model, results[i], quotient);
     }
-    if (to_stdout) {
+    if (through_cout) {
       std::cout << text;
-      continue;
+    } else {
+      file->append(text);
     }
-    const std::string path =
-        output_path(options.output, options.format, model.contexts[results[i].context].name,
-                    options.format != "json" && results.size() > 1);
-    AtomicFile file;
-    if (!file.open(path, error) || (file.append(text), !file.commit(error))) {
-      std::cerr << path << ": error: " << error << '\n';
-      return 1;
-    }
+  }
+  if (!files.commit(error)) {
+    std::cerr << options.output << ": error: " << error << '\n';
+    return 1;
   }
   return 0;
 }

@@ -15,6 +15,7 @@
 #include "verify/catalog_check.hpp"
 #include "verify/continuous_check.hpp"
 #include "verify/partition_result_reader.hpp"
+#include "verify/stated_cells_check.hpp"
 #include "verify/verifier.hpp"
 
 namespace oasis::cli {
@@ -59,7 +60,8 @@ int verify_catalog(const VerifyOptions& options, const model::ExplicitModel& mod
 // The checks of a continuous catalog, whichever file it came from (the binary file, loaded
 // and validated, or the JSON, read back and validated).
 int check_continuous_view(const VerifyOptions& options, const model::ModelIR& ir,
-                          const rt::CatalogView& view) {
+                          const rt::CatalogView& view,
+                          const codegen::StatedCells* stated = nullptr) {
   if (!compiled_from_model(options, view)) return 1;
   if (!view.is_continuous()) {
     std::cerr << options.result
@@ -67,14 +69,20 @@ int check_continuous_view(const VerifyOptions& options, const model::ModelIR& ir
                  "continuous\n";
     return 1;
   }
-  return print_checks(verify::check_continuous_catalog(ir, view));
+  std::vector<verify::CatalogCheck> checks = verify::check_continuous_catalog(ir, view);
+  if (stated != nullptr) {
+    for (verify::CatalogCheck& check : verify::check_stated_cells(ir, view, *stated))
+      checks.push_back(std::move(check));
+  }
+  return print_checks(checks);
 }
 
 int verify_continuous(const VerifyOptions& options, const model::ModelIR& ir) {
   if (options.result.ends_with(".json")) {
     std::string error;
-    auto data = codegen::read_continuous_catalog_json(options.result,
-                                                      options.common.load.max_input_bytes, error);
+    codegen::StatedCells stated;  // the JSON's own cells, checked against the partition
+    auto data = codegen::read_continuous_catalog_json(
+        options.result, options.common.load.max_input_bytes, error, &stated);
     if (!data) {
       std::cerr << options.result << ": error: " << error << '\n';
       return 1;
@@ -84,7 +92,7 @@ int verify_continuous(const VerifyOptions& options, const model::ModelIR& ir) {
       std::cerr << options.result << ": error: invalid catalog: " << error << '\n';
       return 1;
     }
-    return check_continuous_view(options, ir, view);
+    return check_continuous_view(options, ir, view, &stated);
   }
   const rt::LoadedCatalog catalog = rt::LoadedCatalog::from_file(options.result);
   if (!catalog.ok()) {

@@ -50,6 +50,15 @@ std::uint64_t parse_hash(const std::string& text) {
   return std::stoull(text, nullptr, 16);
 }
 
+// A cell's polytope as it states it: "A" (one array of coefficients per row) and "b".
+verify::StatedCell stated_cell(const json& cell) {
+  verify::StatedCell stated;
+  for (const json& row : cell.at("A"))
+    stated.rows.push_back(row.get<std::vector<double>>());
+  stated.bounds = cell.at("b").get<std::vector<double>>();
+  return stated;
+}
+
 void read_grid(const json& abstraction, const pipeline::CatalogData& catalog,
                pipeline::AbstractionData& data) {
   for (const json& name : abstraction.at("relevant_variables"))
@@ -165,7 +174,11 @@ void read_observation(const json& document, pipeline::CatalogData& catalog) {
   }
 }
 
-pipeline::CatalogData catalog_of(const json& document) {
+// `where` names the part being read, for the error message.
+pipeline::CatalogData catalog_of(const json& document, StatedCells* stated, std::string& where) {
+  if (!document.is_object())
+    throw std::out_of_range("the document is " + std::string(document.type_name()) +
+                            ", not an object with the keys format, name, spec_hash, ...");
   pipeline::CatalogData catalog;
   if (index_value(document.at("format"), "format") != rt::kCatalogFormat)
     throw std::out_of_range("catalog format " + document.at("format").dump() + ", expected " +
@@ -182,8 +195,10 @@ pipeline::CatalogData catalog_of(const json& document) {
   catalog.prior = document.at("prior").get<std::vector<double>>();
   read_observation(document, catalog);
   for (const json& abstraction : document.at("abstractions")) {
+    where = "abstraction " + std::to_string(catalog.abstractions.size());
     pipeline::AbstractionData data;
     data.context = abstraction.at("context").get<std::string>();
+    where += " ('" + data.context + "')";
     data.num_blocks = index_value(abstraction.at("num_blocks"), "num_blocks");
     data.outside_block = index_value(abstraction.at("outside_block"), "outside_block");
     data.epsilon = abstraction.at("epsilon").get<double>();
@@ -197,12 +212,21 @@ pipeline::CatalogData catalog_of(const json& document) {
                               std::to_string(grid_cell_count(data)));
     }
     read_blocks(abstraction.at("blocks"), catalog, data);
+    if (stated != nullptr) {
+      auto& cells = stated->emplace_back();
+      for (const json& cell : abstraction.at("cells")) {
+        where = "abstraction " + std::to_string(catalog.abstractions.size()) + " ('" +
+                data.context + "'), cell " + std::to_string(cells.size());
+        cells.push_back(stated_cell(cell));
+      }
+    }
     if (data.block_reward.size() != data.num_blocks)
       throw std::out_of_range("abstraction '" + data.context + "' lists " +
                               std::to_string(data.block_reward.size()) + " blocks, num_blocks " +
                               std::to_string(data.num_blocks));
     catalog.abstractions.push_back(std::move(data));
   }
+  where.clear();
   // The runtime reads an n x n switching matrix and n priors for n abstractions.
   const std::size_t n = catalog.abstractions.size();
   if (catalog.switching.size() != n * n || catalog.prior.size() != n)
@@ -212,27 +236,43 @@ pipeline::CatalogData catalog_of(const json& document) {
   return catalog;
 }
 
+// nlohmann's messages start with their own code, "[json.exception.type_error.302] ": the
+// user needs the sentence after it.
+std::string without_code(const char* message) {
+  std::string text = message;
+  if (text.rfind("[json.exception.", 0) == 0) {
+    const std::size_t end = text.find("] ");
+    if (end != std::string::npos) text.erase(0, end + 2);
+  }
+  return text;
+}
+
 }  // namespace
 
 std::optional<pipeline::CatalogData> read_continuous_catalog_json(const std::string& path,
                                                                   std::size_t max_bytes,
-                                                                  std::string& error) {
+                                                                  std::string& error,
+                                                                  StatedCells* stated) {
   MappedFile file;
   if (!file.open(path, max_bytes, error)) {
     error = "cannot read: " + error;
     return std::nullopt;
   }
-  return parse_continuous_catalog_json(file.text(), error);
+  return parse_continuous_catalog_json(file.text(), error, stated);
 }
 
 std::optional<pipeline::CatalogData> parse_continuous_catalog_json(std::string_view text,
-                                                                   std::string& error) {
+                                                                   std::string& error,
+                                                                   StatedCells* stated) {
+  std::string where;
   try {
-    return catalog_of(json::parse(text.begin(), text.end()));
+    if (stated != nullptr) stated->clear();
+    return catalog_of(json::parse(text.begin(), text.end()), stated, where);
   } catch (const std::bad_alloc&) {
     throw;                             // the memory budget, reported by main
   } catch (const std::exception& e) {  // nlohmann's parse, key and type errors, and ours
-    error = std::string("not a continuous catalog's JSON: ") + e.what();
+    error = "not a continuous catalog's JSON: " + (where.empty() ? "" : where + ": ") +
+            without_code(e.what());
     return std::nullopt;
   }
 }

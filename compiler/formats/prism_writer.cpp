@@ -4,11 +4,10 @@
 #include <optional>
 #include <vector>
 
-#include <unistd.h>
-
 #include "formats/prism_reader.hpp"
 #include "formats/value_text.hpp"
 #include "support/atomic_file.hpp"
+#include "support/atomic_file_set.hpp"
 
 namespace oasis::formats {
 namespace {
@@ -97,37 +96,28 @@ class PrismWriter {
     }
     const bool with_states = !model_.states.variables.empty();
     const bool with_choice_rewards = has_choice_rewards();
-    std::vector<AtomicFile> files;
-    if (!open(files, ".tra", error) || !open(files, ".lab", error) ||
-        !open(files, ".srew", error) || (with_states && !open(files, ".sta", error)) ||
-        (with_choice_rewards && !open(files, ".trew", error))) {
+    AtomicFileSet set;
+    std::vector<AtomicFile*> files;
+    const auto add = [&](const char* extension) {
+      files.push_back(set.add(base_ + extension, error));
+      return files.back() != nullptr;
+    };
+    if (!add(".tra") || !add(".lab") || !add(".srew") || (with_states && !add(".sta")) ||
+        (with_choice_rewards && !add(".trew"))) {
       return false;
     }
-    write_transitions(files[0]);
-    write_labels(files[1]);
-    write_state_rewards(files[2]);
-    if (with_states) write_states(files[3]);
-    if (with_choice_rewards) write_choice_rewards(files.back());
-    for (AtomicFile& file : files) {
-      if (!file.good()) {
-        error = file.error();
-        return false;
-      }
-    }
-    for (AtomicFile& file : files) {
-      if (!file.commit(error)) return false;
-    }
+    write_transitions(*files[0]);
+    write_labels(*files[1]);
+    write_state_rewards(*files[2]);
+    if (with_states) write_states(*files[3]);
+    if (with_choice_rewards) write_choice_rewards(*files.back());
     // A stale sibling would be read back as part of this model.
-    if (!with_states) ::unlink((base_ + ".sta").c_str());
-    if (!with_choice_rewards) ::unlink((base_ + ".trew").c_str());
-    return true;
+    if (!with_states) set.remove_at_commit(base_ + ".sta");
+    if (!with_choice_rewards) set.remove_at_commit(base_ + ".trew");
+    return set.commit(error);
   }
 
  private:
-  bool open(std::vector<AtomicFile>& files, const char* extension, std::string& error) {
-    return files.emplace_back().open(base_ + extension, error);
-  }
-
   [[nodiscard]] bool has_choice_rewards() const {
     if (context_.rewards.choice.empty()) return false;
     for (std::size_t c = 0; c < context_.rewards.choice.size(); ++c) {

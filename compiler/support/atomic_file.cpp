@@ -46,7 +46,7 @@ std::string base_name_of(const std::string& path) {
 }
 
 std::string temporary_prefix(const std::string& destination) {
-  return "." + base_name_of(destination) + ".tmp.";
+  return temporary_sibling_prefix(destination);
 }
 
 // A name no other writer uses: pid, a clock reading and a per-process counter, mixed so that
@@ -157,6 +157,10 @@ void remove_stale_temporaries(const std::string& destination) {
 
 }  // namespace
 
+std::string temporary_sibling_prefix(const std::string& destination) {
+  return "." + base_name_of(destination) + ".tmp.";
+}
+
 AtomicFile::AtomicFile(AtomicFile&& other) noexcept {
   *this = std::move(other);
 }
@@ -167,6 +171,7 @@ AtomicFile& AtomicFile::operator=(AtomicFile&& other) noexcept {
     path_ = std::move(other.path_);
     destination_ = std::move(other.destination_);
     temporary_path_ = std::move(other.temporary_path_);
+    cleanup_ = std::move(other.cleanup_);
     direct_ = std::exchange(other.direct_, false);
     anonymous_ = std::exchange(other.anonymous_, false);
     flush_stdio_ = std::exchange(other.flush_stdio_, false);
@@ -225,6 +230,7 @@ bool AtomicFile::open_temporary(std::string& error) {
     // File systems without O_TMPFILE refuse it (EOPNOTSUPP, EISDIR): use a named file.
   }
   const std::string prefix = directory + "/" + temporary_prefix(destination_);
+  const interrupt::CommitSection section;  // a signal waits until the new file is registered
   // O_EXCL with mode 0666 is mkstemp's guarantee plus the umask's permissions, so the
   // committed file gets the same permissions a plain open() would have given it.
   for (unsigned attempt = 0; attempt < 100; ++attempt) {
@@ -232,7 +238,7 @@ bool AtomicFile::open_temporary(std::string& error) {
     const int fd = ::open(candidate.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
     if (fd >= 0) {
       fd_ = fd;
-      temporary_path_ = std::move(candidate);
+      set_temporary_path(std::move(candidate));
       return true;
     }
     if (errno != EEXIST) {
@@ -329,25 +335,33 @@ void AtomicFile::close_descriptor() {
 
 // Gives the anonymous temporary file a name in the destination's directory: the destination
 // itself when it does not exist yet (no rename needed), else a hidden sibling to rename.
-bool AtomicFile::name_temporary(std::string& error) {
+void AtomicFile::set_temporary_path(std::string path) {
+  temporary_path_ = std::move(path);
+  cleanup_ = interrupt::CleanupPath(temporary_path_, interrupt::CleanupPath::Kind::kFile);
+}
+
+bool AtomicFile::name_temporary(bool may_take_destination, std::string& error) {
   const std::string descriptor_path = "/proc/self/fd/" + std::to_string(fd_);
   const auto link_as = [&](const std::string& name) {
     return ::linkat(AT_FDCWD, descriptor_path.c_str(), AT_FDCWD, name.c_str(), AT_SYMLINK_FOLLOW) ==
            0;
   };
-  if (link_as(destination_)) {
-    anonymous_ = false;
-    return true;
-  }
-  if (errno != EEXIST) {
-    error = "cannot create '" + destination_ + "': " + reason_of(errno);
-    return false;
+  if (may_take_destination) {
+    if (link_as(destination_)) {
+      anonymous_ = false;
+      return true;
+    }
+    if (errno != EEXIST) {
+      error = "cannot create '" + destination_ + "': " + reason_of(errno);
+      return false;
+    }
   }
   const std::string prefix = directory_of(destination_) + "/" + temporary_prefix(destination_);
+  const interrupt::CommitSection section;  // a signal waits until the new name is registered
   for (unsigned attempt = 0; attempt < 100; ++attempt) {
     std::string candidate = prefix + unique_suffix(attempt);
     if (link_as(candidate)) {
-      temporary_path_ = std::move(candidate);
+      set_temporary_path(std::move(candidate));
       anonymous_ = false;
       return true;
     }
@@ -357,16 +371,32 @@ bool AtomicFile::name_temporary(std::string& error) {
   return false;
 }
 
-bool AtomicFile::commit(std::string& error) {
+// Flushes and syncs the bytes, and gives an anonymous temporary file a name: the destination's
+// own when that is allowed and free (the file is then in place), else a hidden sibling.
+bool AtomicFile::finish_writing(bool may_take_destination) {
   if (fd_ < 0 && good()) fail("file '" + path_ + "' was not opened");
   flush_buffer();
   if (good() && !direct_ && ::fsync(fd_) != 0)
     fail("cannot sync " + target() + ": " + reason_of(errno));
-  std::string naming_error;
-  const bool named_as_destination =
-      good() && anonymous_ && name_temporary(naming_error) && temporary_path_.empty();
-  if (!naming_error.empty()) fail(std::move(naming_error));
-  if (good() && !named_as_destination && !direct_ &&
+  if (good() && anonymous_) {
+    std::string naming_error;
+    if (!name_temporary(may_take_destination, naming_error)) fail(std::move(naming_error));
+  }
+  return good();
+}
+
+bool AtomicFile::prepare(std::string& error) {
+  if (finish_writing(false)) return true;
+  error = error_;
+  discard();
+  return false;
+}
+
+bool AtomicFile::install(std::string& error) {
+  // A signal waits until the file is in place and no longer registered for clean-up.
+  const interrupt::CommitSection section;
+  if (fd_ < 0 && good()) fail("file '" + path_ + "' was not prepared");
+  if (good() && !temporary_path_.empty() &&
       ::rename(temporary_path_.c_str(), destination_.c_str()) != 0) {
     fail("cannot rename '" + temporary_path_ + "' to '" + destination_ + "': " + reason_of(errno));
   }
@@ -382,15 +412,26 @@ bool AtomicFile::commit(std::string& error) {
     return false;
   }
   temporary_path_.clear();
+  cleanup_.release();
   capacity_ = 0;
   if (!direct_) sync_directory(directory_of(destination_));
   return true;
+}
+
+bool AtomicFile::commit(std::string& error) {
+  if (!finish_writing(true)) {
+    error = error_;
+    discard();
+    return false;
+  }
+  return install(error);
 }
 
 void AtomicFile::discard() {
   close_descriptor();  // an anonymous temporary file disappears with its last descriptor
   if (!temporary_path_.empty()) ::unlink(temporary_path_.c_str());
   temporary_path_.clear();
+  cleanup_.release();
   anonymous_ = false;
   capacity_ = 0;
   used_ = 0;

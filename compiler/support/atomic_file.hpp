@@ -34,7 +34,14 @@
 #include <string_view>
 #include <type_traits>
 
+#include "support/interrupt_cleanup.hpp"
+
 namespace oasis {
+
+// The prefix of the hidden files an AtomicFile (or an AtomicFileSet) makes beside
+// `destination`. The next open() of that destination deletes those whose flock is free: they
+// were left by a writer that was killed.
+[[nodiscard]] std::string temporary_sibling_prefix(const std::string& destination);
 
 class AtomicFile {
  public:
@@ -74,6 +81,12 @@ class AtomicFile {
   // Flushes, fsyncs and renames the temporary file over the destination. On failure (or
   // after an earlier write error) removes the temporary file, returns false, sets `error`.
   [[nodiscard]] bool commit(std::string& error);
+  // commit() in two steps, for a set of files that must change together (AtomicFileSet).
+  // prepare() flushes and fsyncs, and names the temporary file as a hidden sibling (never the
+  // destination itself, which stays as it was); install() then renames it over the
+  // destination. Either removes the temporary file on failure.
+  [[nodiscard]] bool prepare(std::string& error);
+  [[nodiscard]] bool install(std::string& error);
   // Removes the temporary file now; the destination is left as it was.
   void discard();
 
@@ -103,15 +116,18 @@ class AtomicFile {
   bool open_direct(const std::string& path, std::string& error);
   bool open_duplicate(int descriptor, std::string& error);
   bool open_temporary(std::string& error);
-  bool name_temporary(std::string& error);
+  bool finish_writing(bool may_take_destination);
+  bool name_temporary(bool may_take_destination, std::string& error);
+  void set_temporary_path(std::string path);
   std::string target() const;
 
   std::string path_;
   std::string destination_;
   std::string temporary_path_;
-  bool direct_ = false;       // writing straight to a device, FIFO, socket or descriptor
-  bool anonymous_ = false;    // the temporary file has no name yet (O_TMPFILE)
-  bool flush_stdio_ = false;  // the descriptor is stdout or stderr: flush theirs first
+  interrupt::CleanupPath cleanup_;  // the named temporary file, removed if we are interrupted
+  bool direct_ = false;             // writing straight to a device, FIFO, socket or descriptor
+  bool anonymous_ = false;          // the temporary file has no name yet (O_TMPFILE)
+  bool flush_stdio_ = false;        // the descriptor is stdout or stderr: flush theirs first
   int fd_ = -1;
   std::unique_ptr<char[]> buffer_;
   std::size_t capacity_ = 0;  // 0 until open(), so appends before open() write nothing

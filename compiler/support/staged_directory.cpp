@@ -111,6 +111,7 @@ bool StagedDirectory::open(const std::string& target, std::string& error) {
   if (!fs::exists(resolved, ec) && fs::exists(aside, ec)) fs::rename(aside, resolved, ec);
   remove_stale_siblings(resolved);
   std::string pattern = (resolved.parent_path() / (staging_prefix(resolved) + "XXXXXX")).string();
+  const interrupt::CommitSection section;  // a signal waits until the new directory is registered
   if (::mkdtemp(pattern.data()) == nullptr) {
     error =
         "cannot create a staging directory beside '" + resolved.string() + "': " + reason_of(errno);
@@ -131,6 +132,7 @@ bool StagedDirectory::open(const std::string& target, std::string& error) {
   }
   target_ = resolved.string();
   staging_ = pattern;
+  cleanup_ = interrupt::CleanupPath(staging_, interrupt::CleanupPath::Kind::kDirectory);
   return true;
 }
 
@@ -144,6 +146,7 @@ bool StagedDirectory::commit(const std::string& marker_text, std::string& error)
   marker.append(marker_text);
   if (!marker.commit(error)) return false;
   ::fsync(lock_fd_);
+  const interrupt::CommitSection section;  // a signal waits until the swap is done
   const fs::path target(target_);
   const fs::path staging(staging_);
   std::error_code ec;
@@ -172,6 +175,7 @@ bool StagedDirectory::commit(const std::string& marker_text, std::string& error)
   fs::remove_all(staging, ec);
   sync_path(target.parent_path());
   staging_.clear();
+  cleanup_.release();
   ::close(lock_fd_);
   lock_fd_ = -1;
   return true;
@@ -183,6 +187,7 @@ void StagedDirectory::discard() {
     fs::remove_all(staging_, ec);
     staging_.clear();
   }
+  cleanup_.release();
   if (lock_fd_ >= 0) ::close(lock_fd_);
   lock_fd_ = -1;
 }

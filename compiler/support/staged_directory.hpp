@@ -15,9 +15,14 @@
 // no user file is ever deleted). open() also removes stale staging directories that killed
 // writers left beside the same target: those whose flock can be taken.
 //
+// SIGINT, SIGTERM and SIGHUP remove the staging directory (interrupt_cleanup.hpp) in programs
+// that install the clean-up handlers; the swap itself runs with those signals held back.
+//
 // Errors are lower-case reason strings, like AtomicFile's.
 
 #include <string>
+
+#include "support/interrupt_cleanup.hpp"
 
 namespace oasis {
 
@@ -47,6 +52,7 @@ class StagedDirectory {
  private:
   std::string target_;
   std::string staging_;
+  interrupt::CleanupPath cleanup_;  // the staging directory, removed if we are interrupted
   int lock_fd_ = -1;
 };
 

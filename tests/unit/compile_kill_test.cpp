@@ -128,6 +128,48 @@ TEST(CompileKill, TheOutputDirectoryIsAlwaysOneWholeSet) {
   EXPECT_EQ(staging_siblings(scratch.path()), 0U);
 }
 
+// SIGTERM and SIGINT (support/interrupt_cleanup.hpp): the folder is still one whole set, the
+// program dies of the signal (or had finished), and, unlike SIGKILL, it leaves nothing beside
+// the folder: its staging directory goes with it.
+TEST(CompileKill, SigtermAndSigintLeaveNothingBehind) {
+  const test::ScratchDirectory scratch("oasis_compile_term");
+  const std::string old_spec = std::string(OASIS_SOURCE_DIR) + "/specs/discrete_tracking.oasis";
+  const std::string new_spec = std::string(OASIS_SOURCE_DIR) + "/specs/go1_treat.oasis";
+  ASSERT_EQ(wait_for(start_compile(old_spec, scratch.path() / "old")), 0);
+  const auto begin = std::chrono::steady_clock::now();
+  ASSERT_EQ(wait_for(start_compile(new_spec, scratch.path() / "new")), 0);
+  const double full =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
+  const Files old_set = snapshot(scratch.path() / "old");
+  const Files new_set = snapshot(scratch.path() / "new");
+
+  const fs::path out = scratch.path() / "out";
+  std::mt19937 random(20261126);
+  int signalled = 0;
+  for (int trial = 0; trial < 10; ++trial) {
+    const int signal_number = trial % 2 == 0 ? SIGTERM : SIGINT;
+    if (snapshot(out) != old_set) {
+      ASSERT_EQ(wait_for(start_compile(old_spec, out)), 0);
+    }
+    const pid_t pid = start_compile(new_spec, out);
+    const double delay = std::uniform_real_distribution<double>(0.1 * full, 1.1 * full)(random);
+    std::this_thread::sleep_for(std::chrono::duration<double>(delay));
+    ::kill(pid, signal_number);
+    int status = 0;
+    ::waitpid(pid, &status, 0);
+    const bool died_of_it = WIFSIGNALED(status) && WTERMSIG(status) == signal_number;
+    const bool finished = WIFEXITED(status) && WEXITSTATUS(status) == 0;
+    EXPECT_TRUE(died_of_it || finished) << "trial " << trial << ": status " << status;
+    signalled += died_of_it ? 1 : 0;
+    const Files now = snapshot(out);
+    ASSERT_TRUE(now == old_set || now == new_set) << "trial " << trial;
+    EXPECT_EQ(staging_siblings(scratch.path()), 0U)
+        << "trial " << trial << " after signal " << signal_number;
+  }
+  std::cout << signalled << " of 10 compiles died of the signal, the rest had finished\n";
+  EXPECT_GT(signalled, 0);
+}
+
 // A model large enough that writing its copy takes a while: a chain of `states` states with
 // two actions, one of them a coin flip.
 std::string chain_aut(std::uint32_t states) {

@@ -19,6 +19,7 @@
 #include "sim/report.hpp"
 #include "sim/table1.hpp"
 #include "spec/frontend.hpp"
+#include "support/interrupt_cleanup.hpp"
 #include "support/standard_output.hpp"
 
 namespace {
@@ -156,6 +157,7 @@ int run_table1_command(const Table1Arguments& arguments) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  oasis::interrupt::install_cleanup_handlers();  // an interrupted run leaves no temporary file
   CLI::App app{"oasis-sim: the paper's experiments on the compiled catalog and the runtime filter"};
   app.require_subcommand(1);
   Table1Arguments table1;
