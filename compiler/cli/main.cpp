@@ -10,61 +10,10 @@
 
 #include "cli/commands.hpp"
 #include "cli/empty_values.hpp"
+#include "cli/memory_option.hpp"
 #include "support/gmp_allocation.hpp"
 #include "support/interrupt_cleanup.hpp"
-#include "support/limits.hpp"
-#include "support/memory_budget.hpp"
 #include "support/standard_output.hpp"
-
-namespace {
-
-constexpr const char* kMemoryBudgetFlag = "--memory-budget";
-
-// --memory-budget on every command that runs (the leaves: `fit switching`, not `fit`), so that
-// it reads `oasisc compile SPEC --memory-budget 4G` like every other option.
-void add_memory_budget_option(CLI::App& command, std::string& budget) {
-  const std::vector<CLI::App*> children = command.get_subcommands({});
-  if (!children.empty()) {
-    for (CLI::App* child : children)
-      add_memory_budget_option(*child, budget);
-    return;
-  }
-  std::string help =
-      "Stop with an error, instead of being killed, when the command would allocate more than "
-      "this: a size (512M, 4G), a percentage of the machine's memory (RAM, or the control "
-      "group's limit when smaller), auto (" +
-      std::to_string(oasis::limits::kDefaultMemoryBudgetPercent) + "%) or none";
-  if (!oasis::memory_budget_enforceable())
-    help += " (not enforced in this sanitizer build, whose shadow memory a limit would refuse)";
-  command.add_option(kMemoryBudgetFlag, budget, help)->capture_default_str();
-}
-
-// The command that runs: the last parsed subcommand at each level.
-const CLI::App* leaf_command(const CLI::App& app) {
-  const CLI::App* command = &app;
-  while (!command->get_subcommands().empty())
-    command = command->get_subcommands().back();
-  return command;
-}
-
-// Applies the budget the user gave (or the default). Returns the bytes in force (0: none), or
-// nullopt after reporting a bad value.
-std::optional<std::uint64_t> apply_budget(const CLI::App& app, const std::string& text) {
-  const bool given = leaf_command(app)->count(kMemoryBudgetFlag) > 0;
-  if (!oasis::memory_budget_enforceable()) {
-    if (given)
-      std::cerr << "oasisc: warning: " << kMemoryBudgetFlag
-                << " is not enforced in this sanitizer build\n";
-    return 0;
-  }
-  std::string error;
-  const auto bytes = oasis::parse_memory_budget(text, error);
-  const auto in_force = bytes ? oasis::apply_memory_budget(*bytes, error) : std::nullopt;
-  if (!in_force) std::cerr << "oasisc: error: " << kMemoryBudgetFlag << ": " << error << '\n';
-  return in_force;
-}
-
-}  // namespace
 
 int main(int argc, char** argv) {
   oasis::make_gmp_throw_on_allocation_failure();
@@ -93,7 +42,7 @@ int main(int argc, char** argv) {
   add(oasis::cli::add_fit_command(app));
 
   std::string memory_budget = "auto";
-  add_memory_budget_option(app, memory_budget);
+  oasis::cli::add_memory_budget_option(app, memory_budget);
   oasis::cli::refuse_empty_values(app);
 
   try {
@@ -106,7 +55,8 @@ int main(int argc, char** argv) {
     app.exit(e);
     return 2;  // bad usage, distinct from 1 (the input has errors)
   }
-  const std::optional<std::uint64_t> budget = apply_budget(app, memory_budget);
+  const std::optional<std::uint64_t> budget =
+      oasis::cli::apply_memory_budget_option(app, memory_budget, "oasisc");
   if (!budget) return oasis::finish_standard_output("oasisc", 2);
   int status = 2;
   try {
@@ -114,15 +64,7 @@ int main(int argc, char** argv) {
       status = runners.at(command)();
   } catch (const std::bad_alloc&) {
     // Everything the command allocated is released by now, so the message can be built.
-    if (*budget == 0) {
-      std::cerr << "oasisc: error: out of memory\n";
-    } else {
-      std::cerr << "oasisc: error: out of memory: the command needs more than its memory budget "
-                   "of "
-                << oasis::describe_bytes(*budget) << " (" << kMemoryBudgetFlag
-                << "; the default is " << oasis::limits::kDefaultMemoryBudgetPercent
-                << "% of the machine's memory)\n";
-    }
+    oasis::cli::report_out_of_memory("oasisc", *budget);
     status = 1;
   } catch (const std::exception& e) {
     std::cerr << "oasisc: error: " << e.what() << '\n';

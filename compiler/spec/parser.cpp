@@ -4,6 +4,8 @@
 #include <string>
 #include <utility>
 
+#include "support/text.hpp"
+
 namespace oasis::spec {
 namespace {
 
@@ -93,7 +95,7 @@ class Parser {
 
   static std::string found(const Token& token) {
     if (token.is(TokenKind::EndOfFile)) return "end of file";
-    return "'" + std::string(token.text) + "'";
+    return quoted(token.text);
   }
 
   const Token& expect(TokenKind kind, std::string_view context = {}) {

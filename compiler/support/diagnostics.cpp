@@ -1,11 +1,13 @@
 #include "support/diagnostics.hpp"
 
+#include <algorithm>
 #include <ostream>
+#include <string>
+
+#include "cli/printable_text.hpp"
 
 namespace oasis {
 namespace {
-
-constexpr std::size_t kMaxShownColumns = 160;
 
 std::string_view label(Severity severity) {
   switch (severity) {
@@ -19,16 +21,12 @@ std::string_view label(Severity severity) {
   return "error";
 }
 
-bool is_continuation_byte(char c) {
-  return (static_cast<unsigned char>(c) & 0xC0U) == 0x80U;
-}
-
 // Byte offset of the code point that starts at `column` (1-based) within `line`.
 std::size_t byte_of_column(std::string_view line, std::uint32_t column) {
   std::size_t byte = 0;
   for (std::uint32_t c = 1; c < column && byte < line.size();) {
     ++byte;
-    if (byte >= line.size() || !is_continuation_byte(line[byte])) ++c;
+    if (byte >= line.size() || !text::is_continuation_byte(line[byte])) ++c;
   }
   return byte;
 }
@@ -38,38 +36,21 @@ std::size_t byte_of_column(std::string_view line, std::uint32_t column) {
 // lines (minified or binary input) are cut to a window around the caret.
 void print_snippet(std::ostream& out, std::string_view line, std::uint32_t column,
                    std::uint32_t length) {
-  std::size_t caret_byte = byte_of_column(line, column);
-  std::string_view shown = line;
-  std::string_view prefix_mark;
-  if (line.size() > kMaxShownColumns) {
-    std::size_t start = caret_byte > kMaxShownColumns / 2 ? caret_byte - kMaxShownColumns / 2 : 0;
-    while (start > 0 && start < line.size() && is_continuation_byte(line[start]))
-      --start;
-    std::size_t end = std::min(line.size(), start + kMaxShownColumns);
-    while (end < line.size() && is_continuation_byte(line[end]))
-      ++end;
-    shown = line.substr(start, end - start);
-    caret_byte -= start;
-    if (start > 0) prefix_mark = "...";
-  }
-  out << prefix_mark;
-  for (char c : shown) {
-    // Control characters would move the terminal cursor; show them as '?'.
-    const bool control = static_cast<unsigned char>(c) < 0x20 && c != '\t';
-    out << (control ? '?' : c);
-  }
-  out << '\n' << std::string(prefix_mark.size(), ' ');
-  for (std::size_t i = 0; i < caret_byte && i < shown.size(); ++i) {
+  const text::SourceWindow window = text::source_window(line, byte_of_column(line, column));
+  const std::string_view shown = window.text;
+  const std::string_view prefix_mark = window.cut_before ? "..." : "";
+  out << prefix_mark << shown << '\n' << std::string(prefix_mark.size(), ' ');
+  for (std::size_t i = 0; i < window.caret && i < shown.size(); ++i) {
     if (shown[i] == '\t') {
       out << '\t';
-    } else if (!is_continuation_byte(shown[i])) {
+    } else if (!text::is_continuation_byte(shown[i])) {
       out << ' ';
     }
   }
   out << '^';
-  std::size_t tilde_end = std::min(shown.size(), caret_byte + length);
-  for (std::size_t i = caret_byte + 1; i < tilde_end; ++i) {
-    if (!is_continuation_byte(shown[i])) out << '~';
+  const std::size_t tilde_end = std::min<std::size_t>(shown.size(), window.caret + length);
+  for (std::size_t i = window.caret + 1; i < tilde_end; ++i) {
+    if (!text::is_continuation_byte(shown[i])) out << '~';
   }
   out << '\n';
 }
@@ -91,7 +72,7 @@ void DiagnosticEngine::emit(Severity severity, SourceRange where, std::string_vi
   const SourceFile& file = sources_.file(where.begin.file);
   const LineColumn position = file.line_column(where.begin.offset);
   out_ << file.path() << ':' << position.line << ':' << position.column << ": " << label(severity)
-       << ": " << message << '\n';
+       << ": " << text::printable_message(message) << '\n';
   print_snippet(out_, file.line_text(where.begin.offset), position.column,
                 where.length == 0 ? 1 : where.length);
   if (should_stop() && severity == Severity::Error) {
@@ -114,12 +95,12 @@ void DiagnosticEngine::note(SourceRange where, std::string_view message) {
 
 void DiagnosticEngine::file_error(std::string_view path, std::string_view message) {
   count(Severity::Error);
-  out_ << path << ": error: " << message << '\n';
+  out_ << path << ": error: " << text::printable_message(message) << '\n';
 }
 
 void DiagnosticEngine::plain_error(std::string_view message) {
   count(Severity::Error);
-  out_ << "oasisc: error: " << message << '\n';
+  out_ << "oasisc: error: " << text::printable_message(message) << '\n';
 }
 
 }  // namespace oasis

@@ -68,10 +68,7 @@ inline constexpr std::uint32_t kDefaultMaxStates = 20'000'000;
 // Diagnostics shown before a command stops (--max-errors).
 inline constexpr std::size_t kDefaultMaxErrors = 20;
 
-// The memory a command may allocate (--memory-budget): by default this fraction of the
-// machine's memory (the smaller of physical RAM and the control group's limit), so that one
-// oasisc never drives the machine into the kernel's OOM killer and reports instead
-// (support/memory_budget.hpp).
-inline constexpr unsigned kDefaultMemoryBudgetPercent = 75;
+// The memory a command may allocate (--memory-budget): tools/cli/memory_budget.hpp, shared by
+// the three programs.
 
 }  // namespace oasis::limits

@@ -4,11 +4,14 @@
 #include <string>
 #include <string_view>
 
+#include "cli/printable_text.hpp"
+
 namespace oasis {
 
-// 'name', as diagnostics quote names from the input.
+// 'name', as diagnostics quote names from the input: control bytes escaped, a long name cut
+// (tools/cli/printable_text.hpp).
 inline std::string quoted(std::string_view text) {
-  return "'" + std::string(text) + "'";
+  return "'" + text::printable_excerpt(text) + "'";
 }
 
 // `text` with `"` and `\` escaped, for the inside of a double-quoted string in C++ source or

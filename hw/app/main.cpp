@@ -3,11 +3,14 @@
 
 #include <iostream>
 #include <map>
+#include <new>
+#include <optional>
 
 #include <CLI/CLI.hpp>
 
 #include "app/commands.hpp"
 #include "cli/empty_values.hpp"
+#include "cli/memory_option.hpp"
 #include "settings/settings_error.hpp"
 
 int main(int argc, char** argv) {
@@ -34,6 +37,8 @@ int main(int argc, char** argv) {
   add(oasis::hw::app::add_score_command(app));
   add(oasis::hw::app::add_config_command(app));
   add(oasis::hw::app::add_sim_command(app));
+  std::string memory_budget = "auto";
+  oasis::cli::add_memory_budget_option(app, memory_budget);
   oasis::cli::refuse_empty_values(app);
 
   try {
@@ -42,9 +47,15 @@ int main(int argc, char** argv) {
     const int status = app.exit(e);
     return status == 0 ? 0 : 2;  // bad usage, distinct from 1 (an error in the input)
   }
+  const std::optional<std::uint64_t> budget =
+      oasis::cli::apply_memory_budget_option(app, memory_budget, "oasis-go1");
+  if (!budget) return 2;
   try {
     for (const CLI::App* command : app.get_subcommands())
       return runners.at(command)();
+  } catch (const std::bad_alloc&) {
+    // The robot was stopped on the way out (the loop's watchdog and the link's destructor).
+    oasis::cli::report_out_of_memory("oasis-go1", *budget);
   } catch (const std::exception& e) {
     std::cerr << "oasis-go1: error: " << e.what() << '\n';
   }

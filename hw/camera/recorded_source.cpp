@@ -1,5 +1,9 @@
 #include "camera/recorded_source.hpp"
 
+#include <array>
+#include <cstdint>
+#include <fstream>
+#include <optional>
 #include <string>
 #include <utility>
 #include <variant>
@@ -60,12 +64,40 @@ void require_frame_files(const fs::path& folder, std::size_t frame_count) {
                           " frames)");
 }
 
+// The width and height a PNG declares in its header (the IHDR chunk that must come first), or
+// nullopt when the file does not start as a PNG. Read before decoding: a file of a few
+// megabytes of compressed zeros can declare a frame of gigabytes, which cv::imread would
+// allocate before any check of ours could refuse it.
+std::optional<std::pair<std::uint32_t, std::uint32_t>> png_declared_size(const fs::path& file) {
+  static constexpr std::array<unsigned char, 16> kStart = {
+      0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n', 0, 0, 0, 13, 'I', 'H', 'D', 'R'};
+  std::array<unsigned char, 24> header{};
+  std::ifstream in(file, std::ios::binary);
+  in.read(reinterpret_cast<char*>(header.data()), header.size());
+  if (in.gcount() != static_cast<std::streamsize>(header.size())) return std::nullopt;
+  for (std::size_t i = 0; i < kStart.size(); ++i)
+    if (header[i] != kStart[i]) return std::nullopt;
+  const auto big_endian = [&header](std::size_t at) {
+    return (std::uint32_t{header[at]} << 24) | (std::uint32_t{header[at + 1]} << 16) |
+           (std::uint32_t{header[at + 2]} << 8) | std::uint32_t{header[at + 3]};
+  };
+  return std::make_pair(big_endian(16), big_endian(20));
+}
+
 // The image, or why it is not the one sequence.yaml promises.
 std::variant<cv::Mat, std::string> load_image(const fs::path& file, int type,
                                               const CameraIntrinsics& intrinsics) {
   std::error_code ignored;
   if (!fs::is_regular_file(file, ignored))
     return file.string() + " is missing (deleted during playback?)";
+  const auto declared = png_declared_size(file);
+  if (!declared) return file.string() + " is not a PNG image";
+  if (declared->first != static_cast<std::uint32_t>(intrinsics.width) ||
+      declared->second != static_cast<std::uint32_t>(intrinsics.height))
+    return file.string() + " declares " + std::to_string(declared->first) + "x" +
+           std::to_string(declared->second) + " pixels, but sequence.yaml promises " +
+           std::to_string(intrinsics.width) + "x" + std::to_string(intrinsics.height) +
+           " (not decoded)";
   cv::Mat image;
   try {
     image = cv::imread(file.string(), cv::IMREAD_UNCHANGED);  // no conversion: check the type

@@ -1,7 +1,10 @@
 #include "settings/settings_error.hpp"
 
 #include <algorithm>
+#include <string>
 #include <utility>
+
+#include "cli/printable_text.hpp"
 
 namespace oasis::hw::settings {
 
@@ -35,13 +38,18 @@ std::string format_diagnostic(const std::string& file, const Diagnostic& diagnos
     text += ":" + std::to_string(diagnostic.line) + ":" + std::to_string(diagnostic.column);
   text += ": error: ";
   if (!diagnostic.key.empty()) text += diagnostic.key + ": ";
-  text += diagnostic.message;
+  text += oasis::text::printable_message(diagnostic.message);
   if (diagnostic.line > 0 && !diagnostic.source_line.empty()) {
-    text += "\n  " + diagnostic.source_line + "\n  ";
+    // A window of a long line around the caret, control bytes replaced (a YAML line can be a
+    // megabyte long, or hold a NUL).
+    const auto column = static_cast<std::size_t>(std::max(diagnostic.column - 1, 0));
+    const oasis::text::SourceWindow window =
+        oasis::text::source_window(diagnostic.source_line, column);
+    const std::string prefix = window.cut_before ? "..." : "";
+    text += "\n  " + prefix + window.text + "\n  " + std::string(prefix.size(), ' ');
     // Tabs stay tabs so that the caret lines up however the terminal draws them.
-    const auto width = static_cast<std::size_t>(std::max(diagnostic.column - 1, 0));
-    for (std::size_t i = 0; i < width && i < diagnostic.source_line.size(); ++i)
-      text += diagnostic.source_line[i] == '\t' ? '\t' : ' ';
+    for (std::size_t i = 0; i < window.caret && i < window.text.size(); ++i)
+      text += window.text[i] == '\t' ? '\t' : ' ';
     text += '^';
   }
   return text;

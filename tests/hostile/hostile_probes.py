@@ -6,7 +6,15 @@ nor hung, and that nothing was written outside the scratch folder. Classes cover
   numbers   every number option of the three programs passes one rule
             (tools/cli/number_options.hpp): NaN, infinities, signs on counts, out of range;
   outputs   file names that would leave the output folder, folders that cannot be made;
-  claims    a fit whose fragment `oasisc check` would refuse; an empty log scored.
+  claims    a fit whose fragment `oasisc check` would refuse; an empty log scored; a continuous
+            catalog JSON whose stated cells overlap or are degenerate (verify must fail it);
+  resources every program's --memory-budget (a clear "out of memory" instead of the OOM
+            killer); a recording frame that declares gigabytes in its header;
+  reading   FIFOs and folders where files are expected; JSON that is no catalog; a 10 MB token
+            or YAML line and NUL bytes (messages stay a few lines, never raw exception text);
+  writing   a multi-file output (PRISM, one .aut per context) whose one file cannot be replaced.
+Every probe also asserts that the output holds no crash text (an exception's raw text, an
+assertion, "terminate called", a sanitizer report).
 Run by ctest (-L hostile):
 
     tests/hostile/hostile_probes.py --oasisc B/compiler/oasisc --oasis-sim B/tools/sim/oasis-sim \
@@ -14,6 +22,7 @@ Run by ctest (-L hostile):
 """
 
 import argparse
+import json
 import os
 import subprocess
 import sys
@@ -128,9 +137,187 @@ def other_probes(paths):
     yield [s, "nonsense"], 2, "A subcommand is required"
 
 
+BUDGETS_REFUSED = ["nan", "-1", "1e999", "0x10", "12Q", "101%", "0%", "1K", ""]
+
+
+def resource_probes(paths):
+    """Memory budgets on every program, and sizes declared beyond what a file holds."""
+    spec = os.path.join(paths.source_dir, "specs/discrete_tracking.oasis")
+    line = os.path.join(paths.source_dir, "tests/data/gaussian_line.oasis")
+    c, s, g = paths.oasisc, paths.oasis_sim, paths.oasis_go1
+    commands = [[c, "check", spec], [c, "compile", line, "-o", paths.scratch],
+                [c, "quotient", spec], [s, "table1", "--steps", "10"],
+                [g, "sim", "--trials", "1"], [g, "run", "--dry-run"], [g, "score", paths.empty_log],
+                [g, "config"]]
+    for command in commands:
+        for value in BUDGETS_REFUSED:
+            yield command + ["--memory-budget", value], 2, "--memory-budget"
+    # Past the budget: a clear message and status 1 (oasis-sim grew to 7 GB and aborted).
+    yield [s, "table1", "--seeds", "1", "--steps", "10000000", "--filters", "paper", "--noise",
+           "perceived", "--memory-budget", "64M"], 1, "out of memory"
+    yield [g, "sim", "--trials", "1", "--memory-budget", "16M"], 1, "memory budget"
+    yield [c, "compile", line, "-o", paths.scratch, "--epsilon", "0.001",
+           "--memory-budget", "16M"], 1, "out of memory"
+    # A PNG whose header declares 60000 x 60000 pixels in 33 bytes.
+    yield [g, "run", "--dry-run", "--fast", "--source", "recorded:" + paths.bomb_recording], 1, \
+        "declares 60000x60000"
+
+
+def reading_probes(paths):
+    """Input that is not what it claims: no catalog JSON, huge tokens and lines, NUL bytes."""
+    spec = os.path.join(paths.source_dir, "tests/data/deterministic_line.oasis")
+    c, g = paths.oasisc, paths.oasis_go1
+    for name in sorted(paths.not_catalogs):
+        yield [c, "verify", spec, paths.not_catalogs[name]], 1, "not a continuous catalog's JSON"
+    for name in sorted(paths.bad_cells):
+        yield [c, "verify", paths.bad_cells[name][0], paths.bad_cells[name][1]], 1, "FAILED"
+    yield [c, "check", paths.long_token_spec], 1, "(10000000 bytes)"
+    yield [c, "check", paths.nul_spec], 1, "NUL byte"
+    yield [g, "run", "--dry-run", "--config", paths.long_yaml], 1, "rate_hz"
+    yield [g, "run", "--dry-run", "--config", paths.nul_yaml], 1, paths.nul_yaml
+
+
+def writing_probes(paths):
+    """Multi-file outputs whose one file cannot be replaced: status 1, the old set kept."""
+    spec = os.path.join(paths.source_dir, "specs/discrete_tracking.oasis")
+    robot = os.path.join(paths.source_dir, "tests/data/formats/robot.tra")
+    c = paths.oasisc
+    yield [c, "export", robot, "--format", "prism", "-o", paths.prism_base], 1, ".srew"
+    yield [c, "quotient", spec, "--format", "aut", "-o", paths.quotient_base], 1, "directory"
+
+
 def probes(paths):
     yield from number_probes(paths)
     yield from other_probes(paths)
+    yield from resource_probes(paths)
+    yield from reading_probes(paths)
+    yield from writing_probes(paths)
+
+
+# Text that only a crash or a leak of internals prints.
+CRASH_TEXT = ["json.exception", "terminate called", "Assertion", "AddressSanitizer",
+              "runtime error:", "Segmentation fault", "internal error", "what():"]
+
+
+def write_bytes(path, data):
+    with open(path, "wb") as out:
+        out.write(data)
+
+
+def compile_json(paths, spec_name, model_name):
+    """Compiles tests/data/SPEC_NAME.oasis to JSON in the scratch folder; the document."""
+    spec = os.path.join(paths.source_dir, "tests/data", spec_name + ".oasis")
+    out = os.path.join(paths.root, "json_" + spec_name)
+    subprocess.run([paths.oasisc, "compile", spec, "-o", out, "--format", "json", "--progress",
+                    "never"], check=True, capture_output=True)
+    with open(os.path.join(out, model_name + ".json"), encoding="utf-8") as text:
+        return spec, json.load(text)
+
+
+def prepare_inputs(paths):
+    """The files the reading and writing probes use, made before the scratch listing."""
+    root = paths.root
+    paths.not_catalogs = {}
+    for name, text in [("array", b"[]"), ("object", b"{}"), ("empty", b""), ("null", b"null"),
+                       ("number", b"3"), ("open", b"{"), ("format_only", b'{"format": 2}'),
+                       ("string", b'"catalog"'), ("nul", b'{"format": 2\x00}')]:
+        paths.not_catalogs[name] = os.path.join(root, "not_" + name + ".json")
+        write_bytes(paths.not_catalogs[name], text)
+    line_spec, line_json = compile_json(paths, "deterministic_line", "deterministic_line")
+    tri_spec, tri_json = compile_json(paths, "triangle_reward", "triangle")
+    truncated = json.dumps(line_json).encode()
+    paths.not_catalogs["truncated"] = os.path.join(root, "not_truncated.json")
+    write_bytes(paths.not_catalogs["truncated"], truncated[:len(truncated) // 2])
+
+    def same_cell(document):
+        cells = document["abstractions"][0]["cells"]
+        cells[1]["A"], cells[1]["b"] = cells[0]["A"], cells[0]["b"]
+
+    def moved(document):
+        document["abstractions"][0]["cells"][0]["b"][0] = 1e6
+
+    def zero_rows(document):
+        cell = document["abstractions"][0]["cells"][0]
+        cell["A"] = [[0.0 for _ in row] for row in cell["A"]]
+
+    def dropped_row(document):
+        cell = document["abstractions"][0]["cells"][0]
+        del cell["A"][0]
+        del cell["b"][0]
+
+    def short_b(document):
+        del document["abstractions"][0]["cells"][0]["b"][0]
+
+    def no_rows(document):
+        document["abstractions"][0]["cells"][0]["A"] = []
+        document["abstractions"][0]["cells"][0]["b"] = []
+
+    paths.bad_cells = {}
+    for spec, document, label in [(line_spec, line_json, "grid"), (tri_spec, tri_json, "bsp")]:
+        for edit in [same_cell, moved, zero_rows, dropped_row, short_b, no_rows]:
+            if label == "bsp" and edit is dropped_row:
+                continue  # a dropped domain face leaves the same cell: covered by the unit test
+            edited = json.loads(json.dumps(document))
+            edit(edited)
+            name = f"{label}_{edit.__name__}"
+            path = os.path.join(root, "cells_" + name + ".json")
+            with open(path, "w", encoding="utf-8") as out:
+                json.dump(edited, out)
+            paths.bad_cells[name] = (spec, path)
+
+    paths.long_token_spec = os.path.join(root, "long_token.oasis")
+    write_bytes(paths.long_token_spec, b"mdp m {\n  states s0;\n  actions a; foo " +
+                b"x" * 10_000_000 + b"\n}\n")
+    paths.nul_spec = os.path.join(root, "nul.oasis")
+    write_bytes(paths.nul_spec, b"mdp m {\n  states s0, s1;\n  actions a\x00b;\n}\n")
+    paths.long_yaml = os.path.join(root, "long.yaml")
+    write_bytes(paths.long_yaml, b"loop:\n  rate_hz: " + b"x" * 1_000_000 + b"\n")
+    paths.nul_yaml = os.path.join(root, "nul.yaml")
+    write_bytes(paths.nul_yaml, b"loop:\n  rate_hz: ab\x00cd\n")
+
+    # A recording whose first colour frame declares 60000 x 60000 pixels.
+    paths.bomb_recording = os.path.join(root, "bomb_recording")
+    os.mkdir(paths.bomb_recording)
+    write_bytes(os.path.join(paths.bomb_recording, "sequence.yaml"),
+                b"frame_count: 1\nframe_period_s: 0.2\ndepth_scale_m_per_unit: 0.001\n"
+                b"intrinsics:\n  fx: 20\n  fy: 20\n  cx: 16\n  cy: 12\n  width: 32\n"
+                b"  height: 24\n")
+    header = (b"\x89PNG\r\n\x1a\n\x00\x00\x00\x0dIHDR" + (60000).to_bytes(4, "big") * 2 +
+              b"\x08\x02\x00\x00\x00")
+    write_bytes(os.path.join(paths.bomb_recording, "colour_000000.png"), header)
+    write_bytes(os.path.join(paths.bomb_recording, "depth_000000.png"), header)
+
+    # A PRISM set whose .srew is a directory, and one .aut per context of which one is.
+    paths.prism_base = os.path.join(root, "prism_set")
+    subprocess.run([paths.oasisc, "export",
+                    os.path.join(paths.source_dir, "specs/discrete_tracking.oasis"), "--context",
+                    "object_at_s1", "--format", "prism", "-o", paths.prism_base],
+                   check=True, capture_output=True)
+    os.remove(paths.prism_base + ".srew")
+    os.mkdir(paths.prism_base + ".srew")
+    quotients = os.path.join(root, "quotients")
+    os.mkdir(quotients)
+    paths.quotient_base = os.path.join(quotients, "q.aut")
+    subprocess.run([paths.oasisc, "quotient",
+                    os.path.join(paths.source_dir, "specs/discrete_tracking.oasis"), "--format",
+                    "aut", "-o", paths.quotient_base], check=True, capture_output=True)
+    victim = sorted(os.listdir(quotients))[-1]
+    os.remove(os.path.join(quotients, victim))
+    os.mkdir(os.path.join(quotients, victim))
+
+
+def snapshot(folder):
+    """Every file under `folder` with its bytes: what the probes must leave as it was."""
+    files = {}
+    for directory, _, names in os.walk(folder):
+        for name in names:
+            path = os.path.join(directory, name)
+            if os.path.isfile(path):
+                with open(path, "rb") as data:
+                    files[path] = data.read()
+            else:
+                files[path] = None
+    return files
 
 
 def main():
@@ -143,6 +330,7 @@ def main():
     failures = []
     count = 0
     with tempfile.TemporaryDirectory() as scratch:
+        paths.root = scratch
         paths.scratch = os.path.join(scratch, "out")
         paths.empty_log = os.path.join(scratch, "empty.jsonl")
         open(paths.empty_log, "w", encoding="utf-8").close()
@@ -152,7 +340,9 @@ def main():
         paths.folder = os.path.join(scratch, "a_folder")
         os.mkdir(paths.folder)
         os.mkdir(paths.folder + ".yaml")
+        prepare_inputs(paths)
         before = sorted(os.listdir(scratch))
+        inputs_before = snapshot(scratch)
         for arguments, expected, culprit in probes(paths):
             count += 1
             shown = " ".join(repr(a) if (not a or " " in a or not a.isprintable()) else a
@@ -169,11 +359,17 @@ def main():
                                 f"{output}")
             elif culprit not in output:
                 failures.append(f"{shown}: the message does not name {culprit}\n{output}")
+            elif any(text in output for text in CRASH_TEXT):
+                failures.append(f"{shown}: the output holds crash text\n{output[:600]}")
             elif len(output) > 2000 or max(len(l) for l in output.splitlines() or [""]) > 400:
                 failures.append(f"{shown}: the message is longer than a few lines\n{output[:600]}")
         after = sorted(os.listdir(scratch))
         if after != before:
             failures.append(f"refused commands left {sorted(set(after) - set(before))} behind")
+        changed = [path for path, data in snapshot(scratch).items()
+                   if inputs_before.get(path, b"") != data and not path.startswith(paths.scratch)]
+        if changed:
+            failures.append(f"refused commands changed {sorted(changed)[:5]}")
     for outside in ["/tmp/oasis-hostile-evil.cpp", "/tmp/oasis-hostile-evil.hpp"]:
         if os.path.exists(outside):
             failures.append(f"--basename wrote {outside}, outside the output folder")

@@ -2,9 +2,12 @@
 //   oasis-sim table1 [--spec FILE] [--seeds N] [--steps N] [--sigma S] [--noise R...]
 //                    [--filters F...] [--json PATH] [--csv-dir DIR] [--plot DIR]
 
+#include <cstdint>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <new>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -12,6 +15,7 @@
 #include <CLI/CLI.hpp>
 
 #include "cli/empty_values.hpp"
+#include "cli/memory_option.hpp"
 #include "cli/number_options.hpp"
 #include "model/explorer.hpp"
 #include "oasis/rt/spec_hash.hpp"
@@ -195,14 +199,23 @@ int main(int argc, char** argv) {
   command->add_option("--csv-dir", table1.csv_dir, "write per-trial CSV traces here");
   command->add_option("--plot", table1.plot_dir,
                       "write SVG plots (model (i), step/periodic/uniform_random, first 150 steps)");
+  std::string memory_budget = "auto";
+  oasis::cli::add_memory_budget_option(app, memory_budget);
   oasis::cli::refuse_empty_values(app);
-  int status = 0;
-  command->callback([&] { status = run_table1_command(table1); });
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
     const int exit_status = app.exit(e);  // --help and --version: 0
     return oasis::finish_standard_output("oasis-sim", exit_status == 0 ? 0 : 2);  // bad usage
+  }
+  const std::optional<std::uint64_t> budget =
+      oasis::cli::apply_memory_budget_option(app, memory_budget, "oasis-sim");
+  if (!budget) return oasis::finish_standard_output("oasis-sim", 2);
+  int status = 1;
+  try {
+    status = run_table1_command(table1);
+  } catch (const std::bad_alloc&) {
+    oasis::cli::report_out_of_memory("oasis-sim", *budget);
   }
   return oasis::finish_standard_output("oasis-sim", status);
 }

@@ -112,7 +112,21 @@ TEST(RecordedSource, ColourOfWrongSizeFailsNamingTheFile) {
   cv::imwrite((folder / "colour_000000.png").string(), cv::Mat(12, 16, CV_8UC3));
   EXPECT_EQ(first_frame_failure(folder.path()),
             (folder / "colour_000000.png").string() +
-                " is 16x12 8-bit colour, but sequence.yaml promises 32x24 8-bit colour");
+                " declares 16x12 pixels, but sequence.yaml promises 32x24 (not decoded)");
+}
+
+// A PNG header can declare a frame of gigabytes in a few bytes (and a few megabytes of
+// compressed zeros can fill it): the size is compared before anything is decoded (issue 28).
+TEST(RecordedSource, AHugeDeclaredFrameIsRefusedBeforeDecoding) {
+  const TemporaryFolder folder;
+  write_two_frames(folder);
+  std::string header("\x89PNG\r\n\x1a\n\0\0\0\x0dIHDR", 16);
+  header += std::string("\0\0\xea\x60\0\0\xea\x60", 8);  // 60000 x 60000
+  header += std::string("\x08\x02\0\0\0", 5);
+  write_text(folder / "colour_000000.png", header);
+  EXPECT_EQ(first_frame_failure(folder.path()),
+            (folder / "colour_000000.png").string() +
+                " declares 60000x60000 pixels, but sequence.yaml promises 32x24 (not decoded)");
 }
 
 TEST(RecordedSource, DepthOfWrongTypeFailsNamingTheFile) {
@@ -129,7 +143,7 @@ TEST(RecordedSource, UndecodableFrameFailsNamingTheFile) {
   write_two_frames(folder);
   write_text(folder / "colour_000000.png", "not a png");
   EXPECT_EQ(first_frame_failure(folder.path()),
-            "cannot read " + (folder / "colour_000000.png").string() + " as an image");
+            (folder / "colour_000000.png").string() + " is not a PNG image");
 }
 
 TEST(RecordedSource, FrameDeletedDuringPlaybackFailsNamingTheFile) {

@@ -1,8 +1,8 @@
 #pragma once
-// The memory budget of one oasisc command (--memory-budget): a bound on what the process may
-// allocate, so that a compile too large for the machine stops with "oasisc: error: out of
-// memory ..." and status 1 instead of being killed by the kernel's OOM killer (or dragging
-// the machine through swap first).
+// The memory budget of one command of oasisc, oasis-sim or oasis-go1 (--memory-budget): a bound
+// on what the process may allocate, so that a run too large for the machine stops with
+// "PROGRAM: error: out of memory ..." and status 1 instead of being killed by the kernel's OOM
+// killer (or dragging the machine through swap first). memory_option.hpp declares the option.
 //
 // The bound is the soft RLIMIT_DATA, which Linux (since 4.7) applies to the heap and to every
 // private writable mapping: what malloc, operator new and GMP obtain, thread stacks included,
@@ -32,7 +32,12 @@ namespace oasis {
 // neither can be read.
 [[nodiscard]] std::optional<std::uint64_t> available_memory_bytes();
 
-// A budget as the user writes it: "none"; "auto" (limits::kDefaultMemoryBudgetPercent of the
+// The budget when none is given: this share of the machine's memory (the smaller of physical RAM
+// and the control group's limit), so that no program of ours drives the machine into the OOM
+// killer.
+inline constexpr unsigned kDefaultMemoryBudgetPercent = 75;
+
+// A budget as the user writes it: "none"; "auto" (kDefaultMemoryBudgetPercent of the
 // available memory, none when that is unknown); "N%" of the available memory; or a size in
 // bytes with an optional binary unit ("512M", "4G", "4GiB", "1.5G", "65536"). Returns the
 // bytes, 0 for no budget, or nullopt with `error` set.

@@ -1,4 +1,4 @@
-#include "support/memory_budget.hpp"
+#include "cli/memory_budget.hpp"
 
 #include <algorithm>
 #include <array>
@@ -12,8 +12,6 @@
 
 #include <sys/resource.h>
 #include <unistd.h>
-
-#include "support/limits.hpp"
 
 // GCC defines __SANITIZE_ADDRESS__ / __SANITIZE_THREAD__; clang answers __has_feature.
 #if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
@@ -128,7 +126,7 @@ std::optional<std::uint64_t> parse_memory_budget(std::string_view text, std::str
   std::optional<std::uint64_t> bytes;
   const bool is_auto = text == "auto";
   if (is_auto || text.ends_with('%')) {
-    unsigned percent = limits::kDefaultMemoryBudgetPercent;
+    unsigned percent = kDefaultMemoryBudgetPercent;
     if (!is_auto) {
       const auto [end, code] = std::from_chars(text.data(), text.data() + text.size() - 1, percent);
       if (code != std::errc() || end != text.data() + text.size() - 1 || percent < 1 ||

@@ -1,0 +1,68 @@
+#include "cli/memory_option.hpp"
+
+#include <iostream>
+#include <vector>
+
+#include "cli/memory_budget.hpp"
+
+namespace oasis::cli {
+namespace {
+
+// The command that runs: the last parsed subcommand at each level.
+const CLI::App* leaf_command(const CLI::App& app) {
+  const CLI::App* command = &app;
+  while (!command->get_subcommands().empty())
+    command = command->get_subcommands().back();
+  return command;
+}
+
+}  // namespace
+
+void add_memory_budget_option(CLI::App& app, std::string& budget) {
+  const std::vector<CLI::App*> children = app.get_subcommands({});
+  if (!children.empty()) {
+    for (CLI::App* child : children)
+      add_memory_budget_option(*child, budget);
+    return;
+  }
+  std::string help =
+      "Stop with an error, instead of being killed, when the command would allocate more than "
+      "this: a size (512M, 4G), a percentage of the machine's memory (RAM, or the control "
+      "group's limit when smaller), auto (" +
+      std::to_string(kDefaultMemoryBudgetPercent) + "%) or none";
+  if (!memory_budget_enforceable())
+    help += " (not enforced in this sanitizer build, whose shadow memory a limit would refuse)";
+  app.add_option(kMemoryBudgetFlag, budget, help)->capture_default_str();
+}
+
+std::optional<std::uint64_t> apply_memory_budget_option(const CLI::App& app,
+                                                        const std::string& text,
+                                                        std::string_view program) {
+  const CLI::App* command = leaf_command(app);
+  const bool given = command->get_option_no_throw(kMemoryBudgetFlag) != nullptr &&
+                     command->count(kMemoryBudgetFlag) > 0;
+  if (!memory_budget_enforceable()) {
+    if (given)
+      std::cerr << program << ": warning: " << kMemoryBudgetFlag
+                << " is not enforced in this sanitizer build\n";
+    return 0;
+  }
+  std::string error;
+  const auto bytes = parse_memory_budget(text, error);
+  const auto in_force = bytes ? apply_memory_budget(*bytes, error) : std::nullopt;
+  if (!in_force) std::cerr << program << ": error: " << kMemoryBudgetFlag << ": " << error << '\n';
+  return in_force;
+}
+
+void report_out_of_memory(std::string_view program, std::uint64_t budget) {
+  if (budget == 0) {
+    std::cerr << program << ": error: out of memory\n";
+    return;
+  }
+  std::cerr << program
+            << ": error: out of memory: the command needs more than its memory budget of "
+            << describe_bytes(budget) << " (" << kMemoryBudgetFlag << "; the default is "
+            << kDefaultMemoryBudgetPercent << "% of the machine's memory)\n";
+}
+
+}  // namespace oasis::cli
