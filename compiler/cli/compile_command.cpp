@@ -28,6 +28,7 @@
 #include "support/atomic_file.hpp"
 #include "support/limits.hpp"
 #include "support/staged_directory.hpp"
+#include "support/text.hpp"
 
 namespace oasis::cli {
 namespace {
@@ -280,6 +281,12 @@ int run_compile(CompileOptions options) {
     build.abstraction.attention = !options.no_attention;
     build.jobs = options.jobs;
     std::mutex stderr_lock;
+    // Said at once, whatever --progress says: the stages after the partition can be long.
+    build.abstraction.warn = [&stderr_lock](const std::string& context,
+                                            const std::string& warning) {
+      const std::lock_guard lock(stderr_lock);
+      std::cerr << "oasisc: warning: context " << quoted(context) << ": " << warning << '\n';
+    };
     if (effective_load_options(options.common).progress) {
       build.abstraction.progress = [&stderr_lock](const std::string& context,
                                                   const std::string& done, double seconds) {

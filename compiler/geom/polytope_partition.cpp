@@ -67,7 +67,7 @@ class Refiner {
       const auto cell = static_cast<std::size_t>(top - worst.begin());
       if (!split_worst(cell)) return;  // cannot happen for a full-dimensional cell
       ++result_.error_splits;
-      report();
+      report(to_double(result_.epsilon));
       if (deterministic_actions_.empty()) {  // only the two halves changed
         worst[cell] = cell_bound(cell);
         worst.push_back(cell_bound(tree().num_cells() - 1));
@@ -82,8 +82,8 @@ class Refiner {
  private:
   BspTree& tree() { return result_.tree; }
   [[nodiscard]] bool budget_spent() const { return result_.tree.num_cells() >= options_.max_cells; }
-  void report() const {
-    if (options_.progress) options_.progress(result_.tree.num_cells());
+  void report(std::optional<double> worst_bound = std::nullopt) const {
+    if (options_.progress) options_.progress(result_.tree.num_cells(), worst_bound);
   }
 
   Rational cell_bound(std::size_t cell) {

@@ -27,8 +27,9 @@ namespace oasis::geom {
 struct PolytopePartitionOptions {
   Rational epsilon = Rational(1, 10);  // the error bound to reach
   std::size_t max_cells = 10'000;      // steps 2 and 3 stop at this many cells
-  // Called after every split of steps 2 and 3 with the number of cells (optional).
-  std::function<void(std::size_t cells)> progress = nullptr;
+  // Called after every split of steps 2 and 3 with the number of cells and, in step 3, the
+  // worst cell's bound before that split (optional).
+  std::function<void(std::size_t cells, std::optional<double> worst_bound)> progress = nullptr;
 };
 
 struct PolytopePartition {

@@ -32,6 +32,22 @@ std::string describe_partition(const ContinuousAbstraction& abstraction) {
   return text;
 }
 
+// "0.41", "1.2e-05": a bound in a message.
+std::string short_number(double value) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.3g", value);
+  return text;
+}
+
+// Why a context's partition stops above the target, said before the stages after it.
+std::string above_target(const ContinuousAbstraction& abstraction, std::size_t max_cells,
+                         double target) {
+  return "the cell budget of " + std::to_string(max_cells) + " cells stops the refinement at " +
+         std::to_string(abstraction.num_cells()) + " cells with a bound of " +
+         short_number(to_double(abstraction.epsilon)) + ", above the target " +
+         short_number(target) + "; raise --max-cells (or the spec's max_cells) to reach it";
+}
+
 }  // namespace
 
 namespace {
@@ -48,6 +64,9 @@ bool partition_by_grid(const geom::ContextGeometry& geometry, const model::Model
   result.epsilon = partition->epsilon;
   result.met = partition->met;
   result.grid = std::move(partition->grid);
+  if (!result.met && options.warn)
+    options.warn(result.context, above_target(result, options.max_cells.value_or(kDefaultGridCells),
+                                              options.epsilon));
   result.seconds.grid = seconds_since(start);
   mdp = geom::finite_mdp(geometry, result.grid, ir.actions, ir.objective);
   return true;
@@ -63,14 +82,27 @@ bool partition_by_polytopes(const geom::PolytopeGeometry& geometry, const model:
   geom::PolytopePartitionOptions target;
   target.epsilon = Rational(options.epsilon);
   target.max_cells = options.max_cells.value_or(kDefaultPolytopeCells);
-  if (options.progress) {
-    // Exact polytope work makes this the long stage: say how far it got every 100 cells.
+  if (options.progress || options.warn) {
+    // Exact polytope work makes this the long stage: say how far it got every 100 cells, and
+    // warn once, at half the budget, if the bound is still above the target.
     const Clock::time_point begun = start;
-    target.progress = [&options, &result, begun](std::size_t cells) {
-      if (cells % 100 != 0) return;
+    target.progress = [&options, &result, &target, begun, warned = false](
+                          std::size_t cells, std::optional<double> worst) mutable {
+      if (options.warn && !warned && worst && cells >= target.max_cells / 2 &&
+          *worst > to_double(target.epsilon)) {
+        warned = true;
+        options.warn(result.context, "half the cell budget (" + std::to_string(cells) + " of " +
+                                         std::to_string(target.max_cells) +
+                                         " cells) is spent and the worst cell's bound is " +
+                                         short_number(*worst) + ", the target " +
+                                         short_number(options.epsilon) +
+                                         ": the refinement may stop above it (--max-cells)");
+      }
+      if (!options.progress || cells % 100 != 0) return;
       const double seconds = std::chrono::duration<double>(Clock::now() - begun).count();
-      options.progress(result.context, "refining, " + std::to_string(cells) + " polytope cells",
-                       seconds);
+      std::string done = "refining, " + std::to_string(cells) + " polytope cells";
+      if (worst) done += ", worst bound " + short_number(*worst);
+      options.progress(result.context, done, seconds);
     };
   }
   auto partition = geom::partition_polytopes(geometry, target, error);
@@ -86,6 +118,8 @@ bool partition_by_polytopes(const geom::PolytopeGeometry& geometry, const model:
   result.met = finite.epsilon <= target.epsilon;
   mdp = std::move(finite.mdp);
   result.bsp = std::move(partition->tree);
+  if (!result.met && options.warn)
+    options.warn(result.context, above_target(result, target.max_cells, options.epsilon));
   return true;
 }
 

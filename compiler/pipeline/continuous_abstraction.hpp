@@ -34,6 +34,9 @@ struct ContinuousOptions {
   // Called as each stage of a context ends (from the thread abstracting it, so possibly
   // from several threads at once): the context, what was done, and its seconds.
   std::function<void(const std::string& context, const std::string& done, double seconds)> progress;
+  // Called (from the same threads) as soon as a context's refinement is known to stop above
+  // the error target, before the long stages after it: the context and why.
+  std::function<void(const std::string& context, const std::string& warning)> warn;
 };
 
 struct StageSeconds {
