@@ -9,6 +9,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "cli/printable_text.hpp"
 #include "log/log_error.hpp"
 #include "log/step_json.hpp"
 
@@ -43,7 +44,10 @@ std::optional<nlohmann::ordered_json> parse_json(std::string_view text, std::str
     // syntax error ..."; keep what follows the id, the column being the useful part.
     const std::string what = failure.what();
     const std::size_t after_id = what.find("] ");
-    error = "not valid JSON: " + (after_id == std::string::npos ? what : what.substr(after_id + 2));
+    // It may quote the line (a 10 MB number): escaped and cut.
+    error = "not valid JSON: " +
+            oasis::text::printable_excerpt(
+                after_id == std::string::npos ? what : what.substr(after_id + 2), 240);
     return std::nullopt;
   }
 }

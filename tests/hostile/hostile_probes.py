@@ -175,6 +175,11 @@ def reading_probes(paths):
     yield [c, "check", paths.nul_spec], 1, "NUL byte"
     yield [g, "run", "--dry-run", "--config", paths.long_yaml], 1, "rate_hz"
     yield [g, "run", "--dry-run", "--config", paths.nul_yaml], 1, paths.nul_yaml
+    yield [g, "score", paths.long_log], 1, "bytes)"
+    yield [g, "score", paths.nul_log], 1, paths.nul_log
+    yield [c, "check", paths.long_aut], 1, paths.long_aut
+    yield [c, "fit", "noise", os.path.join(paths.source_dir, "tests/data/fit/tracking.oasis"),
+           paths.long_csv], 1, "(10000000 bytes)"
 
 
 def writing_probes(paths):
@@ -272,6 +277,14 @@ def prepare_inputs(paths):
     write_bytes(paths.nul_spec, b"mdp m {\n  states s0, s1;\n  actions a\x00b;\n}\n")
     paths.long_yaml = os.path.join(root, "long.yaml")
     write_bytes(paths.long_yaml, b"loop:\n  rate_hz: " + b"x" * 1_000_000 + b"\n")
+    paths.long_log = os.path.join(root, "long.jsonl")
+    write_bytes(paths.long_log, b'{"step": ' + b"9" * 10_000_000 + b"}\n")
+    paths.nul_log = os.path.join(root, "nul.jsonl")
+    write_bytes(paths.nul_log, b'{"step": "a\x00b"}\n')
+    paths.long_aut = os.path.join(root, "long.aut")
+    write_bytes(paths.long_aut, b'des (0,1,2)\n(0,"' + b"a" * 10_000_000 + b'",1 x)\n')
+    paths.long_csv = os.path.join(root, "long.csv")
+    write_bytes(paths.long_csv, b"t,true_state,observed_state\n0," + b"s" * 10_000_000 + b",s1\n")
     paths.nul_yaml = os.path.join(root, "nul.yaml")
     write_bytes(paths.nul_yaml, b"loop:\n  rate_hz: ab\x00cd\n")
 

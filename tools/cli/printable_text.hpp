@@ -22,12 +22,13 @@ inline bool is_continuation_byte(char c) {
   return (static_cast<unsigned char>(c) & 0xC0U) == 0x80U;
 }
 
-// `text` with control bytes escaped (a NUL as \0, others as \xNN), cut after kMaxQuotedBytes
-// with "... (N bytes)".
-inline std::string printable_excerpt(std::string_view text) {
+// `text` with control bytes escaped (a NUL as \0, others as \xNN), cut after `max_bytes` with
+// "... (N bytes)".
+inline std::string printable_excerpt(std::string_view text,
+                                     std::size_t max_bytes = kMaxQuotedBytes) {
   static constexpr char kHex[] = "0123456789abcdef";
   std::string out;
-  std::size_t shown = text.size() > kMaxQuotedBytes ? kMaxQuotedBytes : text.size();
+  std::size_t shown = text.size() > max_bytes ? max_bytes : text.size();
   while (shown < text.size() && shown > 0 && is_continuation_byte(text[shown]))
     --shown;  // never half a UTF-8 character
   for (std::size_t i = 0; i < shown; ++i) {
