@@ -13,6 +13,7 @@
 
 #include <gtest/gtest.h>
 
+#include "../support/file_snapshot.hpp"
 #include "../support/run_oasisc.hpp"
 #include "../support/scratch_directory.hpp"
 
@@ -20,18 +21,8 @@ namespace oasis {
 namespace {
 
 namespace fs = std::filesystem;
-using Files = std::map<std::string, std::string>;  // name -> bytes
-
-Files snapshot(const fs::path& directory) {
-  Files files;
-  for (const auto& entry : fs::directory_iterator(directory)) {
-    if (!entry.is_regular_file()) continue;
-    std::ifstream in(entry.path(), std::ios::binary);
-    files[entry.path().filename().string()] = {std::istreambuf_iterator<char>(in),
-                                               std::istreambuf_iterator<char>()};
-  }
-  return files;
-}
+using test::Files;
+using test::snapshot;
 
 bool write_set(const fs::path& directory, const std::string& text, std::string& error) {
   AtomicFileSet set;

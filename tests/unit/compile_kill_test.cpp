@@ -20,24 +20,15 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include "../support/file_snapshot.hpp"
 #include "../support/scratch_directory.hpp"
 
 namespace oasis {
 namespace {
 
 namespace fs = std::filesystem;
-using Files = std::map<std::string, std::string>;  // name -> bytes
-
-Files snapshot(const fs::path& directory) {
-  Files files;
-  if (!fs::exists(directory)) return files;
-  for (const auto& entry : fs::directory_iterator(directory)) {
-    std::ifstream in(entry.path(), std::ios::binary);
-    files[entry.path().filename().string()] = {std::istreambuf_iterator<char>(in),
-                                               std::istreambuf_iterator<char>()};
-  }
-  return files;
-}
+using test::Files;
+using test::snapshot;
 
 // Starts `oasisc compile SPEC -o OUT ...` with stdout and stderr discarded.
 pid_t start_compile(const std::string& spec, const fs::path& out) {
@@ -74,20 +65,39 @@ std::vector<std::string> others(const fs::path& directory, const std::string& ke
   return names;
 }
 
+// The two reference sets the kill tests swap between (a small spec's and the Go1 spec's,
+// compiled into `folder`/old and `folder`/new), and how long the slow compile takes here (ASan
+// or not).
+struct References {
+  std::string old_spec = std::string(OASIS_SOURCE_DIR) + "/specs/discrete_tracking.oasis";
+  std::string new_spec = std::string(OASIS_SOURCE_DIR) + "/specs/go1_treat.oasis";
+  Files old_set;
+  Files new_set;
+  double full_seconds = 0;
+};
+
+References compile_references(const fs::path& folder) {
+  References references;
+  EXPECT_EQ(wait_for(start_compile(references.old_spec, folder / "old")), 0);
+  const auto begin = std::chrono::steady_clock::now();
+  EXPECT_EQ(wait_for(start_compile(references.new_spec, folder / "new")), 0);
+  references.full_seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
+  references.old_set = snapshot(folder / "old");
+  references.new_set = snapshot(folder / "new");
+  return references;
+}
+
 TEST(CompileKill, TheOutputDirectoryIsAlwaysOneWholeSet) {
   const test::ScratchDirectory scratch("oasis_compile_kill");
-  const std::string old_spec = std::string(OASIS_SOURCE_DIR) + "/specs/discrete_tracking.oasis";
-  const std::string new_spec = std::string(OASIS_SOURCE_DIR) + "/specs/go1_treat.oasis";
-  // The reference sets, and how long the slow compile takes here (ASan or not).
-  ASSERT_EQ(wait_for(start_compile(old_spec, scratch.path() / "old")), 0);
-  const auto begin = std::chrono::steady_clock::now();
-  ASSERT_EQ(wait_for(start_compile(new_spec, scratch.path() / "new")), 0);
-  const double full =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
-  const Files old_set = snapshot(scratch.path() / "old");
-  const Files new_set = snapshot(scratch.path() / "new");
-  ASSERT_FALSE(old_set.empty());
-  ASSERT_NE(old_set, new_set);
+  const References references = compile_references(scratch.path());
+  ASSERT_FALSE(references.old_set.empty());
+  ASSERT_NE(references.old_set, references.new_set);
+  const std::string& old_spec = references.old_spec;
+  const std::string& new_spec = references.new_spec;
+  const Files& old_set = references.old_set;
+  const Files& new_set = references.new_set;
+  const double full = references.full_seconds;
 
   const fs::path out = scratch.path() / "out";
   const unsigned seed = 20261124;
@@ -133,15 +143,14 @@ TEST(CompileKill, TheOutputDirectoryIsAlwaysOneWholeSet) {
 // the folder: its staging directory goes with it.
 TEST(CompileKill, SigtermAndSigintLeaveNothingBehind) {
   const test::ScratchDirectory scratch("oasis_compile_term");
-  const std::string old_spec = std::string(OASIS_SOURCE_DIR) + "/specs/discrete_tracking.oasis";
-  const std::string new_spec = std::string(OASIS_SOURCE_DIR) + "/specs/go1_treat.oasis";
-  ASSERT_EQ(wait_for(start_compile(old_spec, scratch.path() / "old")), 0);
-  const auto begin = std::chrono::steady_clock::now();
-  ASSERT_EQ(wait_for(start_compile(new_spec, scratch.path() / "new")), 0);
-  const double full =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
-  const Files old_set = snapshot(scratch.path() / "old");
-  const Files new_set = snapshot(scratch.path() / "new");
+  const References references = compile_references(scratch.path());
+  ASSERT_FALSE(references.old_set.empty());
+  ASSERT_NE(references.old_set, references.new_set);
+  const std::string& old_spec = references.old_spec;
+  const std::string& new_spec = references.new_spec;
+  const Files& old_set = references.old_set;
+  const Files& new_set = references.new_set;
+  const double full = references.full_seconds;
 
   const fs::path out = scratch.path() / "out";
   std::mt19937 random(20261126);
