@@ -4,7 +4,7 @@
 #include <ostream>
 #include <string>
 
-#include "cli/printable_text.hpp"
+#include "text/printable_text.hpp"
 
 namespace oasis {
 namespace {

@@ -4,12 +4,12 @@
 #include <string>
 #include <string_view>
 
-#include "cli/printable_text.hpp"
+#include "text/printable_text.hpp"
 
 namespace oasis {
 
 // 'name', as diagnostics quote names from the input: control bytes escaped, a long name cut
-// (tools/cli/printable_text.hpp).
+// (common/text/printable_text.hpp).
 inline std::string quoted(std::string_view text) {
   return "'" + text::printable_excerpt(text) + "'";
 }

@@ -1,6 +1,6 @@
 #include "log/log_error.hpp"
 
-#include "cli/printable_text.hpp"
+#include "text/printable_text.hpp"
 
 namespace oasis::hw::log {
 

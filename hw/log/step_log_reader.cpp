@@ -9,9 +9,9 @@
 
 #include <nlohmann/json.hpp>
 
-#include "cli/printable_text.hpp"
 #include "log/log_error.hpp"
 #include "log/step_json.hpp"
+#include "text/printable_text.hpp"
 
 namespace oasis::hw::log {
 namespace {

@@ -4,7 +4,7 @@
 #include <string>
 #include <utility>
 
-#include "cli/printable_text.hpp"
+#include "text/printable_text.hpp"
 
 namespace oasis::hw::settings {
 

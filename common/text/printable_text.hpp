@@ -1,6 +1,6 @@
 #pragma once
 // Input quoted in a message, made safe to print: the one rule of oasisc's diagnostics and of
-// oasis-go1's settings errors (issue 28). A message must stay a few lines whatever the input
+// oasis-go1's settings errors and step log reader (issue 28). A message must stay a few lines whatever the input
 // holds: control bytes (a NUL, an escape sequence) are escaped or replaced, so that nothing cuts
 // it short or moves the terminal's cursor, and long text (a 10 MB name on one line) is cut.
 // Header-only, C++17.
