@@ -152,15 +152,16 @@ def resource_probes(paths):
     for command in commands:
         for value in BUDGETS_REFUSED:
             yield command + ["--memory-budget", value], 2, "--memory-budget"
-    # Past the budget: a clear message and status 1 (oasis-sim grew to 7 GB and aborted).
+    # Past the budget: a clear message and status 1 (oasis-sim grew to 7 GB and aborted). A
+    # sanitizer build cannot enforce a budget (its shadow memory): these three are left out there.
+    if not paths.budget_enforced:
+        return
     yield [s, "table1", "--seeds", "1", "--steps", "10000000", "--filters", "paper", "--noise",
            "perceived", "--memory-budget", "64M"], 1, "out of memory"
     yield [g, "sim", "--trials", "1", "--memory-budget", "16M"], 1, "memory budget"
     yield [c, "compile", line, "-o", paths.scratch, "--epsilon", "0.001",
            "--memory-budget", "16M"], 1, "out of memory"
-    # A PNG whose header declares 60000 x 60000 pixels in 33 bytes.
-    yield [g, "run", "--dry-run", "--fast", "--source", "recorded:" + paths.bomb_recording], 1, \
-        "declares 60000x60000"
+
 
 
 def reading_probes(paths):
@@ -175,6 +176,9 @@ def reading_probes(paths):
     yield [c, "check", paths.nul_spec], 1, "NUL byte"
     yield [g, "run", "--dry-run", "--config", paths.long_yaml], 1, "rate_hz"
     yield [g, "run", "--dry-run", "--config", paths.nul_yaml], 1, paths.nul_yaml
+    # A PNG whose header declares 60000 x 60000 pixels in 33 bytes.
+    yield [g, "run", "--dry-run", "--fast", "--source", "recorded:" + paths.bomb_recording], 1, \
+        "declares 60000x60000"
     yield [g, "score", paths.long_log], 1, "bytes)"
     yield [g, "score", paths.nul_log], 1, paths.nul_log
     yield [c, "check", paths.long_aut], 1, paths.long_aut
@@ -354,6 +358,12 @@ def main():
         os.mkdir(paths.folder)
         os.mkdir(paths.folder + ".yaml")
         prepare_inputs(paths)
+        help_text = subprocess.run([paths.oasisc, "check", "--help"], capture_output=True,
+                                   check=False).stdout.decode("utf-8", "replace")
+        paths.budget_enforced = "not enforced in this sanitizer build" not in help_text
+        if not paths.budget_enforced:
+            print("a sanitizer build: the 3 probes that need an enforced --memory-budget are "
+                  "left out")
         before = sorted(os.listdir(scratch))
         inputs_before = snapshot(scratch)
         for arguments, expected, culprit in probes(paths):

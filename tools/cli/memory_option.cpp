@@ -41,14 +41,14 @@ std::optional<std::uint64_t> apply_memory_budget_option(const CLI::App& app,
   const CLI::App* command = leaf_command(app);
   const bool given = command->get_option_no_throw(kMemoryBudgetFlag) != nullptr &&
                      command->count(kMemoryBudgetFlag) > 0;
-  if (!memory_budget_enforceable()) {
+  std::string error;
+  const auto bytes = parse_memory_budget(text, error);  // a bad value is refused in every build
+  if (bytes && !memory_budget_enforceable()) {
     if (given)
       std::cerr << program << ": warning: " << kMemoryBudgetFlag
                 << " is not enforced in this sanitizer build\n";
     return 0;
   }
-  std::string error;
-  const auto bytes = parse_memory_budget(text, error);
   const auto in_force = bytes ? apply_memory_budget(*bytes, error) : std::nullopt;
   if (!in_force) std::cerr << program << ": error: " << kMemoryBudgetFlag << ": " << error << '\n';
   return in_force;
