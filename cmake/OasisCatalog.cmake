@@ -1,4 +1,4 @@
-# oasis_add_catalog(TARGET SPEC [BASENAME NAME])
+# oasis_add_catalog(TARGET SPEC [BASENAME NAME] [WITH_BINARY])
 #
 # Compiles SPEC with oasisc at build time (like protobuf_generate) into C++ tables and makes
 # TARGET a static library holding them, linked to the header-only runtime. A robot program
@@ -11,11 +11,15 @@
 # and then `#include "go1_treat_catalog.hpp"` and `go1_treat::catalog()`. The files are
 # generated in the build tree (never the source tree) and regenerated when the spec or
 # oasisc changes. BASENAME names the files (default: the spec's file name + "_catalog").
+# WITH_BINARY also writes the binary catalog from the same compile, as
+# ${CMAKE_CURRENT_BINARY_DIR}/TARGET.catalog/MODEL.bin (MODEL: the spec's `mdp` name, by
+# convention its file name), for a program that links the tables and also loads or ships the
+# file; one compile instead of two.
 #
 # In this repository the compiler is the `oasisc` target; in an installed package (find_package
 # (oasis)) it is the imported oasis::oasisc.
 function(oasis_add_catalog target spec)
-  cmake_parse_arguments(PARSE_ARGV 2 ARG "" "BASENAME" "")
+  cmake_parse_arguments(PARSE_ARGV 2 ARG "WITH_BINARY" "BASENAME" "")
   if(TARGET oasisc)
     set(compiler oasisc)
   elseif(TARGET oasis::oasisc)
@@ -33,14 +37,19 @@ function(oasis_add_catalog target spec)
   # A directory of its own: compile replaces it as a whole (support/staged_directory.hpp).
   set(out_dir "${CMAKE_CURRENT_BINARY_DIR}/${target}.catalog")
   set(outputs "${out_dir}/${ARG_BASENAME}.hpp" "${out_dir}/${ARG_BASENAME}.cpp")
+  set(formats cpp)
+  if(ARG_WITH_BINARY)
+    set(formats cpp,bin)
+    list(APPEND outputs "${out_dir}/${stem}.bin")
+  endif()
   add_custom_command(
     OUTPUT ${outputs}
-    COMMAND "$<TARGET_FILE:${compiler}>" compile "${spec_path}" -o "${out_dir}" --format cpp
+    COMMAND "$<TARGET_FILE:${compiler}>" compile "${spec_path}" -o "${out_dir}" --format ${formats}
             --basename "${ARG_BASENAME}" --progress never
     DEPENDS ${compiler} "${spec_path}"
     COMMENT "oasisc: compiling the catalog of ${spec}"
     VERBATIM)
-  add_library(${target} STATIC ${outputs})
+  add_library(${target} STATIC "${out_dir}/${ARG_BASENAME}.hpp" "${out_dir}/${ARG_BASENAME}.cpp")
   target_include_directories(${target} PUBLIC "${out_dir}")
   target_link_libraries(${target} PUBLIC oasis::runtime)
   target_compile_features(${target} PUBLIC cxx_std_17)
