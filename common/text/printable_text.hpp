@@ -1,9 +1,9 @@
 #pragma once
 // Input quoted in a message, made safe to print: the one rule of oasisc's diagnostics and of
-// oasis-go1's settings errors and step log reader (issue 28). A message must stay a few lines whatever the input
-// holds: control bytes (a NUL, an escape sequence) are escaped or replaced, so that nothing cuts
-// it short or moves the terminal's cursor, and long text (a 10 MB name on one line) is cut.
-// Header-only, C++17.
+// oasis-go1's settings errors and step log reader (issue 28). A message must stay a few lines
+// whatever the input holds: control bytes (a NUL, an escape sequence) are escaped or replaced, so
+// that nothing cuts it short or moves the terminal's cursor, and long text (a 10 MB name on one
+// line) is cut. Header-only, C++17.
 
 #include <cstddef>
 #include <string>
@@ -67,6 +67,7 @@ struct SourceWindow {
 };
 
 inline SourceWindow source_window(std::string_view line, std::size_t caret) {
+  if (caret > line.size()) caret = line.size();  // a column past the end: the caret at the end
   std::size_t start = 0;
   std::size_t end = line.size();
   if (line.size() > kMaxShownColumns) {

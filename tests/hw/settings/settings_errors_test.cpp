@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include "settings/settings.hpp"
+#include "settings/settings_error.hpp"
 
 namespace oasis::hw::settings {
 namespace {
@@ -186,6 +187,24 @@ TEST(SettingsErrors, EveryProblemIsReportedInFileOrderWithItsSourceLine) {
     EXPECT_EQ(e.diagnostics()[0].column, 9);
     EXPECT_EQ(e.diagnostics()[0].key, "robot.port");
   }
+}
+
+}  // namespace
+}  // namespace oasis::hw::settings
+
+namespace oasis::hw::settings {
+namespace {
+
+// A column past the end of its line (yaml-cpp's mark after a NUL cut the line) puts the caret just
+// past the line's end: it used to throw std::out_of_range out of the error's own formatting
+// (found by the scenario fuzz target, tests/fuzz/corpus/scenario/caret_past_the_line_end).
+TEST(SettingsErrors, AColumnPastTheLineEndPutsTheCaretAfterIt) {
+  const Diagnostic diagnostic{3, 40, "loop.rate_hz", "expected a number", "  rate_hz: ab"};
+  const std::string text = format_diagnostic("go1.yaml", diagnostic);
+  EXPECT_EQ(text,
+            "go1.yaml:3:40: error: loop.rate_hz: expected a number\n"
+            "    rate_hz: ab\n"
+            "               ^");  // just past the line's last character
 }
 
 }  // namespace
