@@ -18,27 +18,13 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include "support/path_text.hpp"
+
 namespace oasis {
 namespace {
 
 // The kernel's own limit on symbolic links followed in one lookup (ELOOP past it).
 constexpr int kMaxLinksFollowed = 40;
-
-// strerror() capitalises; our messages are lower-case fragments.
-std::string reason_of(int code) {
-  std::string text = std::strerror(code);
-  if (!text.empty() && text[0] >= 'A' && text[0] <= 'Z') {
-    text[0] = static_cast<char>(text[0] - 'A' + 'a');
-  }
-  return text;
-}
-
-std::string directory_of(const std::string& path) {
-  const std::size_t slash = path.rfind('/');
-  if (slash == std::string::npos) return ".";
-  if (slash == 0) return "/";
-  return path.substr(0, slash);
-}
 
 std::string base_name_of(const std::string& path) {
   const std::size_t slash = path.rfind('/');

@@ -12,6 +12,7 @@
 #include <unistd.h>
 
 #include "support/atomic_file.hpp"
+#include "support/path_text.hpp"
 
 namespace oasis {
 namespace {
@@ -20,12 +21,6 @@ namespace fs = std::filesystem;
 
 // The kernel's own limit on symbolic links followed in one lookup (ELOOP past it).
 constexpr int kMaxLinksFollowed = 40;
-
-std::string reason_of(int code) {
-  std::string text = std::strerror(code);
-  if (!text.empty() && text[0] >= 'A' && text[0] <= 'Z') text[0] = static_cast<char>(text[0] + 32);
-  return text;
-}
 
 std::string staging_prefix(const fs::path& target) {
   return "." + target.filename().string() + ".oasisc-staging.";
