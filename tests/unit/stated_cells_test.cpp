@@ -22,6 +22,13 @@ namespace {
 
 using Edit = std::function<void(nlohmann::json&)>;
 
+// Two cells given the same A and b: cell 1 claims cell 0's part of the domain.
+void cell_one_copies_cell_zero(nlohmann::json& document) {
+  auto& cells = document["abstractions"][0]["cells"];
+  cells[1]["A"] = cells[0]["A"];
+  cells[1]["b"] = cells[0]["b"];
+}
+
 struct Compiled {
   std::string spec;
   nlohmann::json document;
@@ -66,14 +73,7 @@ TEST(StatedCells, GridCellsThatOverlapOrAreDegenerateAreCaught) {
 
   ASSERT_GE(compiled.document.at("abstractions").at(0).at("cells").size(), 2U);
   // Two cells given the same A and b: cell 1 now claims cell 0's interval.
-  expect_caught(
-      scratch, compiled,
-      [](nlohmann::json& j) {
-        auto& c = j["abstractions"][0]["cells"];
-        c[1]["A"] = c[0]["A"];
-        c[1]["b"] = c[0]["b"];
-      },
-      "cell 1 states");
+  expect_caught(scratch, compiled, cell_one_copies_cell_zero, "cell 1 states");
   // A cell moved over its neighbours: its upper bound pushed to the domain's end.
   expect_caught(
       scratch, compiled, [](nlohmann::json& j) { j["abstractions"][0]["cells"][0]["b"][0] = 1e6; },
@@ -109,14 +109,7 @@ TEST(StatedCells, PolytopeCellsThatOverlapAreCaught) {
       << untouched.output;
 
   // Two cells given the same A and b.
-  expect_caught(
-      scratch, compiled,
-      [](nlohmann::json& j) {
-        auto& c = j["abstractions"][0]["cells"];
-        c[1]["A"] = c[0]["A"];
-        c[1]["b"] = c[0]["b"];
-      },
-      "cell 1 states");
+  expect_caught(scratch, compiled, cell_one_copies_cell_zero, "cell 1 states");
   // A face between two cells dropped (not one of the domain's [0, 2] x [0, 2]): the stated
   // polygon grows over the neighbour.
   bool dropped_one = false;
