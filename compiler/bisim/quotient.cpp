@@ -6,18 +6,18 @@
 namespace oasis::bisim {
 
 model::ExplicitModel build_quotient(const model::ExplicitModel& model, std::size_t context,
-                                    const Partition& partition) {
+                                    const model::Partition& partition) {
   const model::Context& source = model.contexts[context];
   const model::TransitionMatrix& matrix = *source.transitions;
   const std::uint32_t num_actions = model.num_actions();
-  const BlockIndex num_blocks = partition.num_blocks;
+  const model::BlockIndex num_blocks = partition.num_blocks;
 
   model::ExplicitModel quotient;
   quotient.name = model.name;
   quotient.actions = model.actions;
   quotient.objective = model.objective;
   quotient.states.size = num_blocks;
-  for (BlockIndex z = 0; z < num_blocks; ++z)
+  for (model::BlockIndex z = 0; z < num_blocks; ++z)
     quotient.states.names.push_back("z" + std::to_string(z));
   for (model::StateIndex s : model.states.initial)
     quotient.states.initial.push_back(partition.block_of[s]);
@@ -36,7 +36,7 @@ model::ExplicitModel build_quotient(const model::ExplicitModel& model, std::size
   model::RewardTable rewards;
   rewards.state.resize(num_blocks);
   if (!source.rewards.choice.empty()) rewards.choice.resize(std::size_t{num_blocks} * num_actions);
-  for (BlockIndex z = 0; z < num_blocks; ++z) {
+  for (model::BlockIndex z = 0; z < num_blocks; ++z) {
     const model::StateIndex r = representative[z];
     rewards.state[z] = quotient.values.intern(model.values[source.rewards.state[r]]);
     for (model::ActionIndex a = 0; a < num_actions; ++a) {

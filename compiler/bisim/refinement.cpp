@@ -110,7 +110,7 @@ class Refiner {
     std::vector<BlockIndex> block_of(num_states_);
     for (StateIndex s = 0; s < num_states_; ++s)
       block_of[s] = state_scratch_[s].block;
-    return canonical_partition(block_of);
+    return model::canonical_partition(block_of);
   }
 
  private:

@@ -10,10 +10,15 @@
 #include <functional>
 #include <optional>
 
-#include "bisim/partition.hpp"
+#include "model/partition.hpp"
 #include "model/explicit_model.hpp"
 
 namespace oasis::bisim {
+
+// The partition is a model-level value (model/partition.hpp): bisimulation makes it, the
+// quotient, the policy layer and the verifier read it.
+using model::BlockIndex;
+using model::Partition;
 
 struct RefinementProgress {
   std::uint64_t splitters_processed = 0;

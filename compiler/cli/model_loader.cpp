@@ -6,7 +6,7 @@
 #include "formats/model_file.hpp"
 #include "model/explorer.hpp"
 #include "policy/solvability.hpp"
-#include "spec/frontend.hpp"
+#include "frontend/load_spec.hpp"
 
 namespace oasis::cli {
 namespace {
@@ -35,7 +35,7 @@ std::optional<LoadedModel> load_model(const std::string& path, SourceManager& so
     }
     return loaded;
   }
-  loaded.ir = spec::load_spec(
+  loaded.ir = frontend::load_spec(
       path, sources, diagnostics,
       {.max_bytes = options.max_spec_bytes, .max_number_bits = options.max_number_bits});
   if (!loaded.ir) return std::nullopt;

@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-#include "spec/affine.hpp"
+#include "model/affine.hpp"
 #include "support/text.hpp"
 
 namespace oasis::geom {
@@ -18,7 +18,7 @@ int axis_of(const Relevance& relevance, std::uint32_t v) {
 bool reward_box(const model::ModelIR& ir, const model::Reward& reward, const Relevance& relevance,
                 const std::vector<Interval>& domain, RewardBox& out, std::string& error) {
   const auto constraints =
-      spec::polyhedral_constraints(reward.guard, ir.continuous.size(), ir.regions);
+      model::polyhedral_constraints(reward.guard, ir.continuous.size(), ir.regions);
   if (!constraints || !reward.value.is_constant()) {
     error = "a reward is not a constant on a polyhedral condition";
     return false;

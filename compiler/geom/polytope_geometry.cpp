@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-#include "spec/affine.hpp"
+#include "model/affine.hpp"
 #include "support/text.hpp"
 
 namespace oasis::geom {
@@ -11,7 +11,7 @@ namespace {
 bool reward_region(const model::ModelIR& ir, const model::Reward& reward,
                    const PolytopeGeometry& geometry, PolytopeReward& out, std::string& error) {
   const auto constraints =
-      spec::polyhedral_constraints(reward.guard, ir.continuous.size(), ir.regions);
+      model::polyhedral_constraints(reward.guard, ir.continuous.size(), ir.regions);
   if (!constraints || !reward.value.is_constant()) {
     error = "a reward is not a constant on a polyhedral condition";
     return false;

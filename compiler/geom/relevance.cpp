@@ -2,7 +2,7 @@
 
 #include <deque>
 
-#include "spec/affine.hpp"
+#include "model/affine.hpp"
 #include "support/text.hpp"
 
 namespace oasis::geom {
@@ -12,7 +12,7 @@ namespace {
 // Returns false when the condition is not polyhedral, which the front end normally refuses.
 bool read_by_condition(const model::ModelIR& ir, const model::Expression& guard,
                        std::vector<bool>& read) {
-  const auto constraints = spec::polyhedral_constraints(guard, ir.continuous.size(), ir.regions);
+  const auto constraints = model::polyhedral_constraints(guard, ir.continuous.size(), ir.regions);
   if (!constraints) return false;
   for (const model::LinearConstraint& constraint : *constraints) {
     for (std::size_t v = 0; v < constraint.coefficients.size(); ++v)

@@ -57,7 +57,7 @@ std::vector<double> evaluate(const model::ExplicitModel& model, std::size_t cont
 }
 
 std::vector<model::ActionIndex> lift(const std::vector<model::ActionIndex>& abstract_policy,
-                                     const bisim::Partition& partition) {
+                                     const model::Partition& partition) {
   if (abstract_policy.size() != partition.num_blocks) {
     throw std::invalid_argument("the abstract policy has " +
                                 std::to_string(abstract_policy.size()) + " actions for " +

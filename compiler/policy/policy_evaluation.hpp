@@ -5,7 +5,7 @@
 #include <cstddef>
 #include <vector>
 
-#include "bisim/partition.hpp"
+#include "model/partition.hpp"
 #include "model/explicit_model.hpp"
 #include "policy/objective.hpp"
 
@@ -26,6 +26,6 @@ std::vector<double> evaluate(const model::ExplicitModel& model, std::size_t cont
 // full model. When the partition is a bisimulation, members of a block enable the same actions
 // and the lifted policy has, at every state, the value the quotient policy has at its block.
 std::vector<model::ActionIndex> lift(const std::vector<model::ActionIndex>& abstract_policy,
-                                     const bisim::Partition& partition);
+                                     const model::Partition& partition);
 
 }  // namespace oasis::policy

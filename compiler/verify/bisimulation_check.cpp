@@ -15,10 +15,10 @@ using model::StateIndex;
 struct Pair {
   StateIndex first;  // the block's first member
   StateIndex other;
-  bisim::BlockIndex block;
+  model::BlockIndex block;
 };
 
-Violation pair_violation(const model::ExplicitModel& model, const bisim::Partition& partition,
+Violation pair_violation(const model::ExplicitModel& model, const model::Partition& partition,
                          ViolationKind kind, const Pair& pair, std::optional<ActionIndex> action) {
   Violation violation;
   violation.kind = kind;
@@ -32,8 +32,8 @@ Violation pair_violation(const model::ExplicitModel& model, const bisim::Partiti
 }
 
 // P(block | s, a) from s's sorted (block, probability) list: 0 when the block is absent.
-Rational probability_of(const std::vector<std::pair<bisim::BlockIndex, Rational>>& distribution,
-                        bisim::BlockIndex block) {
+Rational probability_of(const std::vector<std::pair<model::BlockIndex, Rational>>& distribution,
+                        model::BlockIndex block) {
   for (const auto& [b, p] : distribution) {
     if (b == block) return p;
   }
@@ -44,7 +44,7 @@ Rational probability_of(const std::vector<std::pair<bisim::BlockIndex, Rational>
 // being in s, must agree instead.
 std::optional<Violation> deadlock_reward_violation(const model::ExplicitModel& model,
                                                    std::size_t context,
-                                                   const bisim::Partition& partition,
+                                                   const model::Partition& partition,
                                                    const Pair& pair) {
   const model::TransitionMatrix& matrix = *model.contexts[context].transitions;
   for (ActionIndex a = 0; a < model.num_actions(); ++a) {
@@ -64,13 +64,13 @@ std::optional<Violation> deadlock_reward_violation(const model::ExplicitModel& m
 }  // namespace
 
 VerificationResult check_bisimulation(const model::ExplicitModel& model, std::size_t context,
-                                      const bisim::Partition& partition) {
+                                      const model::Partition& partition) {
   const model::TransitionMatrix& matrix = *model.contexts[context].transitions;
   const std::vector<std::vector<StateIndex>> blocks = partition.blocks();
   const ActionIndex k = model.num_actions();
 
   // Enabled actions and rewards: local to each state, so checked first.
-  for (bisim::BlockIndex b = 0; b < blocks.size(); ++b) {
+  for (model::BlockIndex b = 0; b < blocks.size(); ++b) {
     const StateIndex r = blocks[b].front();
     for (std::size_t i = 1; i < blocks[b].size(); ++i) {
       const Pair pair{r, blocks[b][i], b};
@@ -101,7 +101,7 @@ VerificationResult check_bisimulation(const model::ExplicitModel& model, std::si
   }
 
   // Probabilities of reaching each block, compared as sorted (block, probability) lists.
-  for (bisim::BlockIndex b = 0; b < blocks.size(); ++b) {
+  for (model::BlockIndex b = 0; b < blocks.size(); ++b) {
     if (blocks[b].size() < 2) continue;
     const StateIndex r = blocks[b].front();
     for (ActionIndex a = 0; a < k; ++a) {
@@ -115,7 +115,7 @@ VerificationResult check_bisimulation(const model::ExplicitModel& model, std::si
         std::size_t x = 0;
         while (x < expected.size() && x < actual.size() && expected[x] == actual[x])
           ++x;
-        bisim::BlockIndex target = 0;
+        model::BlockIndex target = 0;
         if (x == expected.size()) {
           target = actual[x].first;
         } else if (x == actual.size()) {

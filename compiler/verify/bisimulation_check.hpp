@@ -5,7 +5,7 @@
 
 #include <cstddef>
 
-#include "bisim/partition.hpp"
+#include "model/partition.hpp"
 #include "model/explicit_model.hpp"
 #include "verify/violation.hpp"
 
@@ -21,6 +21,6 @@ namespace oasis::verify {
 // violation reported is the most basic one. `partition` must have a valid shape
 // (check_partition_shape).
 VerificationResult check_bisimulation(const model::ExplicitModel& model, std::size_t context,
-                                      const bisim::Partition& partition);
+                                      const model::Partition& partition);
 
 }  // namespace oasis::verify

@@ -4,15 +4,15 @@
 #include <utility>
 #include <vector>
 
-#include "bisim/partition.hpp"
+#include "model/partition.hpp"
 #include "model/explicit_model.hpp"
 
 namespace oasis::verify {
 
 // (block, exact probability) pairs sorted by block, one per block reached with positive
 // probability; empty when a is not enabled in s. `block_of` maps states to any block numbers.
-std::vector<std::pair<bisim::BlockIndex, Rational>> block_distribution(
+std::vector<std::pair<model::BlockIndex, Rational>> block_distribution(
     const model::ExplicitModel& model, std::size_t context,
-    const std::vector<bisim::BlockIndex>& block_of, model::StateIndex s, model::ActionIndex a);
+    const std::vector<model::BlockIndex>& block_of, model::StateIndex s, model::ActionIndex a);
 
 }  // namespace oasis::verify

@@ -301,7 +301,7 @@ std::optional<Failure> check_policy(const model::ExplicitModel& model, std::size
 CatalogCheck check_abstraction(const model::ExplicitModel& model, std::size_t context,
                                const rt::AbstractionView& abs) {
   CatalogCheck check{"context " + model.contexts[context].name, "", false};
-  bisim::Partition partition;
+  model::Partition partition;
   partition.block_of.assign(abs.block_of, abs.block_of + model.num_states());
   partition.num_blocks = abs.num_blocks;
   const VerificationResult verdict = verify_partition(model, context, partition);

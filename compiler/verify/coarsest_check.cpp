@@ -18,14 +18,14 @@ using model::StateIndex;
 struct QuotientChoice {
   ActionIndex action = 0;
   ValueId reward = 0;
-  std::vector<std::pair<bisim::BlockIndex, ValueId>> distribution;
+  std::vector<std::pair<model::BlockIndex, ValueId>> distribution;
 };
 
 // The quotient: block b behaves as its first member does (all members agree, since the
 // partition is a bisimulation).
 std::vector<std::vector<QuotientChoice>> build_quotient(const model::ExplicitModel& model,
                                                         std::size_t context,
-                                                        const bisim::Partition& partition,
+                                                        const model::Partition& partition,
                                                         RationalPool& pool) {
   const model::TransitionMatrix& matrix = *model.contexts[context].transitions;
   std::vector<std::optional<StateIndex>> first_member(partition.num_blocks);
@@ -33,7 +33,7 @@ std::vector<std::vector<QuotientChoice>> build_quotient(const model::ExplicitMod
     if (!first_member[partition.block_of[s]]) first_member[partition.block_of[s]] = s;
   }
   std::vector<std::vector<QuotientChoice>> quotient(partition.num_blocks);
-  for (bisim::BlockIndex b = 0; b < partition.num_blocks; ++b) {
+  for (model::BlockIndex b = 0; b < partition.num_blocks; ++b) {
     const StateIndex r = *first_member[b];
     for (ActionIndex a = 0; a < model.num_actions(); ++a) {
       if (!matrix.enabled(r, a)) continue;
@@ -126,7 +126,7 @@ std::size_t refine(const std::vector<std::vector<QuotientChoice>>& quotient, Poo
 }  // namespace
 
 VerificationResult check_coarsest(const model::ExplicitModel& model, std::size_t context,
-                                  const bisim::Partition& partition) {
+                                  const model::Partition& partition) {
   RationalPool pool;
   const auto quotient = build_quotient(model, context, partition, pool);
   PooledSums sums(pool);
@@ -143,8 +143,8 @@ VerificationResult check_coarsest(const model::ExplicitModel& model, std::size_t
   if (num_classes == n) return {};
 
   // The first block that shares its class with an earlier one.
-  std::vector<std::optional<bisim::BlockIndex>> first_of_class(num_classes);
-  for (bisim::BlockIndex b = 0; b < n; ++b) {
+  std::vector<std::optional<model::BlockIndex>> first_of_class(num_classes);
+  for (model::BlockIndex b = 0; b < n; ++b) {
     auto& first = first_of_class[class_of[b]];
     if (!first) {
       first = b;

@@ -3,7 +3,7 @@
 
 #include <cstddef>
 
-#include "bisim/partition.hpp"
+#include "model/partition.hpp"
 #include "model/explicit_model.hpp"
 #include "verify/violation.hpp"
 
@@ -17,6 +17,6 @@ namespace oasis::verify {
 // coarsest bisimulation of the model is that of the quotient pulled back to the states.
 // Quadratic in the number of blocks in the worst case (a chain); simple on purpose.
 VerificationResult check_coarsest(const model::ExplicitModel& model, std::size_t context,
-                                  const bisim::Partition& partition);
+                                  const model::Partition& partition);
 
 }  // namespace oasis::verify

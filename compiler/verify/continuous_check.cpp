@@ -6,7 +6,7 @@
 #include <random>
 
 #include "oasis/rt/grid_locator.hpp"
-#include "spec/affine.hpp"
+#include "verify/guard_reading.hpp"
 #include "verify/number_text.hpp"
 #include "verify/policy_check.hpp"
 #include "verify/polytope_cells_check.hpp"
@@ -22,7 +22,7 @@ std::vector<std::uint32_t> relevant_variables(const model::ModelIR& ir, std::siz
   const std::size_t n = ir.continuous.size();
   std::vector<bool> relevant(n, false);
   for (const model::Reward& reward : ir.contexts[context].rewards) {
-    const auto constraints = spec::polyhedral_constraints(reward.guard, n, ir.regions);
+    const auto constraints = guard_constraints(reward.guard, n, ir.regions);
     for (const model::LinearConstraint& constraint :
          constraints.value_or(std::vector<model::LinearConstraint>{}))
       for (std::size_t v = 0; v < n; ++v)
@@ -70,7 +70,7 @@ Box cell_box(const rt::GridView& grid, std::uint64_t cell) {
 std::optional<bool> condition_on(const model::ModelIR& ir, const model::Reward& reward,
                                  const rt::GridView& grid, const Box& box) {
   const auto constraints =
-      spec::polyhedral_constraints(reward.guard, ir.continuous.size(), ir.regions);
+      guard_constraints(reward.guard, ir.continuous.size(), ir.regions);
   if (!constraints) return std::nullopt;
   bool all = true;
   for (const model::LinearConstraint& constraint : *constraints) {

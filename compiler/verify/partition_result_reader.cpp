@@ -12,7 +12,7 @@ namespace {
 
 using nlohmann::json;
 
-constexpr bisim::BlockIndex kUnassigned = std::numeric_limits<bisim::BlockIndex>::max();
+constexpr model::BlockIndex kUnassigned = std::numeric_limits<model::BlockIndex>::max();
 
 // Thrown by the checks below and caught once in read_partition_result, so that each check
 // is a line rather than a chain of early returns.
@@ -78,9 +78,9 @@ class Reader {
            std::to_string(blocks.size()) + " blocks");
     }
 
-    bisim::Partition& partition = result.partition;
+    model::Partition& partition = result.partition;
     partition.block_of.assign(model_.num_states(), kUnassigned);
-    partition.num_blocks = static_cast<bisim::BlockIndex>(blocks.size());
+    partition.num_blocks = static_cast<model::BlockIndex>(blocks.size());
     for (std::size_t b = 0; b < blocks.size(); ++b) {
       const std::string block = context + ": block " + std::to_string(b);
       if (!blocks[b].is_array()) fail(block + " is not an array of states");
@@ -91,7 +91,7 @@ class Reader {
           fail(context + ": state " + model_.states.name(s) + " is in block " +
                std::to_string(partition.block_of[s]) + " and in block " + std::to_string(b));
         }
-        partition.block_of[s] = static_cast<bisim::BlockIndex>(b);
+        partition.block_of[s] = static_cast<model::BlockIndex>(b);
       }
     }
     for (model::StateIndex s = 0; s < model_.num_states(); ++s) {

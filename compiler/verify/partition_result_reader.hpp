@@ -10,7 +10,7 @@
 #include <string_view>
 #include <vector>
 
-#include "bisim/partition.hpp"
+#include "model/partition.hpp"
 #include "model/explicit_model.hpp"
 
 namespace oasis::verify {
@@ -19,7 +19,7 @@ struct ContextPartition {
   std::size_t context = 0;  // index in model.contexts
   // Blocks numbered from 0 in the order the file lists them (not renumbered), so that
   // messages about "block 2" point at the file's third block.
-  bisim::Partition partition;
+  model::Partition partition;
 };
 
 struct PartitionResult {

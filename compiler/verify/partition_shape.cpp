@@ -15,14 +15,14 @@ VerificationResult shape_violation(std::string message) {
 }  // namespace
 
 VerificationResult check_partition_shape(const model::ExplicitModel& model,
-                                         const bisim::Partition& partition) {
+                                         const model::Partition& partition) {
   if (partition.num_states() != model.num_states()) {
     return shape_violation("the partition has " + std::to_string(partition.num_states()) +
                            " states but the model has " + std::to_string(model.num_states()));
   }
   std::vector<bool> used(partition.num_blocks, false);
   for (model::StateIndex s = 0; s < partition.num_states(); ++s) {
-    const bisim::BlockIndex block = partition.block_of[s];
+    const model::BlockIndex block = partition.block_of[s];
     if (block >= partition.num_blocks) {
       VerificationResult result = shape_violation(
           "state " + model.states.name(s) + " is in block " + std::to_string(block) +
@@ -33,7 +33,7 @@ VerificationResult check_partition_shape(const model::ExplicitModel& model,
     }
     used[block] = true;
   }
-  for (bisim::BlockIndex block = 0; block < partition.num_blocks; ++block) {
+  for (model::BlockIndex block = 0; block < partition.num_blocks; ++block) {
     if (used[block]) continue;
     VerificationResult result =
         shape_violation("block " + std::to_string(block) + " of " +

@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "oasis/rt/bsp_locator.hpp"
-#include "spec/affine.hpp"
+#include "verify/guard_reading.hpp"
 #include "verify/cell_geometry.hpp"
 #include "verify/number_text.hpp"
 #include "verify/row_distance.hpp"
@@ -34,7 +34,7 @@ std::vector<RewardForm> reward_forms(const model::ModelIR& ir, std::size_t conte
   for (const model::Reward& reward : ir.contexts[context].rewards) {
     RewardForm form{to_double(reward.value.constant), std::nullopt};
     const auto constraints =
-        spec::polyhedral_constraints(reward.guard, ir.continuous.size(), ir.regions);
+        guard_constraints(reward.guard, ir.continuous.size(), ir.regions);
     if (constraints) {
       form.condition.emplace();
       for (const model::LinearConstraint& constraint : *constraints) {

@@ -7,7 +7,7 @@
 namespace oasis::verify {
 
 VerificationResult verify_partition(const model::ExplicitModel& model, std::size_t context,
-                                    const bisim::Partition& partition) {
+                                    const model::Partition& partition) {
   VerificationResult result = check_partition_shape(model, partition);
   if (result.ok()) result = check_bisimulation(model, context, partition);
   if (result.ok()) result = check_coarsest(model, context, partition);

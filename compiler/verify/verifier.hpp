@@ -5,7 +5,7 @@
 
 #include <cstddef>
 
-#include "bisim/partition.hpp"
+#include "model/partition.hpp"
 #include "model/explicit_model.hpp"
 #include "verify/violation.hpp"
 
@@ -15,6 +15,6 @@ namespace oasis::verify {
 // first violation, if any. Exact throughout: probabilities and rewards are compared as GMP
 // rationals.
 VerificationResult verify_partition(const model::ExplicitModel& model, std::size_t context,
-                                    const bisim::Partition& partition);
+                                    const model::Partition& partition);
 
 }  // namespace oasis::verify

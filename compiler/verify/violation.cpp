@@ -23,8 +23,8 @@ bool breaks_bisimulation(ViolationKind kind) {
          kind == ViolationKind::BlockProbabilityDiffers;
 }
 
-std::string describe_block(const model::ExplicitModel& model, const bisim::Partition& partition,
-                           bisim::BlockIndex block) {
+std::string describe_block(const model::ExplicitModel& model, const model::Partition& partition,
+                           model::BlockIndex block) {
   // Enough members to recognise the block; the whole of a large block would drown the message.
   constexpr std::size_t kShown = 4;
   std::string text = "block " + std::to_string(block) + " {";

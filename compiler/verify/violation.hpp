@@ -6,7 +6,7 @@
 #include <optional>
 #include <string>
 
-#include "bisim/partition.hpp"
+#include "model/partition.hpp"
 #include "model/explicit_model.hpp"
 
 namespace oasis::verify {
@@ -32,10 +32,10 @@ struct Violation {
   std::optional<model::StateIndex> state;
   std::optional<model::StateIndex> other_state;
   std::optional<model::ActionIndex> action;
-  std::optional<bisim::BlockIndex> block;
+  std::optional<model::BlockIndex> block;
   // BlockProbabilityDiffers: the block the two states reach with different probabilities.
   // BlocksCouldMerge: the block bisimilar to `block`.
-  std::optional<bisim::BlockIndex> other_block;
+  std::optional<model::BlockIndex> other_block;
   std::string message;  // one sentence naming states and actions by their names
 };
 
@@ -47,7 +47,7 @@ struct VerificationResult {
 
 // "block 2 {s3, s5, s8, ...}": the block's number and its first few members by name, so a
 // message can be checked against the partition without looking the number up.
-std::string describe_block(const model::ExplicitModel& model, const bisim::Partition& partition,
-                           bisim::BlockIndex block);
+std::string describe_block(const model::ExplicitModel& model, const model::Partition& partition,
+                           model::BlockIndex block);
 
 }  // namespace oasis::verify

@@ -10,7 +10,7 @@
 
 #include "fuzz_target.hpp"
 #include "model/explorer.hpp"
-#include "spec/frontend.hpp"
+#include "frontend/load_spec.hpp"
 #include "verify/partition_result_reader.hpp"
 #include "verify/verifier.hpp"
 
@@ -30,7 +30,7 @@ model::ExplicitModel explore_spec() {
   std::ostringstream messages;
   DiagnosticEngine diagnostics(sources, messages);
   const FileId file = sources.add(path, text.str());
-  const auto ir = spec::check_spec_text(file, diagnostics);
+  const auto ir = frontend::check_spec_text(file, diagnostics);
   if (!ir) fuzz::broken(messages.str().c_str(), __FILE__, __LINE__);
   auto model = model::explore(*ir, diagnostics);
   if (!model) fuzz::broken(messages.str().c_str(), __FILE__, __LINE__);
@@ -50,7 +50,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   for (const verify::ContextPartition& entry : result->contexts) {
     FUZZ_REQUIRE(entry.context < model.contexts.size());
     FUZZ_REQUIRE(entry.partition.num_states() == model.num_states());
-    for (const bisim::BlockIndex block : entry.partition.block_of)
+    for (const model::BlockIndex block : entry.partition.block_of)
       FUZZ_REQUIRE(block < entry.partition.num_blocks);
     const verify::VerificationResult verdict =
         verify::verify_partition(model, entry.context, entry.partition);

@@ -7,7 +7,7 @@
 
 #include "fuzz_target.hpp"
 #include "model/explorer.hpp"
-#include "spec/frontend.hpp"
+#include "frontend/load_spec.hpp"
 
 namespace {
 
@@ -21,7 +21,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   std::ostringstream messages;
   DiagnosticEngine diagnostics(sources, messages);
   const FileId file = sources.add("fuzz.oasis", fuzz::text_of(data, size));
-  const auto ir = spec::check_spec_text(file, diagnostics);
+  const auto ir = frontend::check_spec_text(file, diagnostics);
   bool has_model = ir && ir->kind == model::ModelKind::Continuous;
   if (ir && !has_model) {
     model::ExploreOptions options;

@@ -9,7 +9,7 @@
 #include <utility>
 #include <vector>
 
-#include "bisim/partition.hpp"
+#include "model/partition.hpp"
 #include "model/explicit_model.hpp"
 
 namespace oasis::test {
@@ -20,7 +20,7 @@ namespace oasis::test {
 //   n. block of s = (its block, [(a, {block B -> P(B | s, a)}) for each enabled a]);
 // until the number of blocks stops changing. Rewards of disabled actions are ignored; a state
 // with no enabled action is compared by its state reward.
-inline bisim::Partition naive_bisimulation(const model::ExplicitModel& model, std::size_t context,
+inline model::Partition naive_bisimulation(const model::ExplicitModel& model, std::size_t context,
                                            const std::vector<std::uint32_t>& start = {}) {
   const model::TransitionMatrix& matrix = *model.contexts[context].transitions;
   const std::uint32_t n = model.num_states();
@@ -40,7 +40,7 @@ inline bisim::Partition naive_bisimulation(const model::ExplicitModel& model, st
       key.second.emplace_back(k, model.values[model.contexts[context].rewards.state[s]]);
     labels[s] = initial.try_emplace(key, static_cast<std::uint32_t>(initial.size())).first->second;
   }
-  bisim::Partition partition = bisim::canonical_partition(labels);
+  model::Partition partition = model::canonical_partition(labels);
 
   using ActionKey = std::pair<std::uint32_t, std::map<std::uint32_t, Rational>>;
   using Signature = std::pair<std::uint32_t, std::vector<ActionKey>>;
@@ -60,7 +60,7 @@ inline bisim::Partition naive_bisimulation(const model::ExplicitModel& model, st
       labels[s] = numbering.try_emplace(signature, static_cast<std::uint32_t>(numbering.size()))
                       .first->second;
     }
-    bisim::Partition next = bisim::canonical_partition(labels);
+    model::Partition next = model::canonical_partition(labels);
     // The old block is part of the signature, so rounds only split: same count, same blocks.
     if (next.num_blocks == partition.num_blocks) return next;
     partition = std::move(next);

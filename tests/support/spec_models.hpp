@@ -14,7 +14,7 @@
 
 #include "model/explorer.hpp"
 #include "pipeline/discrete_catalog.hpp"
-#include "spec/frontend.hpp"
+#include "frontend/load_spec.hpp"
 
 namespace oasis::test {
 
@@ -44,7 +44,7 @@ inline model::ModelIR check_spec_text_ir(const std::string& text) {
   SourceManager sources;
   std::ostringstream messages;
   DiagnosticEngine diagnostics(sources, messages);
-  auto ir = spec::check_spec_text(sources.add("test.oasis", text), diagnostics);
+  auto ir = frontend::check_spec_text(sources.add("test.oasis", text), diagnostics);
   EXPECT_TRUE(ir) << messages.str();
   return ir ? std::move(*ir) : model::ModelIR{};
 }
@@ -55,7 +55,7 @@ inline std::vector<std::string> spec_errors(const std::string& source) {
   SourceManager sources;
   std::ostringstream out;
   DiagnosticEngine diagnostics(sources, out, 50);
-  const auto ir = spec::check_spec_text(sources.add("check.oasis", source), diagnostics);
+  const auto ir = frontend::check_spec_text(sources.add("check.oasis", source), diagnostics);
   EXPECT_FALSE(ir) << "expected errors in:\n" << source;
   std::vector<std::string> errors;
   std::istringstream lines(out.str());
@@ -73,7 +73,7 @@ inline model::ModelIR load_spec_ir(const std::string& path) {
   SourceManager sources;
   std::ostringstream messages;
   DiagnosticEngine diagnostics(sources, messages);
-  auto ir = spec::load_spec(path, sources, diagnostics);
+  auto ir = frontend::load_spec(path, sources, diagnostics);
   EXPECT_TRUE(ir) << messages.str();
   return ir ? std::move(*ir) : model::ModelIR{};
 }
@@ -99,13 +99,13 @@ catalog { context at_goal { reward goal : 1; } }
 inline model::ExplicitModel explore_spec_text(const std::string& text,
                                               const std::string& name = "test.oasis") {
   return detail::explore_loaded([&](SourceManager& sources, DiagnosticEngine& diagnostics) {
-    return spec::check_spec_text(sources.add(name, text), diagnostics);
+    return frontend::check_spec_text(sources.add(name, text), diagnostics);
   });
 }
 
 inline model::ExplicitModel explore_spec_file(const std::string& path) {
   return detail::explore_loaded([&](SourceManager& sources, DiagnosticEngine& diagnostics) {
-    return spec::load_spec(path, sources, diagnostics);
+    return frontend::load_spec(path, sources, diagnostics);
   });
 }
 

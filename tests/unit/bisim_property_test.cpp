@@ -17,7 +17,7 @@
 namespace oasis {
 namespace {
 
-using bisim::Partition;
+using model::Partition;
 using model::ExplicitModel;
 using model::StateIndex;
 using verify::ViolationKind;
@@ -40,7 +40,7 @@ std::vector<std::uint32_t> labels_of(const Partition& partition) {
 // P(block | s, a), summed here directly from the edges rather than by the verifier's code.
 Rational probability_into(const ExplicitModel& model, std::size_t context,
                           const Partition& partition, StateIndex s, model::ActionIndex a,
-                          bisim::BlockIndex block) {
+                          model::BlockIndex block) {
   const model::TransitionMatrix& matrix = *model.contexts[context].transitions;
   Rational sum = 0;
   for (model::EdgeIndex e = matrix.edges_begin(s, a); e < matrix.edges_end(s, a); ++e) {
@@ -169,14 +169,14 @@ TEST(BisimProperty, MergingTwoBlocksBreaksBisimulation) {
   for_each_context(0, [](const ExplicitModel& model, std::size_t c, const Partition& coarsest,
                          test::TestRandom& random, const std::string& label) {
     if (coarsest.num_blocks < 2) return;
-    const bisim::BlockIndex x = random.below(coarsest.num_blocks);
-    bisim::BlockIndex y = random.below(coarsest.num_blocks - 1);
+    const model::BlockIndex x = random.below(coarsest.num_blocks);
+    model::BlockIndex y = random.below(coarsest.num_blocks - 1);
     if (y >= x) ++y;
     std::vector<std::uint32_t> labels = labels_of(coarsest);
     for (auto& label_of_state : labels) {
       if (label_of_state == y) label_of_state = x;
     }
-    const Partition merged = bisim::canonical_partition(labels);
+    const Partition merged = model::canonical_partition(labels);
     const verify::VerificationResult result = verify::verify_partition(model, c, merged);
     ASSERT_FALSE(result.ok()) << label;
     EXPECT_TRUE(verify::breaks_bisimulation(result.violation->kind))
@@ -191,8 +191,8 @@ TEST(BisimProperty, SplittingABlockIsRejected) {
   for_each_context(0, [](const ExplicitModel& model, std::size_t c, const Partition& coarsest,
                          test::TestRandom& random, const std::string& label) {
     const auto blocks = coarsest.blocks();
-    std::vector<bisim::BlockIndex> splittable;
-    for (bisim::BlockIndex b = 0; b < blocks.size(); ++b) {
+    std::vector<model::BlockIndex> splittable;
+    for (model::BlockIndex b = 0; b < blocks.size(); ++b) {
       if (blocks[b].size() >= 2) splittable.push_back(b);
     }
     if (splittable.empty()) return;
@@ -205,7 +205,7 @@ TEST(BisimProperty, SplittingABlockIsRejected) {
       std::swap(order[i], order[i + random.below(static_cast<std::uint32_t>(order.size()) - i)]);
       labels[order[i]] = coarsest.num_blocks;
     }
-    const Partition split = bisim::canonical_partition(labels);
+    const Partition split = model::canonical_partition(labels);
     const verify::VerificationResult result = verify::verify_partition(model, c, split);
     ASSERT_FALSE(result.ok()) << label;
     const bool still_bisimulation =
@@ -227,11 +227,11 @@ TEST(BisimProperty, MovingAStateBreaksBisimulation) {
                          test::TestRandom& random, const std::string& label) {
     if (coarsest.num_blocks < 2) return;
     const StateIndex s = random.below(coarsest.num_states());
-    bisim::BlockIndex to = random.below(coarsest.num_blocks - 1);
+    model::BlockIndex to = random.below(coarsest.num_blocks - 1);
     if (to >= coarsest.block_of[s]) ++to;
     std::vector<std::uint32_t> labels = labels_of(coarsest);
     labels[s] = to;
-    const Partition moved = bisim::canonical_partition(labels);  // drops a block left empty
+    const Partition moved = model::canonical_partition(labels);  // drops a block left empty
     const verify::VerificationResult result = verify::verify_partition(model, c, moved);
     ASSERT_FALSE(result.ok()) << label;
     EXPECT_TRUE(verify::breaks_bisimulation(result.violation->kind)) << label;
@@ -245,7 +245,7 @@ TEST(BisimProperty, AllSingletonsIsABisimulationButRarelyTheCoarsest) {
     std::vector<std::uint32_t> labels(model.num_states());
     for (StateIndex s = 0; s < model.num_states(); ++s)
       labels[s] = s;
-    const Partition singletons = bisim::canonical_partition(labels);
+    const Partition singletons = model::canonical_partition(labels);
     const verify::VerificationResult result = verify::verify_partition(model, c, singletons);
     if (coarsest.num_blocks == model.num_states()) {
       EXPECT_TRUE(result.ok()) << label;

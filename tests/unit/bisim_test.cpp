@@ -18,13 +18,13 @@
 #include "formats/model_file.hpp"
 #include "formats/prism_writer.hpp"
 #include "model/explorer.hpp"
-#include "spec/frontend.hpp"
+#include "frontend/load_spec.hpp"
 #include "verify/verifier.hpp"
 
 namespace oasis {
 namespace {
 
-using bisim::Partition;
+using model::Partition;
 using model::ExplicitModel;
 using test::explore_spec_file;
 using test::explore_spec_text;

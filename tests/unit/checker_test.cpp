@@ -1,4 +1,4 @@
-// Unit tests of the spec checker (compiler/spec/checker.cpp, catalog_checker.cpp,
+// Unit tests of the spec checker (compiler/frontend/checker.cpp, catalog_checker.cpp,
 // expression_checker.cpp).
 //
 // The first half is a table of `expect_error(source, "substring")` cases, one per diagnostic
@@ -7,7 +7,7 @@
 // place. The second half checks what a sound spec turns into: exact constant folding, the
 // switching matrix and prior, context overrides, continuous dynamics and regions.
 
-#include "spec/checker.hpp"
+#include "frontend/checker.hpp"
 
 #include <optional>
 #include <sstream>
@@ -17,9 +17,9 @@
 
 #include <gtest/gtest.h>
 
-#include "spec/frontend.hpp"
+#include "frontend/load_spec.hpp"
 
-namespace oasis::spec {
+namespace oasis::frontend {
 namespace {
 
 using model::ModelIR;
@@ -1004,4 +1004,4 @@ TEST(Checker, Go1TreatSpec) {
 }
 
 }  // namespace
-}  // namespace oasis::spec
+}  // namespace oasis::frontend

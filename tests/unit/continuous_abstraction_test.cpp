@@ -13,7 +13,7 @@
 #include "codegen/abstraction_svg.hpp"
 #include "codegen/continuous_json.hpp"
 #include "pipeline/continuous_catalog.hpp"
-#include "spec/frontend.hpp"
+#include "frontend/load_spec.hpp"
 
 namespace oasis {
 namespace {

@@ -15,7 +15,7 @@
 
 #include <gtest/gtest.h>
 
-#include "spec/frontend.hpp"
+#include "frontend/load_spec.hpp"
 
 namespace oasis::model {
 namespace {
@@ -44,7 +44,7 @@ struct Explored {
 std::unique_ptr<Explored> explore_text(std::string text, const ExploreOptions& options = {}) {
   auto explored = std::make_unique<Explored>();
   const FileId file = explored->sources.add("explore.oasis", std::move(text));
-  explored->ir = spec::check_spec_text(file, explored->diagnostics);
+  explored->ir = frontend::check_spec_text(file, explored->diagnostics);
   if (explored->ir) explored->model = explore(*explored->ir, explored->diagnostics, options);
   if (explored->model) {
     // Whatever the spec, an explored model is structurally sound.
@@ -59,7 +59,7 @@ std::unique_ptr<Explored> explore_text(std::string text, const ExploreOptions& o
 
 std::unique_ptr<Explored> explore_file(const std::string& name) {
   auto explored = std::make_unique<Explored>();
-  explored->ir = spec::load_spec(std::string(OASIS_SOURCE_DIR) + "/specs/" + name,
+  explored->ir = frontend::load_spec(std::string(OASIS_SOURCE_DIR) + "/specs/" + name,
                                  explored->sources, explored->diagnostics);
   if (explored->ir) explored->model = explore(*explored->ir, explored->diagnostics);
   if (explored->model) {
@@ -667,7 +667,7 @@ TEST(ExploreErrors, ContinuousModelsAreNotExplored) {
   SourceManager sources;
   std::ostringstream out;
   DiagnosticEngine diagnostics(sources, out);
-  const auto ir = spec::load_spec(std::string(OASIS_SOURCE_DIR) + "/specs/go1_treat.oasis", sources,
+  const auto ir = frontend::load_spec(std::string(OASIS_SOURCE_DIR) + "/specs/go1_treat.oasis", sources,
                                   diagnostics);
   ASSERT_TRUE(ir) << out.str();
   EXPECT_FALSE(explore(*ir, diagnostics));

@@ -17,7 +17,7 @@
 #include "geom/finite_mdp.hpp"
 #include "geom/grid_refinement.hpp"
 #include "geom/relevance.hpp"
-#include "spec/frontend.hpp"
+#include "frontend/load_spec.hpp"
 
 namespace oasis {
 namespace {
@@ -44,7 +44,7 @@ TEST(GeomGrid, Go1ContextMeetsTheTarget) {
       geom::finite_mdp(geometry, partition->grid, ir.actions, ir.objective);
   const auto built = std::chrono::steady_clock::now();
   EXPECT_FALSE(model::find_structural_problem(mdp)) << *model::find_structural_problem(mdp);
-  const bisim::Partition blocks = bisim::coarsest_bisimulation(mdp, 0);
+  const model::Partition blocks = bisim::coarsest_bisimulation(mdp, 0);
   const auto quotiented = std::chrono::steady_clock::now();
   auto seconds = [](auto a, auto b) { return std::chrono::duration<double>(b - a).count(); };
   std::cout << "cells " << partition->grid.num_cells() << ", epsilon "

@@ -1,7 +1,7 @@
-// Unit tests of the spec lexer (compiler/spec/lexer.cpp): token kinds and spellings, numbers,
+// Unit tests of the spec lexer (compiler/frontend/lexer.cpp): token kinds and spellings, numbers,
 // comments, and the errors for bad characters and unterminated comments with their line:col.
 
-#include "spec/lexer.hpp"
+#include "frontend/lexer.hpp"
 
 #include <sstream>
 #include <string>
@@ -9,7 +9,7 @@
 
 #include <gtest/gtest.h>
 
-namespace oasis::spec {
+namespace oasis::frontend {
 namespace {
 
 using K = TokenKind;
@@ -301,4 +301,4 @@ TEST(Lexer, DescribeTokenKinds) {
 }
 
 }  // namespace
-}  // namespace oasis::spec
+}  // namespace oasis::frontend

@@ -19,7 +19,7 @@
 #include "codegen/binary_catalog.hpp"
 #include "oasis/rt/catalog_file.hpp"
 #include "pipeline/discrete_catalog.hpp"
-#include "spec/frontend.hpp"
+#include "frontend/load_spec.hpp"
 
 namespace oasis {
 namespace {

@@ -1,8 +1,8 @@
-// Unit tests of the spec parser (compiler/spec/parser.cpp): the AST shape of every construct,
+// Unit tests of the spec parser (compiler/frontend/parser.cpp): the AST shape of every construct,
 // expression precedence, syntax errors with their file:line:col and recovery after them, and
 // the nesting limit.
 
-#include "spec/parser.hpp"
+#include "frontend/parser.hpp"
 
 #include <sstream>
 #include <string>
@@ -10,9 +10,9 @@
 
 #include <gtest/gtest.h>
 
-#include "spec/lexer.hpp"
+#include "frontend/lexer.hpp"
 
-namespace oasis::spec {
+namespace oasis::frontend {
 namespace {
 
 using ast::ExprKind;
@@ -840,4 +840,4 @@ TEST(ParserNesting, LongDistributionIsNotAnExpression) {
 }
 
 }  // namespace
-}  // namespace oasis::spec
+}  // namespace oasis::frontend

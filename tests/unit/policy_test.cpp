@@ -24,7 +24,7 @@
 namespace oasis {
 namespace {
 
-using bisim::Partition;
+using model::Partition;
 using model::ActionIndex;
 using model::ExplicitModel;
 using model::StateIndex;
@@ -346,7 +346,7 @@ TEST(PolicyProperty, WrongPartitionBreaksValueEquality) {
       if (label == partition.block_of[high]) label = partition.block_of[low];
     }
     ++tried;
-    if (quotient_value_gap(model, 0, bisim::canonical_partition(labels), options) > kClose)
+    if (quotient_value_gap(model, 0, model::canonical_partition(labels), options) > kClose)
       ++broken;
     EXPECT_LE(quotient_value_gap(model, 0, partition, options), kClose) << "seed " << seed;
   }

@@ -18,7 +18,7 @@
 #include "oasis/rt/catalog_file.hpp"
 #include "pipeline/continuous_catalog.hpp"
 #include "pipeline/continuous_catalog_data.hpp"
-#include "spec/frontend.hpp"
+#include "frontend/load_spec.hpp"
 #include "verify/continuous_check.hpp"
 
 namespace oasis {

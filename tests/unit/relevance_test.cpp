@@ -12,7 +12,7 @@
 
 #include "../support/run_oasisc.hpp"
 #include "../support/spec_models.hpp"
-#include "spec/frontend.hpp"
+#include "frontend/load_spec.hpp"
 
 namespace oasis {
 namespace {

@@ -15,7 +15,7 @@
 #include "formats/model_file.hpp"
 #include "formats/prism_writer.hpp"
 #include "model/explorer.hpp"
-#include "spec/frontend.hpp"
+#include "frontend/load_spec.hpp"
 
 namespace oasis {
 namespace {

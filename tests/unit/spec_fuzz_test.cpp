@@ -44,7 +44,7 @@
 #include "../support/scratch_directory.hpp"
 #include "model/explorer.hpp"
 #include "oasis/rt/spec_hash.hpp"
-#include "spec/frontend.hpp"
+#include "frontend/load_spec.hpp"
 
 namespace oasis {
 namespace {
@@ -230,7 +230,7 @@ RunResult run_front_end(const std::string& text) {
     std::ostringstream out;
     DiagnosticEngine diagnostics(sources, out);
     const FileId file = sources.add("fuzz.oasis", text);
-    const auto ir = spec::check_spec_text(file, diagnostics);
+    const auto ir = frontend::check_spec_text(file, diagnostics);
     if (ir && ir->kind == model::ModelKind::Continuous) {
       result.has_model = true;  // continuous models are not explored
     } else if (ir) {

@@ -22,12 +22,12 @@
 #include "../support/spec_models.hpp"
 #include "bisim/refinement.hpp"
 #include "model/explorer.hpp"
-#include "spec/frontend.hpp"
+#include "frontend/load_spec.hpp"
 
 namespace oasis {
 namespace {
 
-using bisim::Partition;
+using model::Partition;
 using model::ExplicitModel;
 using test::explore_spec_text;
 using verify::ViolationKind;
@@ -80,7 +80,7 @@ void expect_accepted(const ExplicitModel& model, std::size_t context, const Part
   EXPECT_TRUE(result.ok()) << result.violation->message;
   // Hand-made answers agree with both engines, so the cases below test what they claim.
   const Partition canonical =
-      bisim::canonical_partition({partition.block_of.begin(), partition.block_of.end()});
+      model::canonical_partition({partition.block_of.begin(), partition.block_of.end()});
   EXPECT_EQ(test::naive_bisimulation(model, context).block_of, canonical.block_of);
   EXPECT_EQ(bisim::coarsest_bisimulation(model, context).block_of, canonical.block_of);
 }

@@ -22,7 +22,7 @@
 #include "pipeline/catalog_data.hpp"
 #include "sim/report.hpp"
 #include "sim/table1.hpp"
-#include "spec/frontend.hpp"
+#include "frontend/load_spec.hpp"
 #include "support/interrupt_cleanup.hpp"
 #include "support/standard_output.hpp"
 
@@ -108,7 +108,7 @@ int run_table1_command(const Table1Arguments& arguments) {
   }
   SourceManager sources;
   DiagnosticEngine diagnostics(sources, std::cerr);
-  const auto ir = spec::load_spec(arguments.spec, sources, diagnostics);
+  const auto ir = frontend::load_spec(arguments.spec, sources, diagnostics);
   if (!ir) return 1;
   auto model = model::explore(*ir, diagnostics);
   if (!model) return 1;

@@ -1,10 +1,10 @@
-#include "spec/lexer.hpp"
+#include "frontend/lexer.hpp"
 
 #include <array>
 #include <string>
 #include <utility>
 
-namespace oasis::spec {
+namespace oasis::frontend {
 namespace {
 
 struct Keyword {
@@ -307,4 +307,4 @@ std::vector<Token> lex(FileId file, DiagnosticEngine& diagnostics) {
   return Lexer(file, diagnostics).run();
 }
 
-}  // namespace oasis::spec
+}  // namespace oasis::frontend

@@ -6,15 +6,15 @@
 #include <optional>
 
 #include "model/model_ir.hpp"
-#include "spec/ast.hpp"
+#include "frontend/ast.hpp"
 #include "support/diagnostics.hpp"
 #include "support/limits.hpp"
 
-namespace oasis::spec {
+namespace oasis::frontend {
 
 // nullopt when any error was reported. No number the spec writes or folds may have a numerator
 // or denominator longer than `max_number_bits`.
 std::optional<model::ModelIR> check(const ast::SpecFile& spec, DiagnosticEngine& diagnostics,
                                     std::size_t max_number_bits = limits::kDefaultMaxNumberBits);
 
-}  // namespace oasis::spec
+}  // namespace oasis::frontend

@@ -7,7 +7,7 @@
 
 #include "model/explicit_model.hpp"
 
-namespace oasis::bisim {
+namespace oasis::model {
 
 using BlockIndex = std::uint32_t;
 
@@ -22,11 +22,11 @@ struct Partition {
     return static_cast<std::uint32_t>(block_of.size());
   }
   // The states of each block, ascending.
-  [[nodiscard]] std::vector<std::vector<model::StateIndex>> blocks() const;
+  [[nodiscard]] std::vector<std::vector<StateIndex>> blocks() const;
 };
 
 // Renumbers blocks in order of their smallest state (see Partition::block_of); `labels` may
 // use any numbers below `num_labels`.
 Partition canonical_partition(const std::vector<std::uint32_t>& labels);
 
-}  // namespace oasis::bisim
+}  // namespace oasis::model

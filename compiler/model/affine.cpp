@@ -1,8 +1,8 @@
-#include "spec/affine.hpp"
+#include "model/affine.hpp"
 
 #include <utility>
 
-namespace oasis::spec {
+namespace oasis::model {
 namespace {
 
 using model::Expression;
@@ -121,4 +121,4 @@ std::optional<std::vector<LinearConstraint>> polyhedral_constraints(
   }
 }
 
-}  // namespace oasis::spec
+}  // namespace oasis::model

@@ -4,13 +4,13 @@
 
 #include <vector>
 
-#include "spec/token.hpp"
+#include "frontend/token.hpp"
 #include "support/diagnostics.hpp"
 
-namespace oasis::spec {
+namespace oasis::frontend {
 
 // Lexes the whole file; always ends with an EndOfFile token. Bad characters are reported
 // and become Invalid tokens so that parsing can go on and report more.
 std::vector<Token> lex(FileId file, DiagnosticEngine& diagnostics);
 
-}  // namespace oasis::spec
+}  // namespace oasis::frontend

@@ -1,4 +1,4 @@
-#include "spec/object_checker.hpp"
+#include "frontend/object_checker.hpp"
 
 #include <array>
 #include <cmath>
@@ -9,7 +9,7 @@
 
 #include "support/text.hpp"
 
-namespace oasis::spec {
+namespace oasis::frontend {
 namespace {
 
 using Polynomial = std::array<Rational, 3>;  // c0 + c1 d + c2 d^2
@@ -239,4 +239,4 @@ bool check_objects(const ast::ObservationDecl& decl, const Scope& scope, model::
   return ok;
 }
 
-}  // namespace oasis::spec
+}  // namespace oasis::frontend

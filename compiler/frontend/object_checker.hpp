@@ -4,11 +4,11 @@
 // distance: the norm of its variables) and the probability of detecting it.
 
 #include "model/model_ir.hpp"
-#include "spec/ast.hpp"
-#include "spec/expression_checker.hpp"
-#include "spec/scope.hpp"
+#include "frontend/ast.hpp"
+#include "frontend/expression_checker.hpp"
+#include "frontend/scope.hpp"
 
-namespace oasis::spec {
+namespace oasis::frontend {
 
 // Fills ir.observation.objects from decl.objects. Reports unknown or non-continuous
 // variables, a variable in two objects, an object declared twice, a sigma(d) that is not a
@@ -17,4 +17,4 @@ namespace oasis::spec {
 bool check_objects(const ast::ObservationDecl& decl, const Scope& scope, model::ModelIR& ir,
                    DiagnosticEngine& diagnostics, ExpressionChecker& expressions);
 
-}  // namespace oasis::spec
+}  // namespace oasis::frontend

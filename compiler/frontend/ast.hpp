@@ -8,10 +8,10 @@
 #include <string_view>
 #include <vector>
 
-#include "spec/token.hpp"
+#include "frontend/token.hpp"
 #include "support/diagnostics.hpp"
 
-namespace oasis::spec::ast {
+namespace oasis::frontend::ast {
 
 struct Name {
   std::string_view text;
@@ -213,4 +213,4 @@ struct SpecFile {
   std::vector<CatalogDecl> catalogs;
 };
 
-}  // namespace oasis::spec::ast
+}  // namespace oasis::frontend::ast

@@ -1,11 +1,11 @@
-#include "bisim/partition.hpp"
+#include "model/partition.hpp"
 
 #include <unordered_map>
 
-namespace oasis::bisim {
+namespace oasis::model {
 
-std::vector<std::vector<model::StateIndex>> Partition::blocks() const {
-  std::vector<std::vector<model::StateIndex>> result(num_blocks);
+std::vector<std::vector<StateIndex>> Partition::blocks() const {
+  std::vector<std::vector<StateIndex>> result(num_blocks);
   for (model::StateIndex s = 0; s < block_of.size(); ++s)
     result[block_of[s]].push_back(s);
   return result;
@@ -23,4 +23,4 @@ Partition canonical_partition(const std::vector<std::uint32_t>& labels) {
   return partition;
 }
 
-}  // namespace oasis::bisim
+}  // namespace oasis::model

@@ -10,7 +10,7 @@
 #include "model/expression.hpp"
 #include "support/diagnostics.hpp"
 
-namespace oasis::spec {
+namespace oasis::frontend {
 
 enum class SymbolKind { Constant, Variable, ContinuousVariable, State, Region };
 
@@ -60,4 +60,4 @@ class NameTable {
 
 using Scope = NameTable<Symbol>;
 
-}  // namespace oasis::spec
+}  // namespace oasis::frontend

@@ -1,13 +1,14 @@
 #pragma once
 // Reading expressions over continuous variables as affine forms (sum c_i x_i + d) and
-// polyhedral conditions (conjunctions of linear inequalities), as the geometry layer needs.
+// polyhedral conditions (conjunctions of linear inequalities), shared by the front end (region
+// and guard checks) and the geometry layer.
 
 #include <optional>
 #include <vector>
 
 #include "model/model_ir.hpp"
 
-namespace oasis::spec {
+namespace oasis::model {
 
 struct AffineForm {
   std::vector<Rational> coefficients;  // one per continuous variable
@@ -23,4 +24,4 @@ std::optional<std::vector<model::LinearConstraint>> polyhedral_constraints(
     const model::Expression& expr, std::size_t num_variables,
     const std::vector<model::Region>& regions);
 
-}  // namespace oasis::spec
+}  // namespace oasis::model

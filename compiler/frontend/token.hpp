@@ -7,7 +7,7 @@
 #include "support/rational.hpp"
 #include "support/source_manager.hpp"
 
-namespace oasis::spec {
+namespace oasis::frontend {
 
 enum class TokenKind : std::uint8_t {
   EndOfFile,
@@ -81,4 +81,4 @@ struct Token {
 std::string_view describe(TokenKind kind);
 using oasis::describe;  // keep describe(Rational) visible beside the overload above
 
-}  // namespace oasis::spec
+}  // namespace oasis::frontend

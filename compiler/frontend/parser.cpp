@@ -1,4 +1,4 @@
-#include "spec/parser.hpp"
+#include "frontend/parser.hpp"
 
 #include <algorithm>
 #include <string>
@@ -6,7 +6,7 @@
 
 #include "support/text.hpp"
 
-namespace oasis::spec {
+namespace oasis::frontend {
 namespace {
 
 using namespace ast;
@@ -838,4 +838,4 @@ ast::SpecFile parse(FileId file, const std::vector<Token>& tokens, DiagnosticEng
   return Parser(file, tokens, diagnostics).run();
 }
 
-}  // namespace oasis::spec
+}  // namespace oasis::frontend

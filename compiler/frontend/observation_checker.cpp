@@ -1,13 +1,13 @@
-#include "spec/observation_checker.hpp"
+#include "frontend/observation_checker.hpp"
 
 #include <optional>
 #include <string>
 #include <vector>
 
-#include "spec/object_checker.hpp"
+#include "frontend/object_checker.hpp"
 #include "support/text.hpp"
 
-namespace oasis::spec {
+namespace oasis::frontend {
 namespace {
 
 using model::ObservationSpec;
@@ -171,4 +171,4 @@ void check_observation(const ast::ObservationDecl& decl, const Scope& scope, mod
   ir.observation = std::move(observation);
 }
 
-}  // namespace oasis::spec
+}  // namespace oasis::frontend

@@ -1,4 +1,4 @@
-#include "spec/expression_checker.hpp"
+#include "frontend/expression_checker.hpp"
 
 #include <array>
 #include <string>
@@ -7,7 +7,7 @@
 #include "support/double_range.hpp"
 #include "support/text.hpp"
 
-namespace oasis::spec {
+namespace oasis::frontend {
 namespace {
 
 using model::Expression;
@@ -349,4 +349,4 @@ std::optional<Rational> ExpressionChecker::branch_probability(const ast::Branch&
   return p;
 }
 
-}  // namespace oasis::spec
+}  // namespace oasis::frontend

@@ -6,15 +6,15 @@
 
 #include <vector>
 
-#include "spec/ast.hpp"
-#include "spec/token.hpp"
+#include "frontend/ast.hpp"
+#include "frontend/token.hpp"
 #include "support/diagnostics.hpp"
 #include "support/limits.hpp"
 
-namespace oasis::spec {
+namespace oasis::frontend {
 
 inline constexpr int kMaxNesting = limits::kMaxNesting;
 
 ast::SpecFile parse(FileId file, const std::vector<Token>& tokens, DiagnosticEngine& diagnostics);
 
-}  // namespace oasis::spec
+}  // namespace oasis::frontend

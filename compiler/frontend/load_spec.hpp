@@ -10,7 +10,7 @@
 #include "support/diagnostics.hpp"
 #include "support/limits.hpp"
 
-namespace oasis::spec {
+namespace oasis::frontend {
 
 struct FrontendOptions {
   // Specs are hand-written text; anything larger is almost certainly the wrong file.
@@ -28,4 +28,4 @@ std::optional<model::ModelIR> load_spec(const std::string& path, SourceManager& 
 std::optional<model::ModelIR> check_spec_text(FileId file, DiagnosticEngine& diagnostics,
                                               const FrontendOptions& options = {});
 
-}  // namespace oasis::spec
+}  // namespace oasis::frontend

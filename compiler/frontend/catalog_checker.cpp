@@ -1,4 +1,4 @@
-#include "spec/catalog_checker.hpp"
+#include "frontend/catalog_checker.hpp"
 
 #include <string>
 #include <vector>
@@ -6,7 +6,7 @@
 #include "support/double_range.hpp"
 #include "support/text.hpp"
 
-namespace oasis::spec {
+namespace oasis::frontend {
 namespace {
 
 // A distribution over contexts, e.g. `0.8: a + 0.2: b`, as one row of N probabilities.
@@ -129,4 +129,4 @@ void check_switching_and_prior(const ast::CatalogDecl& catalog,
   }
 }
 
-}  // namespace oasis::spec
+}  // namespace oasis::frontend

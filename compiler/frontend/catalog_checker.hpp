@@ -5,11 +5,11 @@
 #include <cstdint>
 
 #include "model/model_ir.hpp"
-#include "spec/ast.hpp"
-#include "spec/expression_checker.hpp"
-#include "spec/scope.hpp"
+#include "frontend/ast.hpp"
+#include "frontend/expression_checker.hpp"
+#include "frontend/scope.hpp"
 
-namespace oasis::spec {
+namespace oasis::frontend {
 
 // Fills ir.switching from the catalog; `contexts` maps context names to their index in
 // ir.contexts. Reports rows that do not sum to 1, unknown or missing contexts, and so on.
@@ -17,4 +17,4 @@ void check_switching_and_prior(const ast::CatalogDecl& catalog,
                                const NameTable<std::uint32_t>& contexts, model::ModelIR& ir,
                                DiagnosticEngine& diagnostics, ExpressionChecker& expressions);
 
-}  // namespace oasis::spec
+}  // namespace oasis::frontend

@@ -1,4 +1,4 @@
-#include "spec/checker.hpp"
+#include "frontend/checker.hpp"
 
 #include <algorithm>
 #include <map>
@@ -6,15 +6,15 @@
 #include <string>
 #include <utility>
 
-#include "spec/affine.hpp"
-#include "spec/catalog_checker.hpp"
-#include "spec/expression_checker.hpp"
-#include "spec/observation_checker.hpp"
-#include "spec/scope.hpp"
+#include "model/affine.hpp"
+#include "frontend/catalog_checker.hpp"
+#include "frontend/expression_checker.hpp"
+#include "frontend/observation_checker.hpp"
+#include "frontend/scope.hpp"
 #include "support/double_range.hpp"
 #include "support/text.hpp"
 
-namespace oasis::spec {
+namespace oasis::frontend {
 namespace {
 
 using model::Command;
@@ -277,7 +277,7 @@ class Checker {
       const ExpressionRules rules{.continuous = true, .regions = true, .place = "in a region"};
       auto condition = expressions_.check_typed(*region.constraint, rules, Type::Bool, "a region");
       if (!condition) continue;
-      auto constraints = polyhedral_constraints(*condition, ir_.continuous.size(), ir_.regions);
+      auto constraints = model::polyhedral_constraints(*condition, ir_.continuous.size(), ir_.regions);
       if (!constraints) {
         diagnostics_.error(region.constraint->range,
                            "a region must be a conjunction ('&') of linear inequalities over "
@@ -598,7 +598,7 @@ class Checker {
         !check_carried_value(value->constant, "reward", item.value->range, diagnostics_)) {
       return std::nullopt;
     }
-    if (continuous && !polyhedral_constraints(*guard, ir_.continuous.size(), ir_.regions)) {
+    if (continuous && !model::polyhedral_constraints(*guard, ir_.continuous.size(), ir_.regions)) {
       diagnostics_.error(item.guard->range,
                          "a continuous reward condition must be a conjunction "
                          "of regions and linear inequalities");
@@ -661,7 +661,7 @@ class Checker {
     const ExpressionRules rules{.continuous = true, .place = "in dynamics"};
     auto value = expressions_.check_typed(*equation.value, rules, Type::Real, "an equation");
     if (!value) return false;
-    auto form = affine_form(*value, ir_.continuous.size());
+    auto form = model::affine_form(*value, ir_.continuous.size());
     if (!form) {
       diagnostics_.error(equation.value->range,
                          "dynamics must be affine: a sum of constants "
@@ -852,4 +852,4 @@ std::optional<model::ModelIR> check(const ast::SpecFile& spec, DiagnosticEngine&
   return Checker(spec, diagnostics, max_number_bits).run();
 }
 
-}  // namespace oasis::spec
+}  // namespace oasis::frontend

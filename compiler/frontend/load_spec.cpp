@@ -1,13 +1,13 @@
-#include "spec/frontend.hpp"
+#include "frontend/load_spec.hpp"
 
 #include <algorithm>
 
-#include "spec/checker.hpp"
-#include "spec/input_validation.hpp"
-#include "spec/lexer.hpp"
-#include "spec/parser.hpp"
+#include "frontend/checker.hpp"
+#include "frontend/input_validation.hpp"
+#include "frontend/lexer.hpp"
+#include "frontend/parser.hpp"
 
-namespace oasis::spec {
+namespace oasis::frontend {
 
 std::optional<model::ModelIR> check_spec_text(FileId file, DiagnosticEngine& diagnostics,
                                               const FrontendOptions& options) {
@@ -34,4 +34,4 @@ std::optional<model::ModelIR> load_spec(const std::string& path, SourceManager& 
   return check_spec_text(file, diagnostics, options);
 }
 
-}  // namespace oasis::spec
+}  // namespace oasis::frontend

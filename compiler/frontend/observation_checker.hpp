@@ -3,11 +3,11 @@
 // state | true state), and whether the reward follows the true or the observed state.
 
 #include "model/model_ir.hpp"
-#include "spec/ast.hpp"
-#include "spec/expression_checker.hpp"
-#include "spec/scope.hpp"
+#include "frontend/ast.hpp"
+#include "frontend/expression_checker.hpp"
+#include "frontend/scope.hpp"
 
-namespace oasis::spec {
+namespace oasis::frontend {
 
 // Fills ir.observation from `decl`. Needs ir.kind and, for explicit models, the states
 // declared in `scope`. Reports a noise level outside [0, 1), rows that do not sum to exactly
@@ -16,4 +16,4 @@ namespace oasis::spec {
 void check_observation(const ast::ObservationDecl& decl, const Scope& scope, model::ModelIR& ir,
                        DiagnosticEngine& diagnostics, ExpressionChecker& expressions);
 
-}  // namespace oasis::spec
+}  // namespace oasis::frontend

@@ -4,8 +4,8 @@
 
 #include "support/diagnostics.hpp"
 
-namespace oasis::spec {
+namespace oasis::frontend {
 
 [[nodiscard]] bool validate_input(FileId file, DiagnosticEngine& diagnostics);
 
-}  // namespace oasis::spec
+}  // namespace oasis::frontend

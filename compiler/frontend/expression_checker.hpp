@@ -8,10 +8,10 @@
 #include <string_view>
 
 #include "model/expression.hpp"
-#include "spec/ast.hpp"
-#include "spec/scope.hpp"
+#include "frontend/ast.hpp"
+#include "frontend/scope.hpp"
 
-namespace oasis::spec {
+namespace oasis::frontend {
 
 // What an expression may refer to where it appears.
 struct ExpressionRules {
@@ -62,4 +62,4 @@ class ExpressionChecker {
   std::size_t max_number_bits_;
 };
 
-}  // namespace oasis::spec
+}  // namespace oasis::frontend
