@@ -35,12 +35,12 @@ struct Slice {
   std::size_t shown_axes = 0;
 };
 
-Slice slice_of(const geom::Grid& grid) {
+Slice slice_of(const pipeline::CellPartition& grid) {
   Slice slice;
   slice.shown_axes = std::min<std::size_t>(grid.dimension(), 2);
   slice.fixed.assign(grid.dimension(), 0);
   for (std::size_t i = slice.shown_axes; i < grid.dimension(); ++i) {
-    const auto& t = grid.breaks_double(i);
+    const auto& t = grid.breaks[i];
     slice.fixed[i] = *grid.locate(i, (t.front() + t.back()) / 2);
   }
   return slice;
@@ -55,12 +55,12 @@ struct Frame {
 };
 
 // The corners of a 2-D convex cell in drawing order: sorted by angle about their mean.
-std::vector<std::pair<double, double>> polygon_of(const geom::BspCell& cell) {
+std::vector<std::pair<double, double>> polygon_of(const pipeline::PolytopeCell& cell) {
   std::vector<std::pair<double, double>> corners;
   double cx = 0;
   double cy = 0;
-  for (const geom::Point& v : cell.vertices) {
-    corners.emplace_back(to_double(v[0]), to_double(v[1]));
+  for (const std::vector<double>& v : cell.corners) {
+    corners.emplace_back(v[0], v[1]);
     cx += corners.back().first;
     cy += corners.back().second;
   }
@@ -77,8 +77,8 @@ std::vector<std::pair<double, double>> polygon_of(const geom::BspCell& cell) {
 void draw_polytope_cells(std::ostringstream& out,
                          const pipeline::ContinuousAbstraction& abstraction, const Frame& frame,
                          bool two_d, double low, double high) {
-  for (std::size_t c = 0; c < abstraction.bsp->num_cells(); ++c) {
-    const geom::BspCell& cell = abstraction.bsp->cells()[c];
+  for (std::size_t c = 0; c < abstraction.cells.polytopes.size(); ++c) {
+    const pipeline::PolytopeCell& cell = abstraction.cells.polytopes[c];
     const std::uint32_t z = abstraction.cell_block[c];
     const double shade = high > low ? (abstraction.value[z] - low) / (high - low) : 1;
     const bool rewarded = abstraction.block_reward[z] != 0;
@@ -87,8 +87,8 @@ void draw_polytope_cells(std::ostringstream& out,
       for (const auto& [x, y] : polygon_of(cell))
         out << number(frame.px(x)) << ',' << number(frame.py(y)) << ' ';
     } else {
-      const double a = frame.px(to_double(cell.vertices.front()[0]));
-      const double b = frame.px(to_double(cell.vertices.back()[0]));
+      const double a = frame.px(cell.corners.front()[0]);
+      const double b = frame.px(cell.corners.back()[0]);
       const double top = frame.py(frame.y1);
       out << number(a) << ',' << number(top) << ' ' << number(b) << ',' << number(top) << ' '
           << number(b) << ',' << number(top + 40) << ' ' << number(a) << ',' << number(top + 40);
@@ -103,12 +103,12 @@ void draw_polytope_cells(std::ostringstream& out,
 
 std::string abstraction_svg(const pipeline::ContinuousCatalog& catalog, std::size_t which) {
   const pipeline::ContinuousAbstraction& abstraction = catalog.abstractions[which];
-  const geom::Grid& grid = abstraction.grid;
+  const pipeline::CellPartition& grid = abstraction.cells;
   const Slice slice = slice_of(grid);
-  const auto& xs = grid.breaks_double(0);
+  const auto& xs = grid.breaks[0];
   const bool two_d = slice.shown_axes == 2;
   const std::vector<double> strip{0, 1};
-  const auto& ys = two_d ? grid.breaks_double(1) : strip;
+  const auto& ys = two_d ? grid.breaks[1] : strip;
   Frame frame{xs.front(), xs.back(), ys.front(), ys.back(), 0};
   const double extent = std::max(frame.x1 - frame.x0, two_d ? frame.y1 - frame.y0 : 0.0);
   frame.scale = kPlot / extent;
@@ -126,15 +126,15 @@ std::string abstraction_svg(const pipeline::ContinuousCatalog& catalog, std::siz
   std::ostringstream out;
   out << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << number(width) << "\" height=\""
       << number(height) << "\" font-family=\"sans-serif\" font-size=\"12\">\n";
-  if (abstraction.bsp && grid.dimension() <= 2) {
+  if (abstraction.cells.bsp && grid.dimension() <= 2) {
     draw_polytope_cells(out, abstraction, frame, two_d, low, high);
-  } else if (abstraction.bsp) {
+  } else if (abstraction.cells.bsp) {
     out << "<text x=\"" << number(kMargin) << "\" y=\"" << number(kMargin + 20)
         << "\">polytope cells in more than two dimensions are not drawn</text>\n";
   }
   std::vector<std::uint32_t> index = slice.fixed;
   // A polytope abstraction's grid is its domain box, drawn above as cells: no grid loops.
-  const std::size_t nx = abstraction.bsp ? 0 : grid.intervals(0);
+  const std::size_t nx = abstraction.cells.bsp ? 0 : grid.intervals(0);
   const std::size_t ny = two_d ? grid.intervals(1) : 1;
   auto block_at = [&](std::size_t i, std::size_t j) {
     index[0] = static_cast<std::uint32_t>(i);
@@ -189,7 +189,7 @@ std::string abstraction_svg(const pipeline::ContinuousCatalog& catalog, std::siz
   out << "<text x=\"" << number(kMargin) << "\" y=\"38\">epsilon "
       << number(pipeline::bound_as_double(abstraction.epsilon))
       << (abstraction.exact() ? " (exact bisimulation)" : " (approximation)") << "; "
-      << abstraction.num_cells() << (abstraction.bsp ? " polytope" : "") << " cells, "
+      << abstraction.num_cells() << (abstraction.cells.bsp ? " polytope" : "") << " cells, "
       << abstraction.num_blocks << " blocks"
       << (grid.dimension() > 2 ? "; slice through the centre of the other variables" : "")
       << "</text>\n";

@@ -10,8 +10,8 @@ namespace oasis::codegen {
 namespace {
 
 // A box cell as A x <= b: x_i <= high_i and -x_i <= -low_i for every relevant variable.
-void write_cell(JsonWriter& out, const geom::Grid& grid, const std::vector<std::uint32_t>& index,
-                std::uint32_t block) {
+void write_cell(JsonWriter& out, const pipeline::CellPartition& grid,
+                const std::vector<std::uint32_t>& index, std::uint32_t block) {
   const std::size_t d = grid.dimension();
   out.begin_object();
   out.key("A");
@@ -28,8 +28,8 @@ void write_cell(JsonWriter& out, const geom::Grid& grid, const std::vector<std::
   out.key("b");
   out.begin_array();
   for (std::size_t i = 0; i < d; ++i) {
-    out.value(grid.breaks_double(i)[index[i] + 1]);
-    out.value(-grid.breaks_double(i)[index[i]]);
+    out.value(grid.breaks[i][index[i] + 1]);
+    out.value(-grid.breaks[i][index[i]]);
   }
   out.end_array();
   out.key("block");
@@ -38,21 +38,22 @@ void write_cell(JsonWriter& out, const geom::Grid& grid, const std::vector<std::
 }
 
 // A polytope cell as A x <= b: its irredundant constraints, rounded to nearest doubles.
-void write_polytope_cell(JsonWriter& out, const geom::BspCell& cell, std::uint32_t block) {
+void write_polytope_cell(JsonWriter& out, const pipeline::PolytopeCell& cell,
+                         std::uint32_t block) {
   out.begin_object();
   out.key("A");
   out.begin_array();
-  for (const geom::HalfSpace& row : cell.polytope.constraints()) {
+  for (const std::vector<double>& row : cell.rows) {
     out.begin_array();
-    for (const Rational& a : row.normal)
-      out.value(to_double(a));
+    for (const double a : row)
+      out.value(a);
     out.end_array();
   }
   out.end_array();
   out.key("b");
   out.begin_array();
-  for (const geom::HalfSpace& row : cell.polytope.constraints())
-    out.value(to_double(row.bound));
+  for (const double bound : cell.bounds)
+    out.value(bound);
   out.end_array();
   out.key("block");
   out.value(block);
@@ -61,33 +62,31 @@ void write_polytope_cell(JsonWriter& out, const geom::BspCell& cell, std::uint32
 
 // The BSP as the runtime walks it (rt::BspView): per node its rounded half-space a.x <= c,
 // its children, and the cell of a leaf (null for an internal node).
-void write_bsp(JsonWriter& out, const geom::BspTree& tree) {
-  const std::vector<geom::RoundedBspNode> nodes = tree.rounded_nodes();
+void write_bsp(JsonWriter& out, const pipeline::BspArrays& bsp) {
   out.begin_object();
   out.key("normal");
   out.begin_array();
-  for (const geom::RoundedBspNode& node : nodes)
-    out.embed(node.cell == geom::BspNode::kNone ? nlohmann::json(node.normal)
-                                                : nlohmann::json::array());
+  for (std::size_t node = 0; node < bsp.num_nodes(); ++node) {
+    const auto first = bsp.normal.begin() + static_cast<std::ptrdiff_t>(node * bsp.dimension);
+    out.embed(bsp.is_leaf(node) ? nlohmann::json::array()
+                                : nlohmann::json(std::vector<double>(first, first + bsp.dimension)));
+  }
   out.end_array();
   const auto field = [&](const char* name, const auto& get) {
     out.key(name);
     out.begin_array();
-    for (const geom::RoundedBspNode& node : nodes)
+    for (std::size_t node = 0; node < bsp.num_nodes(); ++node)
       get(node);
     out.end_array();
   };
-  const auto internal = [](const geom::RoundedBspNode& node) {
-    return node.cell == geom::BspNode::kNone;
-  };
-  field("bound", [&](const auto& n) { out.value(internal(n) ? n.bound : 0.0); });
-  field("below", [&](const auto& n) { out.value(internal(n) ? n.below : 0U); });
-  field("above", [&](const auto& n) { out.value(internal(n) ? n.above : 0U); });
-  field("cell", [&](const auto& n) {
-    if (internal(n)) {
-      out.null();
+  field("bound", [&](std::size_t node) { out.value(bsp.bound[node]); });
+  field("below", [&](std::size_t node) { out.value(bsp.below[node]); });
+  field("above", [&](std::size_t node) { out.value(bsp.above[node]); });
+  field("cell", [&](std::size_t node) {
+    if (bsp.is_leaf(node)) {
+      out.value(bsp.cell[node]);
     } else {
-      out.value(n.cell);
+      out.null();
     }
   });
   out.end_object();
@@ -156,23 +155,23 @@ void write_abstraction(JsonWriter& out, const pipeline::ContinuousCatalog& catal
   out.value(abstraction.outside_block);
   out.key("grid");
   out.begin_array();
-  for (std::size_t i = 0; i < abstraction.grid.dimension(); ++i)
-    out.embed(nlohmann::json(abstraction.grid.breaks_double(i)));
+  for (const std::vector<double>& breaks : abstraction.cells.breaks)
+    out.embed(nlohmann::json(breaks));
   out.end_array();
-  if (abstraction.bsp) {
+  if (abstraction.cells.bsp) {
     out.key("bsp");
-    write_bsp(out, *abstraction.bsp);
+    write_bsp(out, *abstraction.cells.bsp);
   }
   out.key("cells");
   out.begin_array();
-  if (abstraction.bsp) {
-    for (std::size_t cell = 0; cell < abstraction.bsp->num_cells(); ++cell)
-      write_polytope_cell(out, abstraction.bsp->cells()[cell], abstraction.cell_block[cell]);
+  if (abstraction.cells.bsp) {
+    for (std::size_t cell = 0; cell < abstraction.cells.polytopes.size(); ++cell)
+      write_polytope_cell(out, abstraction.cells.polytopes[cell], abstraction.cell_block[cell]);
   } else {
-    std::vector<std::uint32_t> index(abstraction.grid.dimension());
-    for (std::size_t cell = 0; cell < abstraction.grid.num_cells(); ++cell) {
-      abstraction.grid.index_of(cell, index);
-      write_cell(out, abstraction.grid, index, abstraction.cell_block[cell]);
+    std::vector<std::uint32_t> index(abstraction.cells.dimension());
+    for (std::size_t cell = 0; cell < abstraction.cells.num_cells(); ++cell) {
+      abstraction.cells.index_of(cell, index);
+      write_cell(out, abstraction.cells, index, abstraction.cell_block[cell]);
     }
   }
   out.end_array();

@@ -10,6 +10,8 @@
 #include "geom/grid_refinement.hpp"
 #include "geom/polytope_mdp.hpp"
 #include "geom/polytope_partition.hpp"
+#include "geom/relevance.hpp"
+#include "oasis/rt/bsp_locator.hpp"
 #include "policy/value_iteration.hpp"
 
 namespace oasis::pipeline {
@@ -27,7 +29,7 @@ double seconds_since(Clock::time_point& start) {
 std::string describe_partition(const ContinuousAbstraction& abstraction) {
   char text[96];
   std::snprintf(text, sizeof text, "%s of %zu cells, epsilon %.4g",
-                abstraction.bsp ? "polytope partition" : "grid", abstraction.num_cells(),
+                abstraction.cells.bsp ? "polytope partition" : "grid", abstraction.num_cells(),
                 to_double(abstraction.epsilon));
   return text;
 }
@@ -48,6 +50,54 @@ std::string above_target(const ContinuousAbstraction& abstraction, std::size_t m
          short_number(target) + "; raise --max-cells (or the spec's max_cells) to reach it";
 }
 
+// The grid's breakpoints as doubles: a grid abstraction's cells, or the polytope path's box.
+CellPartition grid_cells(const geom::Grid& grid) {
+  CellPartition cells;
+  for (std::size_t i = 0; i < grid.dimension(); ++i)
+    cells.breaks.push_back(grid.breaks_double(i));
+  return cells;
+}
+
+BspArrays bsp_arrays(const geom::BspTree& tree) {
+  BspArrays bsp;
+  bsp.dimension = static_cast<std::uint32_t>(tree.dimension());
+  for (const geom::RoundedBspNode& node : tree.rounded_nodes()) {
+    const bool leaf = node.cell != geom::BspNode::kNone;
+    for (std::size_t i = 0; i < tree.dimension(); ++i)
+      bsp.normal.push_back(leaf ? 0.0 : node.normal[i]);
+    bsp.bound.push_back(leaf ? 0.0 : node.bound);
+    bsp.below.push_back(leaf ? 0 : node.below);
+    bsp.above.push_back(leaf ? 0 : node.above);
+    bsp.cell.push_back(leaf ? node.cell : rt::kInternalNode);
+  }
+  return bsp;
+}
+
+PolytopeCell polytope_cell(const geom::BspCell& cell) {
+  PolytopeCell plain;
+  for (const geom::HalfSpace& row : cell.polytope.constraints()) {
+    std::vector<double>& a = plain.rows.emplace_back();
+    for (const Rational& coefficient : row.normal)
+      a.push_back(to_double(coefficient));
+    plain.bounds.push_back(to_double(row.bound));
+  }
+  for (const geom::Point& vertex : cell.vertices) {
+    std::vector<double>& corner = plain.corners.emplace_back();
+    for (const Rational& x : vertex)
+      corner.push_back(to_double(x));
+  }
+  return plain;
+}
+
+// The polytope path's cells: the domain box, refined by the tree.
+CellPartition polytope_cells(const geom::Grid& box, const geom::BspTree& tree) {
+  CellPartition cells = grid_cells(box);
+  cells.bsp = bsp_arrays(tree);
+  for (const geom::BspCell& cell : tree.cells())
+    cells.polytopes.push_back(polytope_cell(cell));
+  return cells;
+}
+
 }  // namespace
 
 namespace {
@@ -63,12 +113,12 @@ bool partition_by_grid(const geom::ContextGeometry& geometry, const model::Model
   if (!partition) return false;
   result.epsilon = partition->epsilon;
   result.met = partition->met;
-  result.grid = std::move(partition->grid);
+  result.cells = grid_cells(partition->grid);
   if (!result.met && options.warn)
     options.warn(result.context, above_target(result, options.max_cells.value_or(kDefaultGridCells),
                                               options.epsilon));
   result.seconds.grid = seconds_since(start);
-  mdp = geom::finite_mdp(geometry, result.grid, ir.actions, ir.objective);
+  mdp = geom::finite_mdp(geometry, partition->grid, ir.actions, ir.objective);
   return true;
 }
 
@@ -110,14 +160,14 @@ bool partition_by_polytopes(const geom::PolytopeGeometry& geometry, const model:
   std::vector<std::vector<Rational>> box;
   for (std::size_t i = 0; i < geometry.dimension(); ++i)
     box.push_back({geometry.domain_low[i], geometry.domain_high[i]});
-  result.grid = geom::Grid(std::move(box));
+  const geom::Grid domain(std::move(box));
   result.seconds.grid = seconds_since(start);
   geom::PolytopeMdp finite =
       geom::polytope_finite_mdp(geometry, *partition, ir.actions, ir.objective);
   result.epsilon = finite.epsilon;
   result.met = finite.epsilon <= target.epsilon;
   mdp = std::move(finite.mdp);
-  result.bsp = std::move(partition->tree);
+  result.cells = polytope_cells(domain, partition->tree);
   if (!result.met && options.warn)
     options.warn(result.context, above_target(result, target.max_cells, options.epsilon));
   return true;
@@ -131,15 +181,17 @@ std::optional<ContinuousAbstraction> abstract_context(const model::ModelIR& ir, 
   Clock::time_point start = Clock::now();
   ContinuousAbstraction result;
   result.context = ir.contexts[context].name;
-  result.relevance =
+  const geom::Relevance relevance =
       options.attention ? geom::analyse_relevance(ir, context) : geom::full_state(ir);
+  result.axes = relevance.relevant;
+  result.projection_exact = relevance.exact();
   std::optional<model::ExplicitModel> mdp;
   std::string grid_refusal;
-  if (const auto geometry = geom::context_geometry(ir, context, result.relevance, grid_refusal)) {
+  if (const auto geometry = geom::context_geometry(ir, context, relevance, grid_refusal)) {
     if (!partition_by_grid(*geometry, ir, options, result, start, mdp, error)) return std::nullopt;
   } else {
     std::string polytope_refusal;
-    const auto polytopes = geom::polytope_geometry(ir, context, result.relevance, polytope_refusal);
+    const auto polytopes = geom::polytope_geometry(ir, context, relevance, polytope_refusal);
     if (!polytopes) {
       // Both refusals name the context; say it once.
       const std::string named = "context ";
@@ -160,7 +212,7 @@ std::optional<ContinuousAbstraction> abstract_context(const model::ModelIR& ir, 
   report("finite MDP, " + std::to_string(result.finite_edges) + " edges",
          result.seconds.finite_mdp);
 
-  const bisim::Partition blocks = bisim::coarsest_bisimulation(*mdp, 0);
+  const model::Partition blocks = bisim::coarsest_bisimulation(*mdp, 0);
   const std::size_t cells = result.num_cells();
   result.cell_block.assign(blocks.block_of.begin(), blocks.block_of.begin() + cells);
   result.outside_block = blocks.block_of[cells];

@@ -4,7 +4,8 @@
 // or, when the context is not product-structured, convex polytope cells (the CGAL path,
 // geom/polytope_partition.hpp), the finite MDP of the cells (geom/finite_mdp.hpp,
 // geom/polytope_mdp.hpp), its coarsest bisimulation (cells with
-// equal rows merge into one block) and the policy solved on the quotient.
+// equal rows merge into one block) and the policy solved on the quotient. The result holds
+// plain values only (cell_partition.hpp): the geometry stays in this layer and below.
 
 #include <cstdint>
 #include <functional>
@@ -12,11 +13,9 @@
 #include <string>
 #include <vector>
 
-#include "geom/bsp_tree.hpp"
-#include "geom/grid.hpp"
-#include "geom/relevance.hpp"
 #include "model/explicit_model.hpp"
 #include "model/model_ir.hpp"
+#include "pipeline/cell_partition.hpp"
 #include "policy/objective.hpp"
 
 namespace oasis::pipeline {
@@ -48,11 +47,11 @@ struct StageSeconds {
 
 struct ContinuousAbstraction {
   std::string context;
-  geom::Relevance relevance;            // relevance.relevant: the grid's axes, in order
-  std::vector<std::string> axis_names;  // their variable names
-  geom::Grid grid;  // the polytope path: the domain box, one cell, refined by `bsp`
-  // The polytope path's partition (geom/bsp_tree.hpp): its cells are the abstraction's.
-  std::optional<geom::BspTree> bsp;
+  // The relevant variables (geom/relevance.hpp): the grid's axes, in order, and their names.
+  std::vector<std::uint32_t> axes;
+  std::vector<std::string> axis_names;
+  bool projection_exact = true;  // the projection onto `axes` is an exact bisimulation
+  CellPartition cells;           // in plain values: what the emitters read
   Rational epsilon;  // the sound bound on every row's error (0: exact bisimulation)
   bool met = false;  // epsilon <= the target
   std::vector<std::uint32_t> cell_block;  // [cells] the block of every cell
@@ -65,8 +64,8 @@ struct ContinuousAbstraction {
   std::size_t finite_edges = 0;       // edges of the finite MDP before quotienting
   StageSeconds seconds;
 
-  [[nodiscard]] std::size_t num_cells() const { return bsp ? bsp->num_cells() : grid.num_cells(); }
-  [[nodiscard]] bool exact() const { return sgn(epsilon) == 0 && relevance.exact(); }
+  [[nodiscard]] std::size_t num_cells() const { return cells.num_cells(); }
+  [[nodiscard]] bool exact() const { return sgn(epsilon) == 0 && projection_exact; }
 };
 
 // nullopt with `error` when the context is outside what the geometry path handles, or the

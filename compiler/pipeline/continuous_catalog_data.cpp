@@ -5,17 +5,13 @@
 namespace oasis::pipeline {
 namespace {
 
-void add_bsp(const geom::BspTree& tree, AbstractionData& data) {
-  data.bsp_cells = static_cast<std::uint32_t>(tree.num_cells());
-  for (const geom::RoundedBspNode& node : tree.rounded_nodes()) {
-    const bool leaf = node.cell != geom::BspNode::kNone;
-    for (std::size_t i = 0; i < tree.dimension(); ++i)
-      data.bsp_normal.push_back(leaf ? 0.0 : node.normal[i]);
-    data.bsp_bound.push_back(leaf ? 0.0 : node.bound);
-    data.bsp_below.push_back(leaf ? 0 : node.below);
-    data.bsp_above.push_back(leaf ? 0 : node.above);
-    data.bsp_cell.push_back(leaf ? node.cell : rt::kInternalNode);
-  }
+void add_bsp(const CellPartition& cells, AbstractionData& data) {
+  data.bsp_cells = static_cast<std::uint32_t>(cells.num_cells());
+  data.bsp_normal = cells.bsp->normal;
+  data.bsp_bound = cells.bsp->bound;
+  data.bsp_below = cells.bsp->below;
+  data.bsp_above = cells.bsp->above;
+  data.bsp_cell = cells.bsp->cell;
 }
 
 AbstractionData abstraction_data(const pipeline::ContinuousAbstraction& abstraction,
@@ -33,14 +29,13 @@ AbstractionData abstraction_data(const pipeline::ContinuousAbstraction& abstract
   }
   data.policy = abstraction.policy;
   data.value = abstraction.value;
-  data.grid_axes = abstraction.relevance.relevant;
+  data.grid_axes = abstraction.axes;
   data.grid_break_begin.push_back(0);
-  for (std::size_t i = 0; i < abstraction.grid.dimension(); ++i) {
-    const std::vector<double>& breaks = abstraction.grid.breaks_double(i);
+  for (const std::vector<double>& breaks : abstraction.cells.breaks) {
     data.grid_breaks.insert(data.grid_breaks.end(), breaks.begin(), breaks.end());
     data.grid_break_begin.push_back(static_cast<std::uint32_t>(data.grid_breaks.size()));
   }
-  if (abstraction.bsp) add_bsp(*abstraction.bsp, data);
+  if (abstraction.cells.bsp) add_bsp(abstraction.cells, data);
   data.cell_block = abstraction.cell_block;
   data.outside_block = abstraction.outside_block;
   data.epsilon = bound_as_double(abstraction.epsilon);

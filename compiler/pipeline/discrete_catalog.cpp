@@ -35,13 +35,13 @@ DiscreteAbstraction abstract_one(const model::ExplicitModel& model, std::size_t 
 // The detection model compares an observed reward with R(s) of the block: every member must
 // have the same state reward.
 bool block_rewards(const model::ExplicitModel& model, std::size_t context,
-                   const bisim::Partition& partition, std::vector<double>& out,
+                   const model::Partition& partition, std::vector<double>& out,
                    std::string& error) {
   const model::RewardTable& rewards = model.contexts[context].rewards;
   std::vector<std::optional<ValueId>> seen(partition.num_blocks);
   out.assign(partition.num_blocks, 0.0);
   for (model::StateIndex s = 0; s < model.num_states(); ++s) {
-    const bisim::BlockIndex z = partition.block_of[s];
+    const model::BlockIndex z = partition.block_of[s];
     const ValueId id = rewards.state[s];
     if (!seen[z]) {
       seen[z] = id;

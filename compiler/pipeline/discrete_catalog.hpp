@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "bisim/partition.hpp"
+#include "model/partition.hpp"
 #include "bisim/refinement.hpp"
 #include "model/explicit_model.hpp"
 #include "pipeline/catalog_data.hpp"
@@ -33,7 +33,7 @@ struct DiscreteOptions {
 
 struct DiscreteAbstraction {
   std::size_t context = 0;  // index into the model's contexts
-  bisim::Partition partition;
+  model::Partition partition;
   bisim::RefinementStatistics statistics;
   double refinement_seconds = 0;
   // With DiscreteOptions::solve only:

@@ -25,7 +25,7 @@ TEST(ContinuousAbstraction, DeterministicLineIsAnExactBisimulationWithTheObvious
   const auto abstraction = pipeline::abstract_context(ir, 0, {}, error);
   ASSERT_TRUE(abstraction) << error;
   EXPECT_TRUE(abstraction->exact());
-  EXPECT_EQ(abstraction->grid.num_cells(), 10U);
+  EXPECT_EQ(abstraction->num_cells(), 10U);
   EXPECT_EQ(abstraction->num_blocks, 11U);
   // Left of the goal go right, right of it go left; the goal's own cell cannot stay, and
   // leaving it either way comes back in two steps: both are optimal, the lower index wins.
@@ -52,14 +52,16 @@ TEST(ContinuousAbstraction, Go1ContextAttendsToItsHumanAndMeetsTheTarget) {
   EXPECT_TRUE(abstraction->met);
   EXPECT_FALSE(abstraction->exact());
   EXPECT_LE(to_double(abstraction->epsilon), 0.3);
-  ASSERT_EQ(abstraction->cell_block.size(), abstraction->grid.num_cells());
+  ASSERT_EQ(abstraction->cell_block.size(), abstraction->num_cells());
   ASSERT_EQ(abstraction->policy.size(), abstraction->num_blocks);
   // The best place is in reach of human 2: the reward region's cells have the top value.
   const double best = *std::max_element(abstraction->value.begin(), abstraction->value.end());
   const double in_reach[2] = {0.55, 0.0};
-  const auto cell = abstraction->grid.locate(std::span<const double>(in_reach, 2));
-  ASSERT_TRUE(cell);
-  const std::uint32_t block = abstraction->cell_block[*cell];
+  const auto x = abstraction->cells.locate(0, in_reach[0]);
+  const auto y = abstraction->cells.locate(1, in_reach[1]);
+  ASSERT_TRUE(x && y);
+  const std::uint32_t index[2] = {*x, *y};
+  const std::uint32_t block = abstraction->cell_block[abstraction->cells.cell_of(index)];
   EXPECT_EQ(abstraction->block_reward[block], 1.0);
   EXPECT_NEAR(abstraction->value[block], best, 0.2 * best);
 }

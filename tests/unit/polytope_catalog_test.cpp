@@ -18,6 +18,8 @@
 #include "../support/spec_models.hpp"
 #include "codegen/binary_catalog.hpp"
 #include "codegen/continuous_json.hpp"
+#include "geom/polytope_partition.hpp"
+#include "geom/relevance.hpp"
 #include "oasis/rt/attention_filter.hpp"
 #include "oasis/rt/catalog_file.hpp"
 #include "pipeline/continuous_catalog.hpp"
@@ -45,6 +47,30 @@ const pipeline::ContinuousCatalog& triangle_catalog() {
   return catalog;
 }
 
+// The exact BSP of a context, made again by the geometry layer with the options the pipeline
+// used: the catalog holds only its rounded arrays and cells (pipeline/cell_partition.hpp).
+const geom::BspTree& exact_tree(std::size_t context) {
+  static const std::vector<geom::BspTree> trees = [] {
+    std::vector<geom::BspTree> made;
+    for (std::size_t c = 0; c < triangle_ir().contexts.size(); ++c) {
+      std::string error;
+      const auto geometry = geom::polytope_geometry(
+          triangle_ir(), c, geom::analyse_relevance(triangle_ir(), c), error);
+      EXPECT_TRUE(geometry) << error;
+      geom::PolytopePartitionOptions target;
+      target.epsilon = Rational(0.3);
+      target.max_cells = pipeline::kDefaultPolytopeCells;
+      auto partition = geom::partition_polytopes(*geometry, target, error);
+      EXPECT_TRUE(partition) << error;
+      made.push_back(std::move(partition->tree));
+    }
+    return made;
+  }();
+  const geom::BspTree& tree = trees.at(context);
+  EXPECT_EQ(tree.num_cells(), triangle_catalog().abstractions[context].num_cells());
+  return tree;
+}
+
 std::string first_failure(const pipeline::CatalogData& catalog) {
   const std::string bytes = codegen::binary_catalog(catalog);
   const rt::LoadedCatalog loaded = rt::LoadedCatalog::from_bytes(bytes.data(), bytes.size());
@@ -59,10 +85,11 @@ TEST(PolytopeCatalog, TheGridRefusesTheSpecAndThePolytopePathTakesIt) {
   const pipeline::ContinuousCatalog& catalog = triangle_catalog();
   ASSERT_EQ(catalog.abstractions.size(), 2U);
   for (const pipeline::ContinuousAbstraction& abstraction : catalog.abstractions) {
-    ASSERT_TRUE(abstraction.bsp);
+    ASSERT_TRUE(abstraction.cells.bsp);
     EXPECT_TRUE(abstraction.met);
     EXPECT_LE(abstraction.epsilon, Rational(3, 10));
-    EXPECT_EQ(abstraction.grid.num_cells(), 1U);  // the domain box
+    for (const std::vector<double>& axis : abstraction.cells.breaks)
+      EXPECT_EQ(axis.size(), 2U);  // the grid is the domain box, one cell
     EXPECT_GT(abstraction.num_cells(), 10U);
     EXPECT_EQ(abstraction.cell_block.size(), abstraction.num_cells());
   }
@@ -78,7 +105,7 @@ TEST(PolytopeCatalog, LoadedLocatorAgreesWithExactLocation) {
   std::uniform_real_distribution<double> coordinate(-0.2, 2.2);
   for (std::uint32_t i = 0; i < 2; ++i) {
     const rt::AbstractionView& abs = loaded.view().abstractions[i];
-    const geom::BspTree& tree = *catalog.abstractions[i].bsp;
+    const geom::BspTree& tree = exact_tree(i);
     for (int k = 0; k < 20000; ++k) {
       const double x[2] = {coordinate(random), coordinate(random)};
       const auto exact = tree.locate({Rational(x[0]), Rational(x[1])});
@@ -101,7 +128,7 @@ TEST(PolytopeCatalog, JsonCellsHoldTheirRepresentativePoints) {
   const nlohmann::json json =
       nlohmann::json::parse(codegen::continuous_catalog_json(catalog, false));
   const auto& abstraction = json["abstractions"][0];
-  const geom::BspTree& tree = *catalog.abstractions[0].bsp;
+  const geom::BspTree& tree = exact_tree(0);
   ASSERT_EQ(abstraction["cells"].size(), tree.num_cells());
   for (std::size_t c = 0; c < tree.num_cells(); ++c) {
     const auto& cell = abstraction["cells"][c];
