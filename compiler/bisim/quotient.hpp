@@ -4,11 +4,10 @@
 // block's smallest state, which every other member shares when the partition is a
 // bisimulation.
 
-#include "model/partition.hpp"
 #include "model/explicit_model.hpp"
+#include "model/partition.hpp"
 
 namespace oasis::bisim {
-
 
 // A one-context model named like `model`, whose context has the context's name.
 model::ExplicitModel build_quotient(const model::ExplicitModel& model, std::size_t context,

@@ -10,8 +10,8 @@
 #include <functional>
 #include <optional>
 
-#include "model/partition.hpp"
 #include "model/explicit_model.hpp"
+#include "model/partition.hpp"
 
 namespace oasis::bisim {
 

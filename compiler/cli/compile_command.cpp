@@ -19,9 +19,9 @@
 #include "codegen/cpp_catalog.hpp"
 #include "codegen/dot_catalog.hpp"
 #include "codegen/json_catalog.hpp"
+#include "model/catalog_data.hpp"
 #include "oasis/rt/catalog_sections.hpp"
 #include "oasis/rt/spec_hash.hpp"
-#include "pipeline/catalog_data.hpp"
 #include "pipeline/continuous_catalog.hpp"
 #include "pipeline/continuous_catalog_data.hpp"
 #include "pipeline/discrete_catalog.hpp"
@@ -124,8 +124,8 @@ std::string one_file_error(const CompileOptions& options, std::size_t contexts) 
 // The binary file from `data`; the C++ tables from `linked`, which is `data` for discrete
 // catalogs and the catalog without its transition rows for continuous ones (a robot links
 // the partition, rewards and policies, not the analysis product).
-bool write_common(const CompileOptions& options, const pipeline::CatalogData& data,
-                  const pipeline::CatalogData& linked, OutputSet& out, std::string& error) {
+bool write_common(const CompileOptions& options, const model::CatalogData& data,
+                  const model::CatalogData& linked, OutputSet& out, std::string& error) {
   if (wants(options, "bin")) {
     const std::string bytes = codegen::binary_catalog(data);
     // Never write a catalog the runtime's loader would refuse.
@@ -146,7 +146,7 @@ bool write_common(const CompileOptions& options, const pipeline::CatalogData& da
          out.write(basename + ".cpp", sources.source, error);
 }
 
-bool write_discrete(const CompileOptions& options, pipeline::CatalogData& data, OutputSet& out,
+bool write_discrete(const CompileOptions& options, model::CatalogData& data, OutputSet& out,
                     std::string& error) {
   if (out.to_standard_output() &&
       !(error = one_file_error(options, data.abstractions.size())).empty())
@@ -168,10 +168,10 @@ bool write_continuous(const CompileOptions& options, const pipeline::ContinuousC
   if (out.to_standard_output() &&
       !(error = one_file_error(options, catalog.abstractions.size())).empty())
     return false;
-  pipeline::CatalogData data = pipeline::continuous_catalog_data(catalog, options.with_transitions);
-  pipeline::CatalogData linked = options.with_transitions && wants(options, "cpp")
-                                     ? pipeline::continuous_catalog_data(catalog, false)
-                                     : pipeline::CatalogData{};
+  model::CatalogData data = pipeline::continuous_catalog_data(catalog, options.with_transitions);
+  model::CatalogData linked = options.with_transitions && wants(options, "cpp")
+                                  ? pipeline::continuous_catalog_data(catalog, false)
+                                  : model::CatalogData{};
   if (!write_common(options, data, options.with_transitions ? linked : data, out, error))
     return false;
   const auto stream_json = [&](AtomicFile& file) {
@@ -253,7 +253,7 @@ int run_compile(CompileOptions options) {
                  "--epsilon E' explores a rounded quotient of a model with noisy "
                  "probabilities)\n";
   }
-  const std::uint64_t hash = pipeline::spec_hash_of_file(options.spec);
+  const std::uint64_t hash = loaded->source_hash;
   if (options.output.empty()) options.output = fs::path(options.spec).stem().string();
   const bool to_standard_output = options.output == "-";
   // Refused before the build when the formats alone decide it (the context count may not).

@@ -97,7 +97,7 @@ bool deliver_fragment(const std::string& fragment, const std::string& path) {
 // A spec that must be discrete, and its catalog compiled in memory.
 struct CompiledSpec {
   std::optional<LoadedModel> loaded;
-  std::optional<pipeline::CatalogData> catalog;
+  std::optional<model::CatalogData> catalog;
 };
 
 std::optional<CompiledSpec> compile_spec(const std::string& path, const CommonOptions& common,
@@ -112,8 +112,7 @@ std::optional<CompiledSpec> compile_spec(const std::string& path, const CommonOp
     return std::nullopt;
   }
   std::string error;
-  out.catalog =
-      pipeline::build_catalog(*out.loaded->model, pipeline::spec_hash_of_file(path), {}, error);
+  out.catalog = pipeline::build_catalog(*out.loaded->model, out.loaded->source_hash, {}, error);
   if (!out.catalog) {
     std::cerr << path << ": error: " << error << '\n';
     return std::nullopt;
@@ -150,7 +149,7 @@ int run_switching(const SwitchingOptions& options) {
   DiagnosticEngine diagnostics(sources, std::cerr, options.common.max_errors);
   auto compiled = compile_spec(options.spec, options.common, sources, diagnostics);
   if (!compiled) return 1;
-  const pipeline::CatalogData& catalog = *compiled->catalog;
+  const model::CatalogData& catalog = *compiled->catalog;
   const model::ExplicitModel& model = *compiled->loaded->model;
 
   fit::LogNames names{catalog.state_names, catalog.action_names};
@@ -209,7 +208,7 @@ int run_switching(const SwitchingOptions& options) {
   }
   const fit::SwitchingFit& fitted = *result;
   std::vector<std::string> contexts;
-  for (const pipeline::AbstractionData& abstraction : catalog.abstractions)
+  for (const model::AbstractionData& abstraction : catalog.abstractions)
     contexts.push_back(abstraction.context);
 
   std::cout << "fit switching: " << fitted.runs << (fitted.runs == 1 ? " run, " : " runs, ")

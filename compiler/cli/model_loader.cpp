@@ -4,9 +4,10 @@
 #include <iostream>
 
 #include "formats/model_file.hpp"
-#include "model/explorer.hpp"
-#include "policy/solvability.hpp"
 #include "frontend/load_spec.hpp"
+#include "model/explorer.hpp"
+#include "oasis/rt/spec_hash.hpp"
+#include "policy/solvability.hpp"
 
 namespace oasis::cli {
 namespace {
@@ -22,6 +23,9 @@ std::optional<LoadedModel> load_model(const std::string& path, SourceManager& so
                                       DiagnosticEngine& diagnostics, const LoadOptions& options) {
   LoadedModel loaded;
   loaded.path = path;
+  // The input is the first file the front end or the reader adds; hash the bytes it parsed.
+  const FileId input = sources.num_files();
+  const auto hash_input = [&] { loaded.source_hash = rt::spec_hash(sources.file(input).text()); };
   if (path.ends_with(".aut") || path.ends_with(".tra")) {
     formats::ReadOptions read_options;
     read_options.max_bytes = options.max_input_bytes;
@@ -29,6 +33,7 @@ std::optional<LoadedModel> load_model(const std::string& path, SourceManager& so
     read_options.max_states = options.max_states;
     loaded.model = formats::read_model_file(path, sources, diagnostics, read_options);
     if (!loaded.model) return std::nullopt;
+    hash_input();
     if (const auto reason = policy::unsolvable_reason(*loaded.model)) {
       diagnostics.file_error(path, *reason);
       return std::nullopt;
@@ -39,6 +44,7 @@ std::optional<LoadedModel> load_model(const std::string& path, SourceManager& so
       path, sources, diagnostics,
       {.max_bytes = options.max_spec_bytes, .max_number_bits = options.max_number_bits});
   if (!loaded.ir) return std::nullopt;
+  hash_input();
   if (!options.explore || loaded.ir->kind == model::ModelKind::Continuous) return loaded;
 
   model::ExploreOptions explore_options{.max_states = options.max_states, .progress = {}};

@@ -26,6 +26,9 @@ struct LoadedModel {
   std::string path;
   std::optional<model::ModelIR> ir;           // specs only
   std::optional<model::ExplicitModel> model;  // discrete specs and imports
+  // rt::spec_hash of the bytes the front end or the reader parsed, read once: a catalog
+  // remembers which spec it was compiled from by it.
+  std::uint64_t source_hash = 0;
 };
 
 // nullopt after reporting errors through `diagnostics`.

@@ -8,12 +8,13 @@
 
 #include "cli/commands.hpp"
 #include "cli/number_options.hpp"
-#include "codegen/continuous_json_reader.hpp"
+#include "model/catalog_data.hpp"
 #include "oasis/rt/catalog_file.hpp"
+#include "oasis/rt/catalog_validation.hpp"
 #include "oasis/rt/spec_hash.hpp"
-#include "pipeline/catalog_data.hpp"
-#include "verify/catalog_check.hpp"
 #include "verify/continuous_check.hpp"
+#include "verify/continuous_json_reader.hpp"
+#include "verify/discrete_catalog_check.hpp"
 #include "verify/partition_result_reader.hpp"
 #include "verify/stated_cells_check.hpp"
 #include "verify/verifier.hpp"
@@ -30,9 +31,10 @@ struct VerifyOptions {
 
 int print_checks(const std::vector<verify::CatalogCheck>& checks);
 
-// True when `view` was compiled from MODEL's very bytes; otherwise says so.
-bool compiled_from_model(const VerifyOptions& options, const rt::CatalogView& view) {
-  const std::uint64_t hash = pipeline::spec_hash_of_file(options.model);
+// True when `view` was compiled from MODEL's very bytes (`hash`: of the bytes the front end
+// or the reader parsed); otherwise says so.
+bool compiled_from_model(const VerifyOptions& options, std::uint64_t hash,
+                         const rt::CatalogView& view) {
   if (view.spec_hash == hash) return true;
   std::cerr << options.result << ": error: the catalog was compiled from another spec (hash "
             << rt::spec_hash_text(view.spec_hash) << ", this one has " << rt::spec_hash_text(hash)
@@ -41,28 +43,30 @@ bool compiled_from_model(const VerifyOptions& options, const rt::CatalogView& vi
 }
 
 // `verify MODEL CATALOG.bin`: the file loads (magic, checksum, structure), was compiled from
-// this spec, and every item it carries holds (verify/catalog_check.hpp).
-int verify_catalog(const VerifyOptions& options, const model::ExplicitModel& model) {
+// this spec, and every item it carries holds (verify/discrete_catalog_check.hpp).
+int verify_catalog(const VerifyOptions& options, const model::ExplicitModel& model,
+                   std::uint64_t hash) {
   const rt::LoadedCatalog catalog = rt::LoadedCatalog::from_file(options.result);
   if (!catalog.ok()) {
     std::cerr << catalog.error() << '\n';
     return 1;
   }
   const rt::CatalogView& view = catalog.view();
-  if (!compiled_from_model(options, view)) return 1;
+  if (!compiled_from_model(options, hash, view)) return 1;
   if (view.is_continuous()) {
     std::cerr << options.result << ": error: a continuous catalog, but the model is explicit\n";
     return 1;
   }
-  return print_checks(verify::check_catalog(model, view, {.robust_p_correct = options.p_correct}));
+  return print_checks(
+      verify::check_discrete_catalog(model, view, {.robust_p_correct = options.p_correct}));
 }
 
 // The checks of a continuous catalog, whichever file it came from (the binary file, loaded
 // and validated, or the JSON, read back and validated).
 int check_continuous_view(const VerifyOptions& options, const model::ModelIR& ir,
-                          const rt::CatalogView& view,
-                          const codegen::StatedCells* stated = nullptr) {
-  if (!compiled_from_model(options, view)) return 1;
+                          std::uint64_t hash, const rt::CatalogView& view,
+                          const verify::StatedCells* stated = nullptr) {
+  if (!compiled_from_model(options, hash, view)) return 1;
   if (!view.is_continuous()) {
     std::cerr << options.result
               << ": error: an explicit model's catalog, but the spec is "
@@ -77,11 +81,11 @@ int check_continuous_view(const VerifyOptions& options, const model::ModelIR& ir
   return print_checks(checks);
 }
 
-int verify_continuous(const VerifyOptions& options, const model::ModelIR& ir) {
+int verify_continuous(const VerifyOptions& options, const model::ModelIR& ir, std::uint64_t hash) {
   if (options.result.ends_with(".json")) {
     std::string error;
-    codegen::StatedCells stated;  // the JSON's own cells, checked against the partition
-    auto data = codegen::read_continuous_catalog_json(
+    verify::StatedCells stated;  // the JSON's own cells, checked against the partition
+    auto data = verify::read_continuous_catalog_json(
         options.result, options.common.load.max_input_bytes, error, &stated);
     if (!data) {
       std::cerr << options.result << ": error: " << error << '\n';
@@ -92,14 +96,14 @@ int verify_continuous(const VerifyOptions& options, const model::ModelIR& ir) {
       std::cerr << options.result << ": error: invalid catalog: " << error << '\n';
       return 1;
     }
-    return check_continuous_view(options, ir, view, &stated);
+    return check_continuous_view(options, ir, hash, view, &stated);
   }
   const rt::LoadedCatalog catalog = rt::LoadedCatalog::from_file(options.result);
   if (!catalog.ok()) {
     std::cerr << catalog.error() << '\n';
     return 1;
   }
-  return check_continuous_view(options, ir, catalog.view());
+  return check_continuous_view(options, ir, hash, catalog.view());
 }
 
 int print_checks(const std::vector<verify::CatalogCheck>& checks) {
@@ -117,11 +121,11 @@ int run_verify(const VerifyOptions& options) {
   auto loaded =
       load_model(options.model, sources, diagnostics, effective_load_options(options.common));
   if (!loaded || diagnostics.has_errors()) return 1;
-  if (!loaded->model) return verify_continuous(options, *loaded->ir);
+  if (!loaded->model) return verify_continuous(options, *loaded->ir, loaded->source_hash);
   const model::ExplicitModel& model = *loaded->model;
   std::string error;
   // A compiled binary catalog (oasisc compile): everything it carries is checked.
-  if (options.result.ends_with(".bin")) return verify_catalog(options, model);
+  if (options.result.ends_with(".bin")) return verify_catalog(options, model, loaded->source_hash);
   const auto result = verify::read_partition_result(options.result, model,
                                                     options.common.load.max_input_bytes, error);
   if (!result) {

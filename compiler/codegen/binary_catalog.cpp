@@ -73,7 +73,7 @@ class Builder {
 };
 
 // All strings in one NUL-separated text, in the order the loader expects.
-void add_strings(const pipeline::CatalogData& catalog, Builder& out) {
+void add_strings(const model::CatalogData& catalog, Builder& out) {
   std::string text;
   std::vector<std::uint32_t> offsets;
   auto add = [&](const std::string& s) {
@@ -87,7 +87,7 @@ void add_strings(const pipeline::CatalogData& catalog, Builder& out) {
     add(action);
   for (const std::string& state : catalog.state_names)
     add(state);
-  for (const pipeline::AbstractionData& abstraction : catalog.abstractions)
+  for (const model::AbstractionData& abstraction : catalog.abstractions)
     add(abstraction.context);
   for (const std::string& variable : catalog.variable_names)
     add(variable);
@@ -95,7 +95,7 @@ void add_strings(const pipeline::CatalogData& catalog, Builder& out) {
   out.section(rt::Section::kStringOffsets, rt::kCatalogWide, offsets);
 }
 
-void add_csr(const pipeline::CsrData& csr, std::uint32_t abstraction, rt::Section rows,
+void add_csr(const model::CsrData& csr, std::uint32_t abstraction, rt::Section rows,
              rt::Section targets, rt::Section probabilities, Builder& out) {
   if (csr.choice_begin.empty()) return;  // absent: an optional section, or no robust section
   out.section(rows, abstraction, csr.choice_begin);
@@ -103,7 +103,7 @@ void add_csr(const pipeline::CsrData& csr, std::uint32_t abstraction, rt::Sectio
   out.section(probabilities, abstraction, csr.probability);
 }
 
-void add_grid(const pipeline::AbstractionData& abstraction, std::uint32_t i, Builder& out) {
+void add_grid(const model::AbstractionData& abstraction, std::uint32_t i, Builder& out) {
   out.section(rt::Section::kGridAxes, i, abstraction.grid_axes);
   out.section(rt::Section::kGridBreakBegin, i, abstraction.grid_break_begin);
   out.section(rt::Section::kGridBreaks, i, abstraction.grid_breaks);
@@ -123,7 +123,7 @@ void add_grid(const pipeline::AbstractionData& abstraction, std::uint32_t i, Bui
 
 }  // namespace
 
-std::string binary_catalog(const pipeline::CatalogData& catalog) {
+std::string binary_catalog(const model::CatalogData& catalog) {
   const auto n = static_cast<std::uint32_t>(catalog.abstractions.size());
   Builder out;
   out.put_at<std::uint64_t>(0, rt::kCatalogMagic);
@@ -153,11 +153,11 @@ std::string binary_catalog(const pipeline::CatalogData& catalog) {
   out.section(rt::Section::kSwitching, rt::kCatalogWide, catalog.switching);
   out.section(rt::Section::kPrior, rt::kCatalogWide, catalog.prior);
   std::vector<std::uint32_t> blocks;
-  for (const pipeline::AbstractionData& abstraction : catalog.abstractions)
+  for (const model::AbstractionData& abstraction : catalog.abstractions)
     blocks.push_back(abstraction.num_blocks);
   out.section(rt::Section::kBlockCounts, rt::kCatalogWide, blocks);
   for (std::uint32_t i = 0; i < n; ++i) {
-    const pipeline::AbstractionData& abstraction = catalog.abstractions[i];
+    const model::AbstractionData& abstraction = catalog.abstractions[i];
     if (catalog.variable_names.empty()) {
       out.section(rt::Section::kBlockOf, i, abstraction.block_of);
     } else {
@@ -175,7 +175,7 @@ std::string binary_catalog(const pipeline::CatalogData& catalog) {
   return out.finish();
 }
 
-bool write_binary_catalog(const pipeline::CatalogData& catalog, const std::string& path,
+bool write_binary_catalog(const model::CatalogData& catalog, const std::string& path,
                           std::string& error) {
   AtomicFile file;
   if (!file.open(path, error)) return false;

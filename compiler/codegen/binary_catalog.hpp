@@ -5,14 +5,14 @@
 
 #include <string>
 
-#include "pipeline/catalog_data.hpp"
+#include "model/catalog_data.hpp"
 
 namespace oasis::codegen {
 
-std::string binary_catalog(const pipeline::CatalogData& catalog);
+std::string binary_catalog(const model::CatalogData& catalog);
 
 // Writes atomically (temporary file, then rename): the file appears whole or not at all.
-bool write_binary_catalog(const pipeline::CatalogData& catalog, const std::string& path,
+bool write_binary_catalog(const model::CatalogData& catalog, const std::string& path,
                           std::string& error);
 
 }  // namespace oasis::codegen

@@ -1,9 +1,9 @@
 #include "codegen/continuous_json.hpp"
 
 #include "codegen/json_catalog.hpp"
+#include "model/catalog_data.hpp"
 #include "oasis/rt/catalog_view.hpp"
 #include "oasis/rt/spec_hash.hpp"
-#include "pipeline/catalog_data.hpp"
 #include "pipeline/continuous_catalog_data.hpp"
 
 namespace oasis::codegen {
@@ -38,8 +38,7 @@ void write_cell(JsonWriter& out, const pipeline::CellPartition& grid,
 }
 
 // A polytope cell as A x <= b: its irredundant constraints, rounded to nearest doubles.
-void write_polytope_cell(JsonWriter& out, const pipeline::PolytopeCell& cell,
-                         std::uint32_t block) {
+void write_polytope_cell(JsonWriter& out, const pipeline::PolytopeCell& cell, std::uint32_t block) {
   out.begin_object();
   out.key("A");
   out.begin_array();
@@ -68,8 +67,9 @@ void write_bsp(JsonWriter& out, const pipeline::BspArrays& bsp) {
   out.begin_array();
   for (std::size_t node = 0; node < bsp.num_nodes(); ++node) {
     const auto first = bsp.normal.begin() + static_cast<std::ptrdiff_t>(node * bsp.dimension);
-    out.embed(bsp.is_leaf(node) ? nlohmann::json::array()
-                                : nlohmann::json(std::vector<double>(first, first + bsp.dimension)));
+    out.embed(bsp.is_leaf(node)
+                  ? nlohmann::json::array()
+                  : nlohmann::json(std::vector<double>(first, first + bsp.dimension)));
   }
   out.end_array();
   const auto field = [&](const char* name, const auto& get) {
@@ -114,7 +114,7 @@ void write_next(JsonWriter& out, const pipeline::ContinuousAbstraction& abstract
 void write_blocks(JsonWriter& out, const pipeline::ContinuousCatalog& catalog,
                   const pipeline::ContinuousAbstraction& abstraction, bool with_transitions) {
   const std::vector<double> probability =
-      with_transitions ? pipeline::value_doubles(abstraction.quotient) : std::vector<double>{};
+      with_transitions ? model::value_doubles(abstraction.quotient) : std::vector<double>{};
   out.begin_array();
   for (std::uint32_t z = 0; z < abstraction.num_blocks; ++z) {
     const std::uint32_t action = abstraction.policy[z];
@@ -183,7 +183,7 @@ void write_abstraction(JsonWriter& out, const pipeline::ContinuousCatalog& catal
 // null without an observation block; else what the reward follows and the objects the
 // sensor measures: their variables, sigma(d) coefficients [a, b, c] and detection probability.
 nlohmann::json observation_json(const pipeline::ContinuousCatalog& catalog) {
-  const pipeline::PositionNoiseData& noise = catalog.position;
+  const model::PositionNoiseData& noise = catalog.position;
   if (noise.empty() && catalog.reward_source == rt::RewardSource::kTrueState) return nullptr;
   nlohmann::json objects = nlohmann::json::array();
   for (std::size_t k = 0; k < noise.detection.size(); ++k) {

@@ -8,7 +8,7 @@
 #include <string>
 #include <string_view>
 
-#include "pipeline/catalog_data.hpp"
+#include "model/catalog_data.hpp"
 
 namespace oasis::codegen {
 
@@ -18,7 +18,7 @@ struct CppSources {
 };
 
 // `basename` names the files; the namespace is the catalog's (the spec's model) name.
-CppSources cpp_catalog(const pipeline::CatalogData& catalog, std::string_view basename,
+CppSources cpp_catalog(const model::CatalogData& catalog, std::string_view basename,
                        std::string_view spec_file_name);
 
 }  // namespace oasis::codegen

@@ -5,10 +5,10 @@
 
 #include <string>
 
-#include "pipeline/catalog_data.hpp"
+#include "model/catalog_data.hpp"
 
 namespace oasis::codegen {
 
-std::string abstraction_dot(const pipeline::CatalogData& catalog, std::size_t abstraction);
+std::string abstraction_dot(const model::CatalogData& catalog, std::size_t abstraction);
 
 }  // namespace oasis::codegen

@@ -5,8 +5,8 @@
 namespace oasis::codegen {
 namespace {
 
-nlohmann::json abstraction_json(const pipeline::CatalogData& catalog,
-                                const pipeline::AbstractionData& data) {
+nlohmann::json abstraction_json(const model::CatalogData& catalog,
+                                const model::AbstractionData& data) {
   std::vector<nlohmann::json> blocks(data.num_blocks);
   for (std::uint32_t z = 0; z < data.num_blocks; ++z) {
     const std::uint32_t action = data.policy[z];
@@ -40,7 +40,7 @@ nlohmann::json abstraction_json(const pipeline::CatalogData& catalog,
 
 // null without an observation model; else its kind, p_correct (symmetric) or the confusion
 // matrix's rows (one per true state), and which state the reward follows.
-nlohmann::json observation_json(const pipeline::CatalogData& catalog) {
+nlohmann::json observation_json(const model::CatalogData& catalog) {
   if (catalog.observation == rt::ObservationKind::kNone) return nlohmann::json();
   nlohmann::json out;
   if (catalog.observation == rt::ObservationKind::kSymmetric) {
@@ -66,7 +66,7 @@ nlohmann::json matrix_rows_json(const std::vector<double>& matrix, std::size_t n
   return rows;
 }
 
-nlohmann::json catalog_json(const pipeline::CatalogData& catalog) {
+nlohmann::json catalog_json(const model::CatalogData& catalog) {
   nlohmann::json out;
   out["format"] = rt::kCatalogFormat;
   out["name"] = catalog.name;
@@ -78,7 +78,7 @@ nlohmann::json catalog_json(const pipeline::CatalogData& catalog) {
   out["prior"] = catalog.prior;
   out["observation"] = observation_json(catalog);
   nlohmann::json abstractions = nlohmann::json::array();
-  for (const pipeline::AbstractionData& data : catalog.abstractions)
+  for (const model::AbstractionData& data : catalog.abstractions)
     abstractions.push_back(abstraction_json(catalog, data));
   out["abstractions"] = std::move(abstractions);
   return out;

@@ -5,7 +5,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "pipeline/catalog_data.hpp"
+#include "model/catalog_data.hpp"
 
 namespace oasis::codegen {
 
@@ -15,6 +15,6 @@ namespace oasis::codegen {
 // A row-major n x n matrix as a JSON list of n rows.
 nlohmann::json matrix_rows_json(const std::vector<double>& matrix, std::size_t n);
 
-nlohmann::json catalog_json(const pipeline::CatalogData& catalog);
+nlohmann::json catalog_json(const model::CatalogData& catalog);
 
 }  // namespace oasis::codegen

@@ -76,7 +76,7 @@ class Forward {
     std::fill(to.begin(), to.end(), 0.0);
     const std::uint32_t actions = m_.num_actions;
     for (std::uint32_t i = 0; i < n_; ++i) {
-      const pipeline::CsrData& csr = m_.transitions[i];
+      const model::CsrData& csr = m_.transitions[i];
       const double* in = from.data() + static_cast<std::size_t>(i) * s_;
       double* out = to.data() + static_cast<std::size_t>(i) * s_;
       for (std::uint32_t s = 0; s < s_; ++s) {
@@ -155,7 +155,7 @@ class Forward {
 
 }  // namespace
 
-FilterModel filter_model(const pipeline::CatalogData& catalog, const model::ExplicitModel& model) {
+FilterModel filter_model(const model::CatalogData& catalog, const model::ExplicitModel& model) {
   FilterModel out;
   out.num_contexts = static_cast<std::uint32_t>(catalog.abstractions.size());
   out.num_states = catalog.num_states;
@@ -163,13 +163,13 @@ FilterModel filter_model(const pipeline::CatalogData& catalog, const model::Expl
   out.prior = catalog.prior;
   out.state_reward.resize(static_cast<std::size_t>(out.num_contexts) * out.num_states);
   for (std::uint32_t i = 0; i < out.num_contexts; ++i) {
-    const pipeline::AbstractionData& abstraction = catalog.abstractions[i];
+    const model::AbstractionData& abstraction = catalog.abstractions[i];
     for (std::uint32_t s = 0; s < out.num_states; ++s)
       out.state_reward[static_cast<std::size_t>(i) * out.num_states + s] =
           abstraction.block_reward[abstraction.block_of[s]];
   }
   for (const model::Context& context : model.contexts)
-    out.transitions.push_back(pipeline::csr_of(model, *context.transitions));
+    out.transitions.push_back(model::csr_of(model, *context.transitions));
   return out;
 }
 

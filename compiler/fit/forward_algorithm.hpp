@@ -27,8 +27,8 @@
 #include <vector>
 
 #include "fit/switching_log.hpp"
+#include "model/catalog_data.hpp"
 #include "model/explicit_model.hpp"
-#include "pipeline/catalog_data.hpp"
 
 namespace oasis::fit {
 
@@ -49,9 +49,9 @@ struct FilterModel {
   std::uint32_t num_contexts = 0;
   std::uint32_t num_states = 0;
   std::uint32_t num_actions = 0;
-  std::vector<double> prior;                   // [N]
-  std::vector<double> state_reward;            // [N * S] R^i(s) = block_reward[block_of[s]]
-  std::vector<pipeline::CsrData> transitions;  // [N] P^i over states (joint model only)
+  std::vector<double> prior;                // [N]
+  std::vector<double> state_reward;         // [N * S] R^i(s) = block_reward[block_of[s]]
+  std::vector<model::CsrData> transitions;  // [N] P^i over states (joint model only)
   StateNoise noise;
   double detection_epsilon = 0.001;
   double reward_tolerance = 1e-9;
@@ -60,7 +60,7 @@ struct FilterModel {
 };
 
 // The prior and state rewards of `catalog`, the full-state transitions of `model`'s contexts.
-FilterModel filter_model(const pipeline::CatalogData& catalog, const model::ExplicitModel& model);
+FilterModel filter_model(const model::CatalogData& catalog, const model::ExplicitModel& model);
 
 // log L of `runs` (each starting afresh from the prior) under the row-major N x N switching
 // matrix `switching` (switching[i * N + j] = p(j | i)). -infinity when some step has

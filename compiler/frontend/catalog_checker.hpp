@@ -4,10 +4,10 @@
 
 #include <cstdint>
 
-#include "model/model_ir.hpp"
 #include "frontend/ast.hpp"
 #include "frontend/expression_checker.hpp"
 #include "frontend/scope.hpp"
+#include "model/model_ir.hpp"
 
 namespace oasis::frontend {
 

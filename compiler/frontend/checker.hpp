@@ -5,8 +5,8 @@
 
 #include <optional>
 
-#include "model/model_ir.hpp"
 #include "frontend/ast.hpp"
+#include "model/model_ir.hpp"
 #include "support/diagnostics.hpp"
 #include "support/limits.hpp"
 

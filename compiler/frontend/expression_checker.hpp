@@ -7,9 +7,9 @@
 #include <optional>
 #include <string_view>
 
-#include "model/expression.hpp"
 #include "frontend/ast.hpp"
 #include "frontend/scope.hpp"
+#include "model/expression.hpp"
 
 namespace oasis::frontend {
 

@@ -3,10 +3,10 @@
 // together, the standard deviation sigma(d) = a + b d + c d^2 of each reading (d the object's
 // distance: the norm of its variables) and the probability of detecting it.
 
-#include "model/model_ir.hpp"
 #include "frontend/ast.hpp"
 #include "frontend/expression_checker.hpp"
 #include "frontend/scope.hpp"
+#include "model/model_ir.hpp"
 
 namespace oasis::frontend {
 

@@ -2,10 +2,10 @@
 // The catalog's observation model: how the robot's sensor reports the state, p(observed
 // state | true state), and whether the reward follows the true or the observed state.
 
-#include "model/model_ir.hpp"
 #include "frontend/ast.hpp"
 #include "frontend/expression_checker.hpp"
 #include "frontend/scope.hpp"
+#include "model/model_ir.hpp"
 
 namespace oasis::frontend {
 

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <set>
 
-#include "geom/gaussian_axis.hpp"
+#include "geom/grid_gaussian_axis.hpp"
 #include "support/text.hpp"
 
 namespace oasis::geom {
@@ -12,7 +12,7 @@ namespace {
 
 using Breaks = std::vector<std::set<Rational>>;
 
-Breaks mandatory_breaks(const ContextGeometry& geometry) {
+Breaks mandatory_breaks(const GridGeometry& geometry) {
   Breaks breaks(geometry.dimension());
   for (std::size_t i = 0; i < geometry.dimension(); ++i) {
     breaks[i].insert(geometry.domain[i].low);
@@ -28,7 +28,7 @@ Breaks mandatory_breaks(const ContextGeometry& geometry) {
   return breaks;
 }
 
-bool stochastic_somewhere(const ContextGeometry& geometry, std::size_t axis) {
+bool stochastic_somewhere(const GridGeometry& geometry, std::size_t axis) {
   return std::any_of(geometry.actions.begin(), geometry.actions.end(),
                      [&](const AxisDynamics& a) { return a.disturbance[axis].present(); });
 }
@@ -41,7 +41,7 @@ double spread_unit(const Disturbance& w) {
 }
 
 // The narrowest disturbance on an axis: the unit its cells are measured in.
-double narrowest_unit(const ContextGeometry& geometry, std::size_t axis) {
+double narrowest_unit(const GridGeometry& geometry, std::size_t axis) {
   double narrowest = HUGE_VAL;
   for (const AxisDynamics& action : geometry.actions) {
     if (action.disturbance[axis].present())
@@ -86,7 +86,7 @@ std::vector<Rational> widest_half_widths(const Breaks& breaks) {
 }
 
 // What computing Gaussian rows in floating point may cost under `action`: each axis's
-// tolerance (geom/gaussian_axis.hpp); the axes' errors add, as their distributions multiply.
+// tolerance (geom/grid_gaussian_axis.hpp); the axes' errors add, as their distributions multiply.
 Rational numeric_error(const AxisDynamics& action, const Breaks& breaks) {
   Rational total = 0;
   for (std::size_t i = 0; i < breaks.size(); ++i)
@@ -95,7 +95,7 @@ Rational numeric_error(const AxisDynamics& action, const Breaks& breaks) {
   return total;
 }
 
-Rational partition_error(const ContextGeometry& geometry, const Breaks& breaks) {
+Rational partition_error(const GridGeometry& geometry, const Breaks& breaks) {
   const std::vector<Rational> half = widest_half_widths(breaks);
   Rational worst = 0;
   for (const AxisDynamics& action : geometry.actions)
@@ -104,7 +104,7 @@ Rational partition_error(const ContextGeometry& geometry, const Breaks& breaks) 
 }
 
 // Breaks of the stochastic axes for cells of `scale` times each axis's narrowest disturbance.
-Breaks with_scale(const ContextGeometry& geometry, const Breaks& mandatory, double scale,
+Breaks with_scale(const GridGeometry& geometry, const Breaks& mandatory, double scale,
                   std::size_t max_pieces) {
   Breaks breaks = mandatory;
   for (std::size_t i = 0; i < geometry.dimension(); ++i) {
@@ -116,7 +116,7 @@ Breaks with_scale(const ContextGeometry& geometry, const Breaks& mandatory, doub
 
 // The pre-images of every break of axis i under every action that moves i without a
 // disturbance, until closed. False when the budget is passed.
-bool close_under_preimages(const ContextGeometry& geometry, Breaks& breaks, std::size_t max_breaks,
+bool close_under_preimages(const GridGeometry& geometry, Breaks& breaks, std::size_t max_breaks,
                            std::size_t& rounds) {
   for (std::size_t i = 0; i < geometry.dimension(); ++i) {
     const Interval& domain = geometry.domain[i];
@@ -171,8 +171,8 @@ Rational cell_error(const AxisDynamics& action, std::span<const Rational> half_w
   return worst;
 }
 
-std::optional<GridPartition> partition_grid(const ContextGeometry& geometry,
-                                            const GridTarget& target, std::string& error) {
+std::optional<GridPartition> partition_grid(const GridGeometry& geometry, const GridTarget& target,
+                                            std::string& error) {
   const Breaks mandatory = mandatory_breaks(geometry);
   // ε grows with the scale of the cells and the cell count shrinks: take the coarsest scale
   // that meets the target, or, when that needs too many cells, the finest that fits the

@@ -20,15 +20,15 @@
 // deterministically land in one cell from every point of C, so they add nothing). This is
 // monotone in C's half-widths, so the context's ε is that of the widest cell shape, per
 // action; to it is added, per Gaussian axis, the tolerance of computing its probabilities in
-// floating point (geom/gaussian_axis.hpp).
+// floating point (geom/grid_gaussian_axis.hpp).
 
 #include <cstddef>
 #include <optional>
 #include <span>
 #include <string>
 
-#include "geom/context_geometry.hpp"
 #include "geom/grid.hpp"
+#include "geom/grid_geometry.hpp"
 
 namespace oasis::geom {
 
@@ -47,7 +47,7 @@ struct GridPartition {
 };
 
 // The total variation a unit shift of `w` costs at most: 1 / width for a uniform disturbance,
-// 1 / (s·√(2π)) for a Gaussian one, rounded up (geom/gaussian_axis.hpp), 0 for none.
+// 1 / (s·√(2π)) for a Gaussian one, rounded up (geom/grid_gaussian_axis.hpp), 0 for none.
 Rational shift_cost(const Disturbance& w);
 
 // ε_C,a for a cell of these half-widths (per relevant axis) under `action`, without the
@@ -56,7 +56,7 @@ Rational cell_error(const AxisDynamics& action, std::span<const Rational> half_w
 
 // nullopt with `error` when the pre-image refinement passes the cell budget (the coarsest
 // partition may be infinite, as for a shift by an irrational-looking step).
-std::optional<GridPartition> partition_grid(const ContextGeometry& geometry,
-                                            const GridTarget& target, std::string& error);
+std::optional<GridPartition> partition_grid(const GridGeometry& geometry, const GridTarget& target,
+                                            std::string& error);
 
 }  // namespace oasis::geom

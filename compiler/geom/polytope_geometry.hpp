@@ -2,7 +2,7 @@
 // One context of a continuous model for the polytope path: the box domain, the rewards as
 // polytopes (any conjunction of linear inequalities), and per action the affine step and the
 // uniform disturbances, all restricted to the context's relevant axes (geom/relevance.hpp).
-// Unlike geom/context_geometry.hpp (the grid path), nothing here needs product structure:
+// Unlike geom/grid_geometry.hpp (the grid path), nothing here needs product structure:
 // reward regions may be rotated or triangular and deterministic moves may mix axes.
 // Gaussian disturbances are still refused.
 

@@ -1,5 +1,5 @@
 #pragma once
-// The finite MDP of a polytope partition, in the shape of geom/finite_mdp.hpp: one state
+// The finite MDP of a polytope partition, in the shape of geom/grid_mdp.hpp: one state
 // per cell (the tree's cell order), then `outside`, absorbing with reward 0; one context;
 // exact rows that sum to exactly 1, so the bisimulation engine and value iteration run on it
 // unchanged.

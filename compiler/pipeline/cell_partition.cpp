@@ -6,7 +6,9 @@
 
 namespace oasis::pipeline {
 
-bool BspArrays::is_leaf(std::size_t node) const { return cell[node] != rt::kInternalNode; }
+bool BspArrays::is_leaf(std::size_t node) const {
+  return cell[node] != rt::kInternalNode;
+}
 
 std::size_t CellPartition::num_cells() const {
   if (bsp) return polytopes.size();

@@ -5,8 +5,8 @@
 
 #include "bisim/quotient.hpp"
 #include "bisim/refinement.hpp"
-#include "geom/context_geometry.hpp"
-#include "geom/finite_mdp.hpp"
+#include "geom/grid_geometry.hpp"
+#include "geom/grid_mdp.hpp"
 #include "geom/grid_refinement.hpp"
 #include "geom/polytope_mdp.hpp"
 #include "geom/polytope_partition.hpp"
@@ -103,7 +103,7 @@ CellPartition polytope_cells(const geom::Grid& box, const geom::BspTree& tree) {
 namespace {
 
 // The grid path: product-structured contexts (box rewards, moves along single axes).
-bool partition_by_grid(const geom::ContextGeometry& geometry, const model::ModelIR& ir,
+bool partition_by_grid(const geom::GridGeometry& geometry, const model::ModelIR& ir,
                        const ContinuousOptions& options, ContinuousAbstraction& result,
                        Clock::time_point& start, std::optional<model::ExplicitModel>& mdp,
                        std::string& error) {
@@ -118,7 +118,7 @@ bool partition_by_grid(const geom::ContextGeometry& geometry, const model::Model
     options.warn(result.context, above_target(result, options.max_cells.value_or(kDefaultGridCells),
                                               options.epsilon));
   result.seconds.grid = seconds_since(start);
-  mdp = geom::finite_mdp(geometry, partition->grid, ir.actions, ir.objective);
+  mdp = geom::grid_finite_mdp(geometry, partition->grid, ir.actions, ir.objective);
   return true;
 }
 
@@ -187,7 +187,7 @@ std::optional<ContinuousAbstraction> abstract_context(const model::ModelIR& ir, 
   result.projection_exact = relevance.exact();
   std::optional<model::ExplicitModel> mdp;
   std::string grid_refusal;
-  if (const auto geometry = geom::context_geometry(ir, context, relevance, grid_refusal)) {
+  if (const auto geometry = geom::grid_geometry(ir, context, relevance, grid_refusal)) {
     if (!partition_by_grid(*geometry, ir, options, result, start, mdp, error)) return std::nullopt;
   } else {
     std::string polytope_refusal;

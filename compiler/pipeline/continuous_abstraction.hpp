@@ -2,7 +2,7 @@
 // One context of a continuous model, abstracted end to end: the variables it attends to
 // (geom/relevance.hpp), a grid on them meeting the error target (geom/grid_refinement.hpp)
 // or, when the context is not product-structured, convex polytope cells (the CGAL path,
-// geom/polytope_partition.hpp), the finite MDP of the cells (geom/finite_mdp.hpp,
+// geom/polytope_partition.hpp), the finite MDP of the cells (geom/grid_mdp.hpp,
 // geom/polytope_mdp.hpp), its coarsest bisimulation (cells with
 // equal rows merge into one block) and the policy solved on the quotient. The result holds
 // plain values only (cell_partition.hpp): the geometry stays in this layer and below.
@@ -52,8 +52,8 @@ struct ContinuousAbstraction {
   std::vector<std::string> axis_names;
   bool projection_exact = true;  // the projection onto `axes` is an exact bisimulation
   CellPartition cells;           // in plain values: what the emitters read
-  Rational epsilon;  // the sound bound on every row's error (0: exact bisimulation)
-  bool met = false;  // epsilon <= the target
+  Rational epsilon;              // the sound bound on every row's error (0: exact bisimulation)
+  bool met = false;              // epsilon <= the target
   std::vector<std::uint32_t> cell_block;  // [cells] the block of every cell
   std::uint32_t outside_block = 0;        // the block of `outside`
   std::uint32_t num_blocks = 0;

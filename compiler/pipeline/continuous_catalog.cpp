@@ -4,8 +4,8 @@
 
 namespace oasis::pipeline {
 
-PositionNoiseData position_noise(const model::ModelIR& ir) {
-  PositionNoiseData noise;
+model::PositionNoiseData position_noise(const model::ModelIR& ir) {
+  model::PositionNoiseData noise;
   if (ir.observation.objects.empty()) return noise;
   noise.object_of.assign(ir.continuous.size(), rt::kExactVariable);
   for (std::size_t k = 0; k < ir.observation.objects.size(); ++k) {

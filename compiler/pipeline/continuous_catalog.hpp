@@ -8,8 +8,8 @@
 #include <string>
 #include <vector>
 
+#include "model/catalog_data.hpp"
 #include "model/model_ir.hpp"
-#include "pipeline/catalog_data.hpp"
 #include "pipeline/continuous_abstraction.hpp"
 
 namespace oasis::pipeline {
@@ -24,7 +24,7 @@ struct ContinuousCatalog {
   std::vector<double> prior;      // [N]
   std::vector<ContinuousAbstraction> abstractions;
   // The spec's observation block: the position noise and what the reward follows.
-  PositionNoiseData position;
+  model::PositionNoiseData position;
   rt::RewardSource reward_source = rt::RewardSource::kTrueState;
 };
 
@@ -34,7 +34,7 @@ struct ContinuousCatalogOptions {
 };
 
 // The IR's position noise as the catalog carries it (empty without objects).
-PositionNoiseData position_noise(const model::ModelIR& ir);
+model::PositionNoiseData position_noise(const model::ModelIR& ir);
 
 // nullopt with `error` naming the first context that failed.
 std::optional<ContinuousCatalog> build_continuous_catalog(const model::ModelIR& ir,

@@ -5,7 +5,7 @@
 namespace oasis::pipeline {
 namespace {
 
-void add_bsp(const CellPartition& cells, AbstractionData& data) {
+void add_bsp(const CellPartition& cells, model::AbstractionData& data) {
   data.bsp_cells = static_cast<std::uint32_t>(cells.num_cells());
   data.bsp_normal = cells.bsp->normal;
   data.bsp_bound = cells.bsp->bound;
@@ -14,14 +14,14 @@ void add_bsp(const CellPartition& cells, AbstractionData& data) {
   data.bsp_cell = cells.bsp->cell;
 }
 
-AbstractionData abstraction_data(const pipeline::ContinuousAbstraction& abstraction,
-                                 std::uint32_t num_actions, bool with_transitions) {
-  AbstractionData data;
+model::AbstractionData abstraction_data(const pipeline::ContinuousAbstraction& abstraction,
+                                        std::uint32_t num_actions, bool with_transitions) {
+  model::AbstractionData data;
   data.context = abstraction.context;
   data.num_blocks = abstraction.num_blocks;
   data.block_reward = abstraction.block_reward;
   const model::ExplicitModel& quotient = abstraction.quotient;
-  if (with_transitions) data.quotient = csr_of(quotient, *quotient.contexts[0].transitions);
+  if (with_transitions) data.quotient = model::csr_of(quotient, *quotient.contexts[0].transitions);
   data.reward.resize(std::size_t{data.num_blocks} * num_actions);
   for (model::StateIndex z = 0; z < data.num_blocks; ++z) {
     for (model::ActionIndex a = 0; a < num_actions; ++a)
@@ -49,9 +49,9 @@ double bound_as_double(const Rational& bound) {
   return Rational(nearest) < bound ? std::nextafter(nearest, HUGE_VAL) : nearest;
 }
 
-CatalogData continuous_catalog_data(const pipeline::ContinuousCatalog& catalog,
-                                    bool with_transitions) {
-  CatalogData data;
+model::CatalogData continuous_catalog_data(const pipeline::ContinuousCatalog& catalog,
+                                           bool with_transitions) {
+  model::CatalogData data;
   data.name = catalog.name;
   data.spec_hash = catalog.spec_hash;
   data.compiler_version = catalog.compiler_version;

@@ -3,6 +3,7 @@
 #include <chrono>
 
 #include "bisim/quotient.hpp"
+#include "oasis/rt/catalog_validation.hpp"
 #include "support/parallel.hpp"
 
 namespace oasis::pipeline {
@@ -57,18 +58,19 @@ bool block_rewards(const model::ExplicitModel& model, std::size_t context,
   return true;
 }
 
-std::optional<AbstractionData> abstraction_data(const model::ExplicitModel& model,
-                                                const DiscreteAbstraction& abstraction,
-                                                const CatalogOptions& options, std::string& error) {
+std::optional<model::AbstractionData> abstraction_data(const model::ExplicitModel& model,
+                                                       const DiscreteAbstraction& abstraction,
+                                                       const CatalogOptions& options,
+                                                       std::string& error) {
   const std::size_t context = abstraction.context;
-  AbstractionData data;
+  model::AbstractionData data;
   data.context = model.contexts[context].name;
   data.num_blocks = abstraction.partition.num_blocks;
   data.block_of = abstraction.partition.block_of;
   if (!block_rewards(model, context, abstraction.partition, data.block_reward, error))
     return std::nullopt;
   const model::ExplicitModel& quotient = abstraction.quotient;
-  data.quotient = csr_of(quotient, *quotient.contexts[0].transitions);
+  data.quotient = model::csr_of(quotient, *quotient.contexts[0].transitions);
   data.reward.resize(std::size_t{data.num_blocks} * model.num_actions());
   for (model::StateIndex z = 0; z < data.num_blocks; ++z) {
     for (model::ActionIndex a = 0; a < model.num_actions(); ++a)
@@ -77,13 +79,13 @@ std::optional<AbstractionData> abstraction_data(const model::ExplicitModel& mode
   data.policy = abstraction.policy.action;
   data.value = abstraction.policy.value;
   if (options.p_correct || model.observation.kind != model::ObservationSpec::Kind::kNone)
-    data.state_transitions = csr_of(model, *model.contexts[context].transitions);
+    data.state_transitions = model::csr_of(model, *model.contexts[context].transitions);
   return data;
 }
 
 // The robust section's observation model: --robust's symmetric one, else the spec's.
 bool observation_model(const model::ExplicitModel& model, const CatalogOptions& options,
-                       CatalogData& catalog, std::string& error) {
+                       model::CatalogData& catalog, std::string& error) {
   const model::ObservationSpec& spec = model.observation;
   if (spec.reward_follows_observed) catalog.reward_source = rt::RewardSource::kObservedState;
   if (options.p_correct) {
@@ -110,7 +112,8 @@ bool observation_model(const model::ExplicitModel& model, const CatalogOptions& 
 
 // An imported model (docs/formats.md) has one context and no switching model: its catalog's
 // is the trivial one, that context always, so the filter has nothing to switch.
-bool switching_model(const model::ExplicitModel& model, CatalogData& catalog, std::string& error) {
+bool switching_model(const model::ExplicitModel& model, model::CatalogData& catalog,
+                     std::string& error) {
   const std::size_t n = model.contexts.size();
   if (model.switching.matrix.empty() && n == 1) {
     catalog.switching = {1.0};
@@ -155,11 +158,11 @@ std::optional<std::vector<DiscreteAbstraction>> abstract_contexts(
   return results;
 }
 
-std::optional<CatalogData> catalog_data(const model::ExplicitModel& model,
-                                        const std::vector<DiscreteAbstraction>& abstractions,
-                                        std::uint64_t spec_hash, const CatalogOptions& options,
-                                        std::string& error) {
-  CatalogData catalog;
+std::optional<model::CatalogData> catalog_data(const model::ExplicitModel& model,
+                                               const std::vector<DiscreteAbstraction>& abstractions,
+                                               std::uint64_t spec_hash,
+                                               const CatalogOptions& options, std::string& error) {
+  model::CatalogData catalog;
   catalog.name = model.name;
   catalog.spec_hash = spec_hash;
   catalog.compiler_version = OASIS_VERSION;
@@ -185,8 +188,9 @@ std::optional<CatalogData> catalog_data(const model::ExplicitModel& model,
   return catalog;
 }
 
-std::optional<CatalogData> build_catalog(const model::ExplicitModel& model, std::uint64_t spec_hash,
-                                         const BuildOptions& options, std::string& error) {
+std::optional<model::CatalogData> build_catalog(const model::ExplicitModel& model,
+                                                std::uint64_t spec_hash,
+                                                const BuildOptions& options, std::string& error) {
   if (model.num_states() == 0 || model.contexts.empty()) {
     error = "the model has no states or no contexts";
     return std::nullopt;

@@ -1,7 +1,7 @@
 #pragma once
 // The compile of an explicit model, end to end: every context's coarsest bisimulation
 // (bisim/), its quotient and the policy solved on it (policy/), then the catalog in the
-// runtime's schema (pipeline/catalog_data.hpp). `oasisc compile`, `oasisc quotient` and
+// runtime's schema (model/catalog_data.hpp). `oasisc compile`, `oasisc quotient` and
 // `oasis-sim` all run this one path; contexts are independent and run in parallel.
 
 #include <cstddef>
@@ -11,10 +11,10 @@
 #include <string>
 #include <vector>
 
-#include "model/partition.hpp"
 #include "bisim/refinement.hpp"
+#include "model/catalog_data.hpp"
 #include "model/explicit_model.hpp"
-#include "pipeline/catalog_data.hpp"
+#include "model/partition.hpp"
 #include "policy/objective.hpp"
 #include "policy/value_iteration.hpp"
 
@@ -62,10 +62,10 @@ struct CatalogOptions {
 // `solve`. nullopt with `error` when the model cannot be a catalog: states of one block with
 // different state rewards R(s) (the detection model compares an observed reward with one
 // R(s) per abstract state), or several contexts without a switching model.
-std::optional<CatalogData> catalog_data(const model::ExplicitModel& model,
-                                        const std::vector<DiscreteAbstraction>& abstractions,
-                                        std::uint64_t spec_hash, const CatalogOptions& options,
-                                        std::string& error);
+std::optional<model::CatalogData> catalog_data(const model::ExplicitModel& model,
+                                               const std::vector<DiscreteAbstraction>& abstractions,
+                                               std::uint64_t spec_hash,
+                                               const CatalogOptions& options, std::string& error);
 
 struct BuildOptions {
   DiscreteOptions abstraction;
@@ -74,7 +74,8 @@ struct BuildOptions {
 
 // abstract_contexts on every context, then catalog_data. nullopt with `error` also when the
 // model has no states or no contexts.
-std::optional<CatalogData> build_catalog(const model::ExplicitModel& model, std::uint64_t spec_hash,
-                                         const BuildOptions& options, std::string& error);
+std::optional<model::CatalogData> build_catalog(const model::ExplicitModel& model,
+                                                std::uint64_t spec_hash,
+                                                const BuildOptions& options, std::string& error);
 
 }  // namespace oasis::pipeline

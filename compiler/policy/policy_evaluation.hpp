@@ -5,8 +5,8 @@
 #include <cstddef>
 #include <vector>
 
-#include "model/partition.hpp"
 #include "model/explicit_model.hpp"
+#include "model/partition.hpp"
 #include "policy/objective.hpp"
 
 namespace oasis::policy {

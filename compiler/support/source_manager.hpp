@@ -57,6 +57,8 @@ class SourceManager {
   FileId add(std::string path, std::string contents);
 
   [[nodiscard]] const SourceFile& file(FileId id) const { return files_.at(id); }
+  // The id the next file added will get.
+  [[nodiscard]] FileId num_files() const { return static_cast<FileId>(files_.size()); }
 
  private:
   std::deque<SourceFile> files_;  // deque: references stay valid as files are added

@@ -3,8 +3,8 @@
 
 #include <cstddef>
 
-#include "model/partition.hpp"
 #include "model/explicit_model.hpp"
+#include "model/partition.hpp"
 #include "verify/violation.hpp"
 
 namespace oasis::verify {

@@ -69,8 +69,7 @@ Box cell_box(const rt::GridView& grid, std::uint64_t cell) {
 // when the condition cuts through it.
 std::optional<bool> condition_on(const model::ModelIR& ir, const model::Reward& reward,
                                  const rt::GridView& grid, const Box& box) {
-  const auto constraints =
-      guard_constraints(reward.guard, ir.continuous.size(), ir.regions);
+  const auto constraints = guard_constraints(reward.guard, ir.continuous.size(), ir.regions);
   if (!constraints) return std::nullopt;
   bool all = true;
   for (const model::LinearConstraint& constraint : *constraints) {

@@ -108,8 +108,7 @@ bool read_into(const Expression& expr, std::size_t n, const std::vector<model::R
 }  // namespace
 
 std::optional<std::vector<LinearConstraint>> guard_constraints(
-    const Expression& guard, std::size_t num_variables,
-    const std::vector<model::Region>& regions) {
+    const Expression& guard, std::size_t num_variables, const std::vector<model::Region>& regions) {
   std::vector<LinearConstraint> constraints;
   if (!read_into(guard, num_variables, regions, constraints)) return std::nullopt;
   return constraints;

@@ -10,8 +10,8 @@
 #include <string_view>
 #include <vector>
 
-#include "model/partition.hpp"
 #include "model/explicit_model.hpp"
+#include "model/partition.hpp"
 
 namespace oasis::verify {
 

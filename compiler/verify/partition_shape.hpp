@@ -2,8 +2,8 @@
 // Whether a Partition is a partition of the model's states at all: every later check
 // indexes by block_of, so it runs first.
 
-#include "model/partition.hpp"
 #include "model/explicit_model.hpp"
+#include "model/partition.hpp"
 #include "verify/violation.hpp"
 
 namespace oasis::verify {

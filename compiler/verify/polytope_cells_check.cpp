@@ -6,8 +6,8 @@
 #include <vector>
 
 #include "oasis/rt/bsp_locator.hpp"
-#include "verify/guard_reading.hpp"
 #include "verify/cell_geometry.hpp"
+#include "verify/guard_reading.hpp"
 #include "verify/number_text.hpp"
 #include "verify/row_distance.hpp"
 
@@ -33,8 +33,7 @@ std::vector<RewardForm> reward_forms(const model::ModelIR& ir, std::size_t conte
   std::vector<RewardForm> forms;
   for (const model::Reward& reward : ir.contexts[context].rewards) {
     RewardForm form{to_double(reward.value.constant), std::nullopt};
-    const auto constraints =
-        guard_constraints(reward.guard, ir.continuous.size(), ir.regions);
+    const auto constraints = guard_constraints(reward.guard, ir.continuous.size(), ir.regions);
     if (constraints) {
       form.condition.emplace();
       for (const model::LinearConstraint& constraint : *constraints) {

@@ -6,8 +6,8 @@
 #include <optional>
 #include <string>
 
-#include "model/partition.hpp"
 #include "model/explicit_model.hpp"
+#include "model/partition.hpp"
 
 namespace oasis::verify {
 

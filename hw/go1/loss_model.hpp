@@ -1,15 +1,18 @@
 #pragma once
 // Seeded packet loss for the fake Go1: the same seed drops the same packets (by arrival order)
-// on every run and every standard library, because the generator (SplitMix64) is our own.
+// on every run and every standard library, because the generator (the runtime's SplitMix64) is
+// our own.
 
 #include <cstdint>
+
+#include "oasis/rt/split_mix64.hpp"
 
 namespace oasis::hw::go1 {
 
 class LossModel {
  public:
   LossModel(double loss_probability, std::uint64_t seed)
-      : loss_probability_(loss_probability), state_(seed) {}
+      : loss_probability_(loss_probability), bits_(seed) {}
 
   // Whether the next packet is lost.
   bool drop_next();
@@ -19,7 +22,7 @@ class LossModel {
 
  private:
   double loss_probability_;
-  std::uint64_t state_;
+  rt::SplitMix64 bits_;
 };
 
 }  // namespace oasis::hw::go1

@@ -28,7 +28,7 @@ std::size_t index_of(TreatHolder holder) {
 HallwayPeople::HallwayPeople(const HallwayScenario& scenario, std::uint64_t seed,
                              TreatHolder first_holder)
     : scenario_(scenario),
-      random_(Random::stream(seed, kPeopleStream)),
+      random_(SeededRandom::stream(seed, kPeopleStream)),
       holder_(index_of(first_holder)) {
   const double half = half_width();
   positions_[holder_] = {random_.uniform(scenario.holder.start_min_m, scenario.holder.start_max_m),

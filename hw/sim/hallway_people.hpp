@@ -15,7 +15,7 @@
 
 #include "go1/planar_pose.hpp"
 #include "perception/treat_holder.hpp"
-#include "sim/random.hpp"
+#include "random/seeded_random.hpp"
 #include "sim/scenario.hpp"
 
 namespace oasis::hw::sim {
@@ -74,7 +74,7 @@ class HallwayPeople {
   double half_width() const;
 
   HallwayScenario scenario_;
-  Random random_;
+  SeededRandom random_;
   std::array<go1::PlanarPoint, 2> positions_{};
   std::size_t holder_ = 0;  // index of the holder, whose mind is holder_mind_
   int hand_offs_done_ = 0;

@@ -23,7 +23,7 @@ HallwayWorld::HallwayWorld(HallwayWorldOptions options, PoseProvider robot_pose)
       robot_pose_(std::move(robot_pose)),
       schedule_(draw_treat_schedule(options_.scenario, options_.seed)),
       people_(options_.scenario, options_.seed, schedule_.first_holder),
-      noise_(Random::stream(options_.seed, kNoiseStream)) {
+      noise_(SeededRandom::stream(options_.seed, kNoiseStream)) {
   if (!(options_.period_s > 0.0)) throw std::invalid_argument("hallway world: period must be > 0");
   if (!robot_pose_) throw std::invalid_argument("hallway world: no robot pose provider");
   options_.camera.settings = options_.scenario.camera;

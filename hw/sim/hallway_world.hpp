@@ -18,8 +18,8 @@
 #include "perception/frame.hpp"
 #include "perception/perception_stage.hpp"
 #include "perception/synthetic_scene.hpp"
+#include "random/seeded_random.hpp"
 #include "sim/hallway_people.hpp"
-#include "sim/random.hpp"
 #include "sim/sim_camera.hpp"
 #include "sim/treat_schedule.hpp"
 
@@ -66,7 +66,7 @@ class HallwayWorld final : public FrameSource {
   PoseProvider robot_pose_;
   TreatSchedule schedule_;
   HallwayPeople people_;
-  Random noise_;
+  SeededRandom noise_;
   std::uint64_t frames_ = 0;
   std::optional<FrameTruth> last_truth_;
   PerceptionResult last_observation_;

@@ -54,7 +54,7 @@ bool SimCamera::occluded_by(const go1::PlanarPoint& person, const go1::PlanarPoi
   return covered >= settings.occluded_overlap * (mine[1] - mine[0]);
 }
 
-PerceptionResult SimCamera::observe(const TrueScene& scene, Random& noise) const {
+PerceptionResult SimCamera::observe(const TrueScene& scene, SeededRandom& noise) const {
   PerceptionResult result;
   for (std::size_t i = 0; i < 2; ++i) {
     const go1::PlanarPoint& person = scene.people[i];

@@ -16,7 +16,7 @@
 #include "perception/synthetic_scene.hpp"
 #include "perception/tag_visibility.hpp"
 #include "perception/treat_holder.hpp"
-#include "sim/random.hpp"
+#include "random/seeded_random.hpp"
 #include "sim/scenario.hpp"
 
 namespace oasis::hw::sim {
@@ -52,7 +52,7 @@ struct SimCamera {
   bool occluded_by(const go1::PlanarPoint& person, const go1::PlanarPoint& other) const;
 
   // What perception reports, with noise and misses from `noise`.
-  PerceptionResult observe(const TrueScene& scene, Random& noise) const;
+  PerceptionResult observe(const TrueScene& scene, SeededRandom& noise) const;
 };
 
 }  // namespace oasis::hw::sim

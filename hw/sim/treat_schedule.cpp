@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-#include "sim/random.hpp"
+#include "random/seeded_random.hpp"
 
 namespace oasis::hw::sim {
 namespace {
@@ -23,7 +23,7 @@ bool gaps_hold(const std::vector<double>& times, double min_gap_s) {
 // `count` uniform times in the window, sorted, at least min_gap apart: uniform over the allowed
 // schedules, by rejection; with a window too tight for it, one hand-off fewer.
 std::vector<double> hand_off_times(const TreatSettings& treat, double duration_s, int count,
-                                   Random& random) {
+                                   SeededRandom& random) {
   const double begin = treat.first_after_s;
   const double end = std::max(begin, duration_s - treat.last_before_s);
   for (; count > 0; --count) {
@@ -39,7 +39,8 @@ std::vector<double> hand_off_times(const TreatSettings& treat, double duration_s
 }
 
 // A Poisson process of hiding episodes, each of a uniform length.
-std::vector<TimeInterval> hiding(const TreatSettings& treat, double duration_s, Random& random) {
+std::vector<TimeInterval> hiding(const TreatSettings& treat, double duration_s,
+                                 SeededRandom& random) {
   std::vector<TimeInterval> hidden;
   if (!(treat.hides_per_minute > 0.0)) return hidden;
   const double mean_gap_s = 60.0 / treat.hides_per_minute;
@@ -70,7 +71,7 @@ bool TreatSchedule::hidden_at(double time_s) const {
 }
 
 TreatSchedule draw_treat_schedule(const HallwayScenario& scenario, std::uint64_t seed) {
-  Random random = Random::stream(seed, kScheduleStream);
+  SeededRandom random = SeededRandom::stream(seed, kScheduleStream);
   TreatSchedule schedule;
   schedule.first_holder = random.chance(0.5) ? TreatHolder::kHuman1 : TreatHolder::kHuman2;
   const int count = random.integer(scenario.treat.hand_offs_min, scenario.treat.hand_offs_max);

@@ -22,6 +22,7 @@
 #include "oasis/rt/attention_filter.hpp"
 #include "oasis/rt/bsp_locator.hpp"
 #include "oasis/rt/catalog_file.hpp"
+#include "oasis/rt/catalog_validation.hpp"
 #include "oasis/rt/catalog_view.hpp"
 #include "oasis/rt/grid_locator.hpp"
 #include "oasis/rt/hedged_filter.hpp"

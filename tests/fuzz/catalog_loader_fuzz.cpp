@@ -11,6 +11,7 @@
 #include "drive_filter.hpp"
 #include "fuzz_target.hpp"
 #include "oasis/rt/catalog_file.hpp"
+#include "oasis/rt/catalog_validation.hpp"
 #include "oasis/rt/spec_hash.hpp"
 
 namespace {

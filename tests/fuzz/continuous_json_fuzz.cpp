@@ -1,4 +1,4 @@
-// oasisc verify's reader of a continuous catalog's JSON (codegen/continuous_json_reader.hpp,
+// oasisc verify's reader of a continuous catalog's JSON (verify/continuous_json_reader.hpp,
 // the document codegen/continuous_json.hpp writes for tools outside the project): any text is
 // refused with a reason, or gives a catalog that rt::validate() either accepts or refuses
 // with a reason (the reader checks only the shape; verify refuses what validate refuses). A
@@ -6,15 +6,16 @@
 
 #include <string>
 
-#include "codegen/continuous_json_reader.hpp"
 #include "drive_filter.hpp"
 #include "fuzz_target.hpp"
+#include "oasis/rt/catalog_validation.hpp"
 #include "oasis/rt/catalog_view.hpp"
+#include "verify/continuous_json_reader.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   using namespace oasis;
   std::string error;
-  auto catalog = codegen::parse_continuous_catalog_json(fuzz::text_of(data, size), error);
+  auto catalog = verify::parse_continuous_catalog_json(fuzz::text_of(data, size), error);
   if (!catalog) {
     FUZZ_REQUIRE(!error.empty());
     return 0;

@@ -8,9 +8,9 @@
 #include <sstream>
 #include <string>
 
+#include "frontend/load_spec.hpp"
 #include "fuzz_target.hpp"
 #include "model/explorer.hpp"
-#include "frontend/load_spec.hpp"
 #include "verify/partition_result_reader.hpp"
 #include "verify/verifier.hpp"
 

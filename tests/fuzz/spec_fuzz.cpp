@@ -5,9 +5,9 @@
 
 #include <sstream>
 
+#include "frontend/load_spec.hpp"
 #include "fuzz_target.hpp"
 #include "model/explorer.hpp"
-#include "frontend/load_spec.hpp"
 
 namespace {
 

@@ -17,7 +17,7 @@ Every probe also asserts that the output holds no crash text (an exception's raw
 assertion, "terminate called", a sanitizer report).
 Run by ctest (-L hostile):
 
-    tests/hostile/hostile_probes.py --oasisc B/compiler/oasisc --oasis-sim B/tools/sim/oasis-sim \
+    tests/hostile/hostile_probes.py --oasisc B/compiler/oasisc --oasis-sim B/tools/table1/oasis-sim \
         --oasis-go1 B/hw/app/oasis-go1 --source-dir .
 """
 

@@ -9,6 +9,7 @@
 #include "go1_treat_catalog.hpp"
 #include "oasis/rt/attention_filter.hpp"
 #include "oasis/rt/catalog_file.hpp"
+#include "oasis/rt/catalog_validation.hpp"
 
 namespace {
 

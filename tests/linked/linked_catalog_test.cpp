@@ -10,6 +10,7 @@
 #include "discrete_tracking_catalog.hpp"
 #include "oasis/rt/attention_filter.hpp"
 #include "oasis/rt/catalog_file.hpp"
+#include "oasis/rt/catalog_validation.hpp"
 
 namespace {
 

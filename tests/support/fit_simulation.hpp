@@ -1,7 +1,7 @@
 #pragma once
 // Seeded simulators whose parameters the fits (compiler/fit/) must recover.
 //
-// simulate_runs: the trial loop of oasis-sim's Table I (tools/sim/table1.cpp) with a Markov
+// simulate_runs: the trial loop of oasis-sim's Table I (tools/table1/table1.cpp) with a Markov
 // chain for the true context instead of a fixed pattern: the context keeps itself with
 // p(stay) (or follows a full switching matrix), the robot picks an action uniformly among
 // those enabled in the true state, the true state moves under the true context's P^c, and the
@@ -20,19 +20,15 @@
 #include "fit/forward_algorithm.hpp"
 #include "fit/noise_fit.hpp"
 #include "fit/switching_log.hpp"
+#include "oasis/rt/split_mix64.hpp"
 
 namespace oasis::test {
 
-// SplitMix64 with its own uniform helpers: the same draws everywhere.
+// The runtime's SplitMix64 with the helpers these simulations use: the same draws everywhere.
 class SplitMix {
  public:
-  explicit SplitMix(std::uint64_t seed) : state_(seed) {}
-  std::uint64_t next() {
-    std::uint64_t z = (state_ += 0x9E3779B97F4A7C15ull);
-    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-    return z ^ (z >> 31);
-  }
+  explicit SplitMix(std::uint64_t seed) : bits_(seed) {}
+  std::uint64_t next() { return bits_.next(); }
   double uniform() { return static_cast<double>(next() >> 11) * 0x1.0p-53; }
   std::uint32_t below(std::uint32_t bound) {
     return static_cast<std::uint32_t>(uniform() * bound) % bound;
@@ -53,7 +49,7 @@ class SplitMix {
   }
 
  private:
-  std::uint64_t state_;
+  rt::SplitMix64 bits_;
 };
 
 enum class SimulatedNoise { kNone, kObserved, kPerceived };
@@ -84,7 +80,7 @@ inline std::vector<fit::LoggedRun> simulate_runs(const fit::FilterModel& filter,
     for (std::uint32_t k = 0; k < sim.steps; ++k) {
       if (k > 0)
         context = rng.pick(sim.switching.data() + static_cast<std::size_t>(context) * n, n);
-      const pipeline::CsrData& csr = filter.transitions[context];
+      const model::CsrData& csr = filter.transitions[context];
       std::vector<std::uint32_t> enabled;
       for (std::uint32_t a = 0; a < actions; ++a) {
         const std::size_t row = static_cast<std::size_t>(state) * actions + a;

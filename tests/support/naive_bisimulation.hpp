@@ -9,8 +9,8 @@
 #include <utility>
 #include <vector>
 
-#include "model/partition.hpp"
 #include "model/explicit_model.hpp"
+#include "model/partition.hpp"
 
 namespace oasis::test {
 

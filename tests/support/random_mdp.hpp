@@ -14,21 +14,17 @@
 #include <vector>
 
 #include "model/explicit_model.hpp"
+#include "oasis/rt/split_mix64.hpp"
 
 namespace oasis::test {
 
-// splitmix64: the same sequence on every platform and standard library, unlike the
+// The runtime's SplitMix64: the same sequence on every platform and standard library, unlike the
 // distributions of <random>.
 class TestRandom {
  public:
-  explicit TestRandom(std::uint64_t seed) : state_(seed) {}
+  explicit TestRandom(std::uint64_t seed) : bits_(seed) {}
 
-  std::uint64_t next() {
-    std::uint64_t z = (state_ += 0x9e3779b97f4a7c15ULL);
-    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
-    z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
-    return z ^ (z >> 31);
-  }
+  std::uint64_t next() { return bits_.next(); }
   // Uniform in [0, bound); bound > 0. The modulo bias is irrelevant here.
   std::uint32_t below(std::uint32_t bound) { return static_cast<std::uint32_t>(next() % bound); }
   // Uniform in [low, high].
@@ -45,7 +41,7 @@ class TestRandom {
   }
 
  private:
-  std::uint64_t state_;
+  rt::SplitMix64 bits_;
 };
 
 struct RandomMdpOptions {

@@ -12,9 +12,9 @@
 
 #include <gtest/gtest.h>
 
+#include "frontend/load_spec.hpp"
 #include "model/explorer.hpp"
 #include "pipeline/discrete_catalog.hpp"
-#include "frontend/load_spec.hpp"
 
 namespace oasis::test {
 
@@ -111,14 +111,14 @@ inline model::ExplicitModel explore_spec_file(const std::string& path) {
 
 // The catalog `oasisc compile` would build for `model` (with --robust p_correct if given);
 // fails the test and returns an empty catalog if it cannot be built.
-inline pipeline::CatalogData compiled_catalog(const model::ExplicitModel& model,
-                                              std::optional<double> p_correct = std::nullopt) {
+inline model::CatalogData compiled_catalog(const model::ExplicitModel& model,
+                                           std::optional<double> p_correct = std::nullopt) {
   pipeline::BuildOptions options;
   options.catalog.p_correct = p_correct;
   std::string error;
-  std::optional<pipeline::CatalogData> catalog = pipeline::build_catalog(model, 1, options, error);
+  std::optional<model::CatalogData> catalog = pipeline::build_catalog(model, 1, options, error);
   EXPECT_TRUE(catalog) << error;
-  return catalog ? std::move(*catalog) : pipeline::CatalogData{};
+  return catalog ? std::move(*catalog) : model::CatalogData{};
 }
 
 }  // namespace oasis::test

@@ -1,7 +1,7 @@
 #pragma once
 // The per-trial statistics of the paper's tables, computed from a trial's true and inferred
 // (ML) contexts, one entry per step. The paper defines them in words (Sec. IV, footnotes on
-// accuracy and lag); this is the one reading of those words that Table I (tools/sim) and
+// accuracy and lag); this is the one reading of those words that Table I (tools/table1) and
 // Table II (hw/log) share.
 //
 //  * accuracy: the fraction of steps k at which inferred[k] == truth[k].

@@ -7,7 +7,7 @@
 
 #include <gtest/gtest.h>
 
-#include "sim/random.hpp"
+#include "random/seeded_random.hpp"
 
 namespace oasis::hw::sim {
 namespace {
@@ -68,9 +68,9 @@ TEST(HallwayWorld, TheSameSeedGivesTheSameTrialBitForBit) {
 TEST(HallwayWorld, RandomNumbersArePinned) {
   // SplitMix64's published first output for seed 0 (Vigna's reference), and a normal that
   // does not depend on the standard library's distributions.
-  Random random(0);
+  SeededRandom random(0);
   EXPECT_EQ(random.next(), 0xe220a8397b1dcdafull);
-  Random a(3), b(3);
+  SeededRandom a(3), b(3);
   for (int k = 0; k < 10; ++k)
     EXPECT_EQ(a.normal(), b.normal());
 }
@@ -160,7 +160,7 @@ TEST(HallwayWorld, PeopleStayBetweenTheWallsAndTheHolderStaysNear) {
 TEST(HallwayWorld, DepthNoiseGrowsWithDistance) {
   SimCamera camera;
   camera.settings.miss_probability = 0.0;
-  Random noise(11);
+  SeededRandom noise(11);
   auto spread_at = [&](double x) {
     TrueScene scene;
     scene.people = {go1::PlanarPoint{x, 0.0}, go1::PlanarPoint{x, 5.0}};  // human 2 out of view

@@ -5,6 +5,7 @@
 
 #include "discrete_tracking_catalog.hpp"
 #include "oasis/rt/attention_filter.hpp"
+#include "oasis/rt/catalog_validation.hpp"
 #include "oasis/rt/catalog_view.hpp"
 
 int main() {

@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "oasis/rt/catalog_sections.hpp"
+#include "oasis/rt/catalog_validation.hpp"
 #include "oasis/rt/catalog_view.hpp"
 #include "oasis/rt/spec_hash.hpp"
 
