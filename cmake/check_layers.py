@@ -19,6 +19,8 @@ import sys
 import tempfile
 
 INCLUDE = re.compile(r'^\s*#\s*include\s+"([A-Za-z_]+)/[^"]+"', re.MULTILINE)
+# "../geom/grid.hpp" would reach another layer past the check: includes name their layer.
+RELATIVE = re.compile(r'^\s*#\s*include\s+"\.\./', re.MULTILINE)
 
 
 def read_rules(path):
@@ -59,11 +61,18 @@ def crossings(root, direct, layers):
                 if target in direct and target not in allowed:
                     line = text.count("\n", 0, match.start()) + 1
                     found.append((path, line, target, layer))
+            for match in RELATIVE.finditer(text):
+                line = text.count("\n", 0, match.start()) + 1
+                found.append((path, line, "..", layer))
     return found
 
 
 def report(found, direct):
     for path, line, target, layer in found:
+        if target == "..":
+            print(f"{path}:{line}: error: a relative include; name the layer "
+                  f'(#include "geom/grid.hpp"), so that the layer check sees it')
+            continue
         allowed = " ".join(sorted(reachable(direct, layer) - {layer})) or "nothing"
         print(f"{path}:{line}: error: layer '{layer}' includes a header of '{target}', "
               f"which it does not link (it may include: {allowed}; "
@@ -72,7 +81,8 @@ def report(found, direct):
 
 
 def self_test(root, direct):
-    """The check must fail on a verify file that includes a geom and a frontend header."""
+    """The check must fail on a verify file that includes a geom or a frontend header, or
+    any header by a relative path."""
     with tempfile.TemporaryDirectory() as scratch:
         copy = pathlib.Path(scratch) / "compiler"
         shutil.copytree(root, copy, ignore=shutil.ignore_patterns("*.o", "CMakeFiles"))
@@ -81,12 +91,13 @@ def self_test(root, direct):
             return 1
         victim = sorted((copy / "verify").glob("*.cpp"))[0]
         planted = 0
-        for header in ("geom/grid.hpp", "frontend/load_spec.hpp"):
+        for header, target in (("geom/grid.hpp", "geom"), ("frontend/load_spec.hpp", "frontend"),
+                               ("../geom/grid.hpp", "..")):
             original = victim.read_text()
             victim.write_text(f'#include "{header}"\n' + original)
             found = crossings(copy, direct, ["verify"])
             victim.write_text(original)
-            if len(found) != 1 or found[0][2] != header.split("/")[0]:
+            if len(found) != 1 or found[0][2] != target:
                 print(f"self-test: an include of {header} in {victim.name} was not caught")
                 return 1
             report(found, direct)
