@@ -68,6 +68,9 @@ class PrismScanner : public TextScanner {
 
 // What the .tra file says. Distribution payloads are the choice indices j.
 struct PrismTransitions {
+  // A Markov chain's file (header 'states transitions', rows without a choice column): read
+  // as an MDP with one action, unlabelled_action_name(0), and one choice per state.
+  bool markov_chain = false;
   std::uint32_t num_states = 0;
   std::vector<std::string> actions;
   DistributionCollector collector;
@@ -101,9 +104,11 @@ class ChoiceTable {
   std::vector<std::pair<std::uint32_t, model::ActionIndex>> choices_;
 };
 
+// `markov_chain`: the Markov chain form, header 'states rewards' and rows 'state target
+// reward' (the one choice, 0, implied).
 bool read_prism_transition_rewards(FileId file, DiagnosticEngine& diagnostics,
                                    std::uint32_t num_states, std::uint32_t num_actions,
-                                   const ChoiceTable& choices, ValueCache& values,
-                                   std::vector<ValueId>& rewards);
+                                   const ChoiceTable& choices, bool markov_chain,
+                                   ValueCache& values, std::vector<ValueId>& rewards);
 
 }  // namespace oasis::formats

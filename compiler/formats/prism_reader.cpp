@@ -104,7 +104,8 @@ model::Context read_rewards(const PrismFiles& files, DiagnosticEngine& diagnosti
     const auto k = static_cast<std::uint32_t>(tra.actions.size());
     context.rewards.choice.assign(std::size_t{tra.num_states} * k, RationalPool::kZero);
     read_prism_transition_rewards(*files.transition_rewards, diagnostics, tra.num_states, k,
-                                  ChoiceTable(tra), values, context.rewards.choice);
+                                  ChoiceTable(tra), tra.markov_chain, values,
+                                  context.rewards.choice);
   }
   return context;
 }

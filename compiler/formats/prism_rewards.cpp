@@ -2,9 +2,11 @@
 //
 //   .srew  STATES NONZERO            then  STATE REWARD
 //   .trew  STATES CHOICES NONZERO    then  STATE CHOICE TARGET REWARD
+//          STATES NONZERO            then  STATE TARGET REWARD          (a Markov chain)
 //
 // An MDP transition reward belongs to the choice: PRISM repeats it on every target row of
-// the choice, and so must the file (rows of one choice that disagree are an error).
+// the choice, and so must the file (rows of one choice that disagree are an error). A Markov
+// chain's state has one choice, so its rows must agree the same way.
 
 #include <algorithm>
 
@@ -119,13 +121,15 @@ std::optional<model::ActionIndex> ChoiceTable::action(model::StateIndex state,
 
 bool read_prism_transition_rewards(FileId file, DiagnosticEngine& diagnostics,
                                    std::uint32_t num_states, std::uint32_t num_actions,
-                                   const ChoiceTable& choices, ValueCache& values,
-                                   std::vector<ValueId>& rewards) {
+                                   const ChoiceTable& choices, bool markov_chain,
+                                   ValueCache& values, std::vector<ValueId>& rewards) {
   PrismScanner scan(file, diagnostics);
   const std::size_t errors = diagnostics.error_count();
   std::uint64_t declared = 0;
   const char* header = nullptr;
-  if (!read_header(scan, 3, num_states, "states choices rewards", declared, header)) return false;
+  if (!read_header(scan, markov_chain ? 2 : 3, num_states,
+                   markov_chain ? "states rewards" : "states choices rewards", declared, header))
+    return false;
   std::vector<bool> given(rewards.size(), false);
   std::uint64_t rows = 0;
   for (; scan.next_line() && !diagnostics.should_stop(); scan.skip_line()) {
@@ -135,7 +139,7 @@ bool read_prism_transition_rewards(FileId file, DiagnosticEngine& diagnostics,
     std::uint32_t choice = 0;
     if (!scan.read_state(num_states, "a state index", state)) continue;
     scan.skip_blanks();
-    if (!scan.read_index("the choice index", choice)) continue;
+    if (!markov_chain && !scan.read_index("the choice index", choice)) continue;
     scan.skip_blanks();
     if (!scan.read_state(num_states, "the target state", target)) continue;
     const std::optional<ValueId> reward = read_reward(scan, values);

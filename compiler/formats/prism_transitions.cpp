@@ -1,12 +1,15 @@
-// The .tra file of a PRISM MDP:
+// The .tra file of a PRISM MDP or Markov chain (DTMC):
 //
 //   # comments and blank lines anywhere
-//   STATES CHOICES TRANSITIONS
+//   STATES CHOICES TRANSITIONS        or, for a Markov chain,   STATES TRANSITIONS
 //   - - INITIAL -          (optional; PRISM writes these for some model types)
-//   SOURCE CHOICE TARGET PROBABILITY [ACTION]
+//   SOURCE CHOICE TARGET PROBABILITY [ACTION]                  SOURCE TARGET PROBABILITY [ACTION]
 //
 // Rows of one (SOURCE, CHOICE) must be adjacent, as PRISM writes them; they form one
-// distribution whose probabilities must sum to 1 (or to within ReadOptions::tolerance).
+// distribution whose probabilities must sum to 1 (or to within ReadOptions::tolerance). A
+// Markov chain is read as an MDP with one action, "[0]": each state's rows are its one
+// distribution, and their action labels, which a chain does not choose by, are read and set
+// aside.
 
 #include <unordered_map>
 
@@ -59,14 +62,13 @@ class TransitionsReader {
       numbers[count++] = number.overflow ? UINT64_MAX : number.value;
       scan_.skip_blanks();
     }
-    if (count != 3 || !scan_.at_line_end()) {
+    if ((count != 2 && count != 3) || !scan_.at_line_end()) {
       scan_.error_at(header_, scan_.rest_of_line().size(),
-                     count == 2 && scan_.at_line_end()
-                         ? "this is the .tra file of a Markov chain (2 header numbers); "
-                           "only MDPs ('states choices transitions') are supported"
-                         : "expected the header 'states choices transitions' of an MDP");
+                     "expected the header 'states choices transitions' of an MDP, or 'states "
+                     "transitions' of a Markov chain");
       return false;
     }
+    result_.markov_chain = count == 2;
     if (numbers[0] == 0 || numbers[0] > options_.max_states) {
       scan_.error_at(header_, 1,
                      numbers[0] == 0 ? std::string("the header declares no states")
@@ -76,10 +78,11 @@ class TransitionsReader {
       return false;
     }
     result_.num_states = static_cast<std::uint32_t>(numbers[0]);
-    declared_choices_ = numbers[1];
-    declared_rows_ = numbers[2];
+    declared_choices_ = result_.markov_chain ? 0 : numbers[1];
+    declared_rows_ = numbers[count - 1];
     const std::size_t reserve = std::min<std::uint64_t>(declared_rows_, scan_.end() - header_);
-    result_.collector.reserve(std::min<std::uint64_t>(declared_choices_, reserve), reserve);
+    const std::uint64_t choices = result_.markov_chain ? numbers[0] : declared_choices_;
+    result_.collector.reserve(std::min<std::uint64_t>(choices, reserve), reserve);
     scan_.skip_line();
     return true;
   }
@@ -106,7 +109,7 @@ class TransitionsReader {
     StateIndex target = 0;
     if (!scan_.read_state(result_.num_states, "the source state", source)) return;
     scan_.skip_blanks();
-    if (!scan_.read_index("the choice index", choice)) return;
+    if (!result_.markov_chain && !scan_.read_index("the choice index", choice)) return;
     scan_.skip_blanks();
     if (!scan_.read_state(result_.num_states, "the target state", target)) return;
     scan_.skip_blanks();
@@ -119,8 +122,8 @@ class TransitionsReader {
     ++rows_;
     if (!open_ || source != source_ || choice != choice_) {
       close_choice();
-      open_choice(row, source, choice, action);
-    } else if (action != action_text_) {
+      open_choice(row, source, choice, result_.markov_chain ? std::string_view() : action);
+    } else if (!result_.markov_chain && action != action_text_) {
       report_action_mismatch(action_token, action);
       return;
     }
@@ -197,7 +200,7 @@ class TransitionsReader {
 
   void check_counts() {
     if (scan_.diagnostics().should_stop()) return;
-    if (choices_ != declared_choices_) {
+    if (!result_.markov_chain && choices_ != declared_choices_) {
       scan_.error_at(header_, 1,
                      "the header declares " + std::to_string(declared_choices_) +
                          " choices but the file has " + std::to_string(choices_));

@@ -148,6 +148,29 @@ TEST_F(PrismTest, UnlabelledChoicesAreDistinctActions) {
   EXPECT_EQ(model->actions, (std::vector<std::string>{"[0]", "[1]"}));
 }
 
+// A Markov chain (two header numbers, no choice column) is an MDP with one action, "[0]":
+// each state's rows are its one distribution, their action labels set aside, and a .trew
+// reward belongs to that one choice.
+TEST_F(PrismTest, ReadsAMarkovChainAsAnMdpWithOneAction) {
+  const auto model = read("3 4\n0 1 0.5 a\n0 2 1/2 b\n1 1 1\n2 0 1 c\n", "", "", "3 1\n2 7\n",
+                          "3 2\n0 1 2\n0 2 2\n");
+  ASSERT_TRUE(model) << output();
+  EXPECT_EQ(model->actions, (std::vector<std::string>{"[0]"}));
+  EXPECT_EQ(probability(*model, 0, "[0]", 1), Rational(1, 2));
+  EXPECT_EQ(probability(*model, 0, "[0]", 2), Rational(1, 2));
+  EXPECT_EQ(probability(*model, 1, "[0]", 1), 1);
+  EXPECT_EQ(probability(*model, 2, "[0]", 0), 1);
+  EXPECT_EQ(model->reward(0, 2, 0), 7);  // the state reward of state 2
+  EXPECT_EQ(model->reward(0, 0, 0), 2);  // the transition reward of state 0's one choice
+  EXPECT_EQ(model->reward(0, 1, 0), 0);
+}
+
+TEST_F(PrismTest, AMarkovChainsStateWithRowsThatDisagreeOnItsRewardIsRefused) {
+  EXPECT_FALSE(read("2 3\n0 1 0.5\n0 0 0.5\n1 0 1\n", "", "", "", "2 2\n0 1 2\n0 0 3\n"));
+  EXPECT_TRUE(reported("x.trew:3:1: error: rows of state 0, choice 0 give different rewards"))
+      << output();
+}
+
 struct ErrorCase {
   const char* tra;
   const char* sta;
@@ -171,8 +194,15 @@ INSTANTIATE_TEST_SUITE_P(
     Errors, PrismErrorTest,
     ::testing::Values(
         ErrorCase{"", "", "", "", "", "x.tra:1:1: error: empty transitions file"},
-        ErrorCase{"2 3\n0 1 1\n", "", "", "", "",
-                  "x.tra:1:1: error: this is the .tra file of a Markov chain"},
+        ErrorCase{"2 1 1 1\n0 0 1 1\n", "", "", "", "",
+                  "x.tra:1:1: error: expected the header 'states choices transitions' of an "
+                  "MDP, or 'states transitions' of a Markov chain"},
+        ErrorCase{"2 3\n0 1 1\n1 0 1\n0 0 1\n", "", "", "", "",
+                  "x.tra:4:1: error: more rows of state 0, choice 0 after rows of other choices"},
+        ErrorCase{"2 2\n0 1 0.5\n1 1 1\n", "", "", "", "",
+                  "x.tra:2:1: error: probabilities of state 0, choice 0 sum to 1/2 (0.5), not 1"},
+        ErrorCase{"2 2\n0 1 1\n1 0 1\n", "", "", "", "2 1\n0 0 1 2\n",
+                  "x.trew:2:7: error: unexpected text after the reward"},
         ErrorCase{"2 1 x\n", "", "", "", "",
                   "x.tra:1:1: error: expected the header 'states choices transitions'"},
         ErrorCase{"0 0 0\n", "", "", "", "", "x.tra:1:1: error: the header declares no states"},
@@ -331,6 +361,18 @@ TEST_F(PrismFileTest, RandomModelRoundTrips) {
                 contents((directory_ / "again").string() + extension))
         << extension;
   }
+}
+
+TEST_F(PrismFileTest, AMarkovChainIsWrittenBackAsAOneActionMdp) {
+  const auto chain = read("3 4\n0 1 0.5\n0 2 0.5\n1 1 1\n2 0 1\n");
+  ASSERT_TRUE(chain) << output();
+  std::string error;
+  ASSERT_TRUE(write_prism(*chain, 0, base(), error)) << error;
+  const std::string tra = contents(base() + ".tra");
+  EXPECT_EQ(tra.rfind("3 3 4\n", 0), 0U) << tra;  // states, choices, transitions
+  const auto read_back = read_model_file(base() + ".tra", sources_, diagnostics_, options_);
+  ASSERT_TRUE(read_back) << output();
+  expect_same_model(*chain, *read_back);
 }
 
 TEST_F(PrismFileTest, SampleRoundTripsAndStaysPrismReadable) {
