@@ -7,6 +7,7 @@
 #include <unistd.h>
 
 #include "../../support/scratch_directory.hpp"
+#include "bisim/refinement.hpp"
 #include "formats/model_file.hpp"
 #include "formats/prism_reader.hpp"
 #include "formats/prism_writer.hpp"
@@ -163,6 +164,16 @@ TEST_F(PrismTest, ReadsAMarkovChainAsAnMdpWithOneAction) {
   EXPECT_EQ(model->reward(0, 2, 0), 7);  // the state reward of state 2
   EXPECT_EQ(model->reward(0, 0, 0), 2);  // the transition reward of state 0's one choice
   EXPECT_EQ(model->reward(0, 1, 0), 0);
+}
+
+// Bisimulation of the one-action MDP is the chain's lumping: 1 and 2 both reach 3 surely.
+TEST_F(PrismTest, AMarkovChainQuotientsAsItsLumping) {
+  const auto chain = read("4 5\n0 1 0.5\n0 2 0.5\n1 3 1\n2 3 1\n3 3 1\n", "", "", "4 1\n3 1\n");
+  ASSERT_TRUE(chain) << output();
+  const model::Partition blocks = bisim::coarsest_bisimulation(*chain, 0);
+  EXPECT_EQ(blocks.num_blocks, 3U);
+  EXPECT_EQ(blocks.block_of[1], blocks.block_of[2]);
+  EXPECT_NE(blocks.block_of[0], blocks.block_of[1]);
 }
 
 TEST_F(PrismTest, AMarkovChainsStateWithRowsThatDisagreeOnItsRewardIsRefused) {
