@@ -1,8 +1,6 @@
 #include "frontend/checker.hpp"
 
 #include <algorithm>
-#include <map>
-#include <set>
 #include <string>
 #include <utility>
 
@@ -18,9 +16,7 @@ namespace oasis::frontend {
 namespace {
 
 using model::Command;
-using model::Expression;
 using model::ModelKind;
-using model::Op;
 using model::Type;
 
 // support/limits.hpp says why each is what it is.
