@@ -11,7 +11,12 @@ struct VelocityCommand {
   float lateral = 0.0f;   // m/s, body frame, + left
   float yaw_rate = 0.0f;  // rad/s, + counter-clockwise
 
-  bool operator==(const VelocityCommand&) const = default;
+  // Written out, not defaulted: hw/ros's ROS-facing files include this and compile as C++17
+  // (ROS 1's message headers do not compile as C++20).
+  bool operator==(const VelocityCommand& other) const {
+    return forward == other.forward && lateral == other.lateral && yaw_rate == other.yaw_rate;
+  }
+  bool operator!=(const VelocityCommand& other) const { return !(*this == other); }
 };
 
 // Defaults are conservative indoor values, well inside the trot ranges comm.h documents

@@ -41,7 +41,13 @@ struct LinkRecord {
   std::uint64_t datagrams_ignored = 0;  // from anyone but the robot: never decoded
   std::string last_ignored_from;        // "ADDRESS:PORT" of the last of them; "" if none
 
-  bool operator==(const LinkRecord&) const = default;
+  // Written out, not defaulted: hw/ros's ROS-facing files include this and compile as C++17.
+  bool operator==(const LinkRecord& other) const {
+    return states_received == other.states_received && states_refused == other.states_refused &&
+           datagrams_ignored == other.datagrams_ignored &&
+           last_ignored_from == other.last_ignored_from;
+  }
+  bool operator!=(const LinkRecord& other) const { return !(*this == other); }
 };
 
 struct StepRecord {

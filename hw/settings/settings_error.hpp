@@ -16,7 +16,13 @@ struct Diagnostic {
   std::string message;      // lower-case fragment: "expected an integer in 1..65535, got \"80x2\""
   std::string source_line;  // the file's line `line`, for the caret; empty if none
 
-  bool operator==(const Diagnostic&) const = default;
+  // Written out, not defaulted: the hallway world (hw/sim), which hw/ros's ROS-facing files
+  // include, reaches this header, and those files compile as C++17.
+  bool operator==(const Diagnostic& other) const {
+    return line == other.line && column == other.column && key == other.key &&
+           message == other.message && source_line == other.source_line;
+  }
+  bool operator!=(const Diagnostic& other) const { return !(*this == other); }
 };
 
 // FILE:LINE:COL: error: KEY: MESSAGE, then the source line and a caret (if known).

@@ -1,0 +1,65 @@
+#include "ros/node_settings.hpp"
+
+#include <vector>
+
+#include "settings/checks.hpp"
+#include "settings/schema.hpp"
+#include "settings/schema_reader.hpp"
+
+namespace oasis::hw::ros_node {
+namespace {
+
+using settings::detail::EnumCodec;
+using settings::detail::MillisecondsCodec;
+using settings::detail::TextCodec;
+
+const EnumCodec<InputMode> kModeCodec{
+    {{"camera", InputMode::kCamera}, {"detections", InputMode::kDetections}}};
+
+// The `ros:` section, in the schema's visitor form (settings/schema.hpp).
+template <class V, class S>
+void describe_ros(V& v, S& s) {
+  v.section(
+      "ros",
+      "oasis-ros only (hw/ros/README.md): where observations come from and commands go.", [&] {
+        v.value("mode", s.mode, kModeCodec,
+                "camera (images through our perception) or detections (your tracker's output)");
+        v.value("input_timeout_ms", s.input_timeout, MillisecondsCodec{50, 5000},
+                "no new decision this long after the last one's period: a zero Twist");
+        v.value("use_odom", s.use_odom, settings::detail::BoolCodec{},
+                "the pose from the odom topic; false: integrate our own commands");
+        v.value("base_frame", s.base_frame, TextCodec{}, "REP-105 body frame");
+        v.value("odom_frame", s.odom_frame, TextCodec{}, "REP-105 odometry frame");
+        v.section("topics", "Topic names, relative to the node's namespace.", [&] {
+          v.value("colour", s.topics.colour, TextCodec{}, "sensor_msgs/Image, bgr8 or rgb8");
+          v.value("depth", s.topics.depth, TextCodec{}, "sensor_msgs/Image, 16UC1 mm or 32FC1 m");
+          v.value("camera_info", s.topics.camera_info, TextCodec{}, "sensor_msgs/CameraInfo");
+          v.value("detections", s.topics.detections, TextCodec{}, "geometry_msgs/PoseArray");
+          v.value("reward", s.topics.reward, TextCodec{}, "std_msgs/Float64");
+          v.value("treat_holder", s.topics.treat_holder, TextCodec{}, "std_msgs/Int8");
+          v.value("odom", s.topics.odom, TextCodec{}, "nav_msgs/Odometry");
+          v.value("cmd_vel", s.topics.cmd_vel, TextCodec{}, "geometry_msgs/Twist");
+          v.value("ground_truth", s.topics.ground_truth, TextCodec{},
+                  "diagnostic_msgs/DiagnosticArray");
+        });
+      });
+}
+
+}  // namespace
+
+NodeSettings parse_node_settings(std::string_view yaml_text, std::string_view origin) {
+  NodeSettings values;
+  settings::detail::parse_with_schema(
+      yaml_text, origin, values,
+      [](auto& visitor, auto& node) {
+        settings::detail::describe(visitor, node.go1);
+        describe_ros(visitor, node.ros);
+      },
+      [](const NodeSettings& node) { return settings::detail::cross_check(node.go1); },
+      "robot:, limits:, actions:, camera:, perception:, loop:, source:, ros:");
+  return values;
+}
+
+std::string to_string(InputMode mode) { return kModeCodec.format(mode); }
+
+}  // namespace oasis::hw::ros_node
