@@ -51,9 +51,10 @@ struct CmdVelLink::State {
         continue;
       }
       if (!stopped_by_fail_safe) {
-        ROS_WARN("oasis-ros: no fresh input for %lld ms after the last decision's period: "
-                 "zero Twist until the next decision",
-                 static_cast<long long>(options.input_timeout.count()));
+        ROS_WARN(
+            "oasis-ros: no fresh input for %lld ms after the last decision's period: "
+            "zero Twist until the next decision",
+            static_cast<long long>(options.input_timeout.count()));
         ++fail_safe_stops;
       }
       stopped_by_fail_safe = true;
@@ -72,7 +73,9 @@ CmdVelLink::CmdVelLink(RosSession& session, CmdVelOptions options,
   state_->repeater = std::thread([state = state_.get()] { state->repeat(); });
 }
 
-CmdVelLink::~CmdVelLink() { shut_down(); }
+CmdVelLink::~CmdVelLink() {
+  shut_down();
+}
 
 void CmdVelLink::command(const go1::VelocityCommand& velocity, double time_s) {
   std::lock_guard<std::mutex> lock(state_->mutex);

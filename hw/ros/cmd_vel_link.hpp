@@ -22,8 +22,8 @@ namespace oasis::hw::ros_node {
 
 struct CmdVelOptions {
   std::string topic = "cmd_vel";
-  double period_s = 0.2;                        // the loop's control period
-  std::chrono::milliseconds keepalive{50};      // loop.keepalive_ms
+  double period_s = 0.2;                         // the loop's control period
+  std::chrono::milliseconds keepalive{50};       // loop.keepalive_ms
   std::chrono::milliseconds input_timeout{200};  // ros.input_timeout_ms
 };
 

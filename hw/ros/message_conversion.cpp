@@ -17,8 +17,8 @@ constexpr const char* kTruthStatusName = "oasis ground truth";
 
 cv::Mat colour_as_bgr(const sensor_msgs::Image& colour) {
   const std::string& encoding = colour.encoding;
-  if (encoding != encodings::BGR8 && encoding != encodings::RGB8 &&
-      encoding != encodings::BGRA8 && encoding != encodings::RGBA8)
+  if (encoding != encodings::BGR8 && encoding != encodings::RGB8 && encoding != encodings::BGRA8 &&
+      encoding != encodings::RGBA8)
     throw std::invalid_argument("colour image: encoding \"" + encoding +
                                 "\" is not one of bgr8, rgb8, bgra8, rgba8");
   try {
@@ -162,9 +162,10 @@ go1::VelocityCommand velocity_from_twist(const geometry_msgs::Twist& twist) {
 PerceptionResult perception_from_detections(const Detections& detections) {
   const auto& poses = detections.positions.poses;
   if (poses.size() != 2)
-    throw std::invalid_argument("detections: expected one pose per catalog object (2: human 1, "
-                                "human 2), got " +
-                                std::to_string(poses.size()));
+    throw std::invalid_argument(
+        "detections: expected one pose per catalog object (2: human 1, "
+        "human 2), got " +
+        std::to_string(poses.size()));
   PerceptionResult seen;
   for (std::size_t k = 0; k < 2; ++k) {
     const auto& position = poses[k].position;

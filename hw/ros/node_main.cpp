@@ -5,6 +5,7 @@
 
 #include <csignal>
 #include <cstdio>
+#include <functional>
 #include <iostream>
 #include <memory>
 #include <optional>
@@ -23,6 +24,7 @@
 #include "perception/perception.hpp"
 #include "perception/tag_visibility.hpp"
 #include "ros/attention_publisher.hpp"
+#include "ros/bag_feed.hpp"
 #include "ros/cmd_vel_link.hpp"
 #include "ros/node_settings.hpp"
 #include "ros/ros_session.hpp"
@@ -32,6 +34,8 @@ namespace oasis::hw::ros_node {
 namespace {
 
 struct NodeRequest {
+  std::string bag_path;     // replay this bag instead of joining a ROS graph
+  std::string params_path;  // with --bag: the parameters as a YAML file
   std::string log_path;
   std::optional<std::uint64_t> steps;
   int master_timeout_ms = 10000;
@@ -42,13 +46,16 @@ struct NodeRequest {
 // and the ground truth of the same instant. Ends on a stop signal or when ROS shuts down.
 class FeedFrames final : public FrameSource {
  public:
-  FeedFrames(InputFeed& feed, const RosSession& session) : feed_(feed), session_(session) {}
+  // `ros_ok`: false once ROS shut down (always true for a bag).
+  FeedFrames(InputFeed& feed, std::function<bool()> ros_ok)
+      : feed_(feed), ros_ok_(std::move(ros_ok)) {}
 
   NextFrame next() override {
     while (true) {
       if (go1::stop_signal_received()) return SourceStop{SourceStop::Kind::kEnd, "stop signal"};
-      if (!session_.ok()) return SourceStop{SourceStop::Kind::kEnd, "ROS shut down"};
+      if (!ros_ok_()) return SourceStop{SourceStop::Kind::kEnd, "ROS shut down"};
       std::optional<ObservedInput> input = feed_.next(std::chrono::milliseconds(50));
+      if (!input && feed_.ended()) return SourceStop{SourceStop::Kind::kEnd, "the bag ended"};
       if (!input) continue;
       current_ = std::move(input);
       Frame frame = current_->frame ? *current_->frame : Frame{};
@@ -61,7 +68,7 @@ class FeedFrames final : public FrameSource {
 
  private:
   InputFeed& feed_;
-  const RosSession& session_;
+  std::function<bool()> ros_ok_;
   std::optional<ObservedInput> current_;
 };
 
@@ -89,21 +96,14 @@ class ObservedPerception final : public PerceptionStage {
   Perception camera_;
 };
 
-std::vector<std::string> catalog_context_names(const rt::CatalogView& catalog) {
-  std::vector<std::string> names;
-  for (std::uint32_t k = 0; k < catalog.num_abstractions; ++k)
-    names.emplace_back(catalog.abstractions[k].context);
-  return names;
-}
-
 // "parameter ~loop/rate_hz: expected ...": a settings key as the ROS parameter it is.
 void print_parameter_errors(const settings::SettingsError& error, const RosSession& session) {
   for (const settings::Diagnostic& diagnostic : error.diagnostics()) {
     std::string parameter = diagnostic.key;
     for (char& c : parameter)
       if (c == '.') c = '/';
-    std::cerr << "oasis-ros: error: parameter ~" << parameter << " (" << session.node_name()
-              << "/" << parameter << "): " << diagnostic.message << '\n';
+    std::cerr << "oasis-ros: error: parameter ~" << parameter << " (" << session.node_name() << "/"
+              << parameter << "): " << diagnostic.message << '\n';
   }
 }
 
@@ -113,57 +113,48 @@ void print_step(const log::StepRecord& record) {
               record.action_name.c_str(), record.reward, record.holder);
 }
 
-int run_node(const NodeRequest& request, int argc, char** argv) {
-  go1::install_stop_signal_handlers();
-  RosSession session(argc, argv, "oasis_ros",
-                     std::chrono::milliseconds(request.master_timeout_ms));
-  const std::string cmd_vel_fallback = session.private_string_parameter("ros/topics/cmd_vel",
-                                                                       RosTopics{}.cmd_vel);
-  auto stop_before_start = [&] {
-    CmdVelLink::send_zero_once(session, cmd_vel_fallback, std::chrono::milliseconds(2000));
-    session.shut_down(std::chrono::milliseconds(200));
-    return 1;
-  };
+// What the loop runs, from the settings: the catalog, the profile and its controller. Throws
+// settings::SettingsError or app::SetupError.
+struct Assembly {
+  explicit Assembly(NodeSettings node_settings) : settings(std::move(node_settings)) {
+    catalog.emplace(settings.go1.loop.catalog, settings.go1.loop.catalog_spec);
+    profile = app::robot_profile(settings.go1.loop.controller);
+    controller = app::make_controller(
+        profile, {catalog->view(), app::controller_settings(settings.go1, catalog->view()), {}});
+  }
+
+  TopicInputOptions input_options() const {
+    std::vector<std::string> names;
+    for (std::uint32_t k = 0; k < catalog->view().num_abstractions; ++k)
+      names.emplace_back(catalog->view().abstractions[k].context);
+    return {settings.ros.mode, settings.ros.topics, settings.ros.use_odom, names};
+  }
+
+  double period_s() const { return 1.0 / settings.go1.loop.rate_hz; }
 
   NodeSettings settings;
   std::optional<app::SessionCatalog> catalog;
   settings::ControllerProfile profile;
   std::unique_ptr<app::LoopController> controller;
-  try {
-    settings = parse_node_settings(session.private_parameters_yaml(),
-                                   "the ROS parameters of " + session.node_name());
-    catalog.emplace(settings.go1.loop.catalog, settings.go1.loop.catalog_spec);
-    profile = app::robot_profile(settings.go1.loop.controller);
-    controller = app::make_controller(
-        profile, {catalog->view(), app::controller_settings(settings.go1, catalog->view()), {}});
-  } catch (const settings::SettingsError& e) {
-    print_parameter_errors(e, session);
-    return stop_before_start();
-  } catch (const std::exception& e) {
-    std::cerr << "oasis-ros: error: " << e.what() << '\n';
-    return stop_before_start();
-  }
+};
 
-  TopicInputs inputs(session, {settings.ros.mode, settings.ros.topics, settings.ros.use_odom,
-                               catalog_context_names(catalog->view())});
-  FeedFrames frames(inputs, session);
-  const double period_s = 1.0 / settings.go1.loop.rate_hz;
-  CmdVelLink link(session,
-                  {settings.ros.topics.cmd_vel, period_s, settings.go1.loop.keepalive,
-                   settings.ros.input_timeout},
-                  [&frames]() -> std::optional<go1::Pose> {
-                    return frames.current() ? frames.current()->odometry : std::nullopt;
-                  });
-  ObservedPerception perception(frames, settings.go1);
-  AttentionPublisher topics(session, catalog->view(), settings.go1.perception.reach,
-                         settings.ros.base_frame);
+// The loop over the feed's observations: perception (or the detections), the controller, the
+// link; every step logged, printed and handed to `publish`.
+struct Drive {
+  app::LoopResult result;
+  std::vector<log::StepRecord> records;
+};
+
+Drive drive(Assembly& assembly, FeedFrames& frames, app::RobotLink& link,
+            const NodeRequest& request,
+            const std::function<void(const log::StepRecord&, double)>& publish) {
+  ObservedPerception perception(frames, assembly.settings.go1);
   std::optional<log::StepLogWriter> log_writer;
   if (!request.log_path.empty()) log_writer.emplace(request.log_path);
-
-  std::vector<log::StepRecord> records;
+  Drive drive;
   app::LoopParts parts{frames,
                        perception,
-                       *controller,
+                       *assembly.controller,
                        link,
                        [&frames]() -> std::optional<log::GroundTruth> {
                          return frames.current() ? frames.current()->truth : std::nullopt;
@@ -171,22 +162,80 @@ int run_node(const NodeRequest& request, int argc, char** argv) {
                        [&](const log::StepRecord& record) {
                          if (log_writer) log_writer->write(record);
                          if (!request.quiet) print_step(record);
-                         topics.publish(record, frames.current() ? frames.current()->stamp_s : 0);
-                         records.push_back(record);
+                         if (publish) publish(record, frames.current()->stamp_s);
+                         drive.records.push_back(record);
                        },
                        [] { return go1::stop_signal_received(); }};
   app::LoopOptions options;
-  options.period_s = period_s;
-  options.keepalive_s = std::chrono::duration<double>(settings.go1.loop.keepalive).count();
+  options.period_s = assembly.period_s();
+  options.keepalive_s = std::chrono::duration<double>(assembly.settings.go1.loop.keepalive).count();
   options.realtime = false;  // the input's pace is the loop's; the link repeats between steps
   options.max_steps = request.steps;
-  std::cerr << "oasis-ros: " << catalog->describe() << "; controller " << profile.name << " ("
-            << settings::profile_summary(profile) << "); " << inputs.describe() << "; "
-            << link.describe() << '\n';
+  drive.result = app::run_loop(parts, options);
+  return drive;
+}
 
-  app::LoopResult result;
+// The Table II row when the observations carried ground truth (a simulator, or its bag).
+void print_score(const NodeRequest& request, const std::vector<log::StepRecord>& records) {
+  if (!request.quiet && !records.empty() && records.front().truth)
+    log::print_table2(std::cout, log::summarize_trials({log::score_trial(records)}));
+}
+
+// Dies of the signal that stopped the loop, as an interrupted program should, once the robot
+// was told to stop.
+void raise_received_signal() {
+  if (go1::received_stop_signal() == 0) return;
+  std::cout.flush();
+  go1::restore_default_signal_handlers();
+  std::raise(go1::received_stop_signal());
+}
+
+std::string description(const Assembly& assembly, const InputFeed& feed,
+                        const app::RobotLink& link) {
+  return assembly.catalog->describe() + "; controller " + assembly.profile.name + " (" +
+         settings::profile_summary(assembly.profile) + "); " + feed.describe() + "; " +
+         link.describe();
+}
+
+int run_node(const NodeRequest& request, int argc, char** argv) {
+  go1::install_stop_signal_handlers();
+  RosSession session(argc, argv, "oasis_ros", std::chrono::milliseconds(request.master_timeout_ms));
+  const std::string cmd_vel_fallback =
+      session.private_string_parameter("ros/topics/cmd_vel", RosTopics{}.cmd_vel);
+  std::unique_ptr<Assembly> assembly;
   try {
-    result = app::run_loop(parts, options);
+    assembly = std::make_unique<Assembly>(parse_node_settings(
+        session.private_parameters_yaml(), "the ROS parameters of " + session.node_name()));
+  } catch (const std::exception& e) {
+    if (const auto* bad = dynamic_cast<const settings::SettingsError*>(&e))
+      print_parameter_errors(*bad, session);
+    else
+      std::cerr << "oasis-ros: error: " << e.what() << '\n';
+    // Nothing started; the robot is told to stand still all the same.
+    CmdVelLink::send_zero_once(session, cmd_vel_fallback, std::chrono::milliseconds(2000));
+    session.shut_down(std::chrono::milliseconds(200));
+    return 1;
+  }
+
+  const NodeSettings& settings = assembly->settings;
+  TopicInputs inputs(session, assembly->input_options());
+  FeedFrames frames(inputs, [&session] { return session.ok(); });
+  CmdVelLink link(session,
+                  {settings.ros.topics.cmd_vel, assembly->period_s(), settings.go1.loop.keepalive,
+                   settings.ros.input_timeout},
+                  [&frames]() -> std::optional<go1::Pose> {
+                    return frames.current() ? frames.current()->odometry : std::nullopt;
+                  });
+  AttentionPublisher topics(session, assembly->catalog->view(), settings.go1.perception.reach,
+                            settings.ros.base_frame);
+  std::cerr << "oasis-ros: " << description(*assembly, inputs, link) << '\n';
+
+  Drive result;
+  try {
+    result = drive(*assembly, frames, link, request,
+                   [&topics](const log::StepRecord& record, double stamp_s) {
+                     topics.publish(record, stamp_s);
+                   });
   } catch (const std::exception& e) {
     link.shut_down();
     std::cerr << "oasis-ros: error: " << e.what() << "; the robot was sent a zero Twist\n";
@@ -194,19 +243,58 @@ int run_node(const NodeRequest& request, int argc, char** argv) {
     return 1;
   }
   link.shut_down();
-  std::cerr << "oasis-ros: " << result.steps << " steps"
-            << (result.reason.empty() ? "" : ", ended by " + result.reason)
+  std::cerr << "oasis-ros: " << result.result.steps << " steps"
+            << (result.result.reason.empty() ? "" : ", ended by " + result.result.reason)
             << "; a zero Twist was sent; fail-safe stops " << link.fail_safe_stops()
             << ", inputs dropped " << inputs.dropped() << ", refused " << inputs.refused()
             << (inputs.refused() > 0 ? " (last: " + inputs.last_refusal() + ")" : "") << '\n';
   session.shut_down(std::chrono::milliseconds(200));
-  if (!request.quiet && !records.empty() && records.front().truth)
-    log::print_table2(std::cout, log::summarize_trials({log::score_trial(records)}));
-  if (go1::received_stop_signal() != 0) {
-    std::cout.flush();
-    go1::restore_default_signal_handlers();
-    std::raise(go1::received_stop_signal());
+  print_score(request, result.records);
+  raise_received_signal();
+  return 0;
+}
+
+// A replay's robot: nothing is sent; the pose is the bag's odometry of the observation, or,
+// without one, the commands integrated as a dry run does.
+class ReplayLink final : public app::RobotLink {
+ public:
+  explicit ReplayLink(const FeedFrames& frames) : frames_(frames) {}
+  void command(const go1::VelocityCommand& velocity, double time_s) override {
+    dry_run_.command(velocity, time_s);
   }
+  go1::Pose pose() const override {
+    const std::optional<ObservedInput>& input = frames_.current();
+    return input && input->odometry ? *input->odometry : dry_run_.pose();
+  }
+  void shut_down() override { dry_run_.shut_down(); }
+  std::string describe() const override { return "replay (nothing sent)"; }
+
+ private:
+  const FeedFrames& frames_;
+  app::DryRunLink dry_run_;
+};
+
+int replay_bag(const NodeRequest& request) {
+  go1::install_stop_signal_handlers();
+  std::unique_ptr<Assembly> assembly;
+  try {
+    assembly = std::make_unique<Assembly>(
+        request.params_path.empty() ? NodeSettings{} : load_node_settings(request.params_path));
+  } catch (const settings::SettingsError& e) {
+    std::cerr << e.what() << '\n';
+    return 1;
+  }
+  BagFeed bag(request.bag_path, assembly->input_options());
+  FeedFrames frames(bag, [] { return true; });
+  ReplayLink link(frames);
+  std::cerr << "oasis-ros: " << description(*assembly, bag, link) << '\n';
+  const Drive result = drive(*assembly, frames, link, request, {});
+  std::cerr << "oasis-ros: " << result.result.steps << " steps replayed"
+            << (result.result.reason.empty() ? "" : ", ended by " + result.result.reason)
+            << (bag.refused() > 0 ? "; " + std::to_string(bag.refused()) + " messages refused" : "")
+            << '\n';
+  print_score(request, result.records);
+  raise_received_signal();
   return 0;
 }
 
@@ -225,6 +313,15 @@ int main(int argc, char** argv) {
       "detections) in, cmd_vel out, the belief and rviz markers published",
       "oasis-ros"};
   NodeRequest request;
+  app.add_option("--bag", request.bag_path,
+                 "replay a rosbag offline instead of joining a ROS graph (no master needed): "
+                 "the same input topics are read from it, the step log written, the Table II "
+                 "score printed when it carries ground truth")
+      ->check(CLI::ExistingFile);
+  app.add_option("--params", request.params_path,
+                 "with --bag: the node's parameters as a YAML file (go1.yaml's keys and ros:); "
+                 "default: the defaults")
+      ->check(CLI::ExistingFile);
   app.add_option("--log", request.log_path,
                  "write every step as a JSON line (hw/log/README.md) to this file");
   app.add_option("--steps", request.steps, "stop after this many control steps");
@@ -249,7 +346,11 @@ int main(int argc, char** argv) {
     return status == 0 ? 0 : 2;
   }
   try {
-    return run_node(request, argc, argv);
+    if (!request.params_path.empty() && request.bag_path.empty()) {
+      std::cerr << "oasis-ros: --params goes with --bag; a live node reads the ROS parameters\n";
+      return 2;
+    }
+    return request.bag_path.empty() ? run_node(request, argc, argv) : replay_bag(request);
   } catch (const std::exception& e) {
     std::cerr << "oasis-ros: error: " << e.what() << '\n';
     return 1;

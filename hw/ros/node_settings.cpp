@@ -20,8 +20,8 @@ const EnumCodec<InputMode> kModeCodec{
 template <class V, class S>
 void describe_ros(V& v, S& s) {
   v.section(
-      "ros",
-      "oasis-ros only (hw/ros/README.md): where observations come from and commands go.", [&] {
+      "ros", "oasis-ros only (hw/ros/README.md): where observations come from and commands go.",
+      [&] {
         v.value("mode", s.mode, kModeCodec,
                 "camera (images through our perception) or detections (your tracker's output)");
         v.value("input_timeout_ms", s.input_timeout, MillisecondsCodec{50, 5000},
@@ -60,6 +60,12 @@ NodeSettings parse_node_settings(std::string_view yaml_text, std::string_view or
   return values;
 }
 
-std::string to_string(InputMode mode) { return kModeCodec.format(mode); }
+NodeSettings load_node_settings(const std::string& file) {
+  return parse_node_settings(settings::detail::read_yaml_file(file), file);
+}
+
+std::string to_string(InputMode mode) {
+  return kModeCodec.format(mode);
+}
 
 }  // namespace oasis::hw::ros_node

@@ -42,6 +42,9 @@ struct NodeSettings {
 // naming its key ("loop.rate_hz", "ros.mode").
 NodeSettings parse_node_settings(std::string_view yaml_text, std::string_view origin);
 
+// The same from a YAML file (oasis-ros --bag --params FILE). Throws settings::SettingsError.
+NodeSettings load_node_settings(const std::string& file);
+
 // "camera" or "detections".
 std::string to_string(InputMode mode);
 

@@ -65,8 +65,7 @@ RosSession::~RosSession() {
 std::string RosSession::private_parameters_yaml() const {
   XmlRpc::XmlRpcValue tree;
   const std::string ns = handles_->private_node->getNamespace();
-  if (!ros::param::get(ns, tree) || tree.getType() != XmlRpc::XmlRpcValue::TypeStruct)
-    return "{}";
+  if (!ros::param::get(ns, tree) || tree.getType() != XmlRpc::XmlRpcValue::TypeStruct) return "{}";
   YAML::Emitter out;
   out.SetDoublePrecision(17);
   out << yaml_of(tree);
@@ -80,9 +79,15 @@ std::string RosSession::private_string_parameter(const std::string& name,
   return fallback;
 }
 
-std::string RosSession::node_name() const { return ros::this_node::getName(); }
-std::string RosSession::master_uri() const { return ros::master::getURI(); }
-bool RosSession::ok() const { return ros::ok(); }
+std::string RosSession::node_name() const {
+  return ros::this_node::getName();
+}
+std::string RosSession::master_uri() const {
+  return ros::master::getURI();
+}
+bool RosSession::ok() const {
+  return ros::ok();
+}
 
 void RosSession::shut_down(std::chrono::milliseconds flush) {
   if (!ros::isStarted()) return;

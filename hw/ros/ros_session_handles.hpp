@@ -1,9 +1,9 @@
 #pragma once
 // The ROS side of a RosSession, for the edge's C++17 files only.
+#include <memory>
+
 #include <ros/node_handle.h>
 #include <ros/spinner.h>
-
-#include <memory>
 
 namespace oasis::hw::ros_node {
 

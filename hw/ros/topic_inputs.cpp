@@ -29,8 +29,8 @@ constexpr std::size_t kKeptTruths = 50;
 // still arrive just after. The loop waits this long for it, once a truth has ever come.
 constexpr std::chrono::milliseconds kTruthWait{100};
 
-using ImageSync =
-    message_filters::TimeSynchronizer<sensor_msgs::Image, sensor_msgs::Image, sensor_msgs::CameraInfo>;
+using ImageSync = message_filters::TimeSynchronizer<sensor_msgs::Image, sensor_msgs::Image,
+                                                    sensor_msgs::CameraInfo>;
 
 }  // namespace
 
@@ -40,7 +40,7 @@ struct TopicInputs::State {
   std::condition_variable arrived;
   std::optional<ObservedInput> pending;
   std::deque<std::pair<ros::Time, go1::Pose>> odometry;  // oldest first
-  std::map<std::uint64_t, log::GroundTruth> truths;  // by stamp, in nanoseconds
+  std::map<std::uint64_t, log::GroundTruth> truths;      // by stamp, in nanoseconds
   bool truth_seen = false;
   std::optional<double> reward;
   std::optional<int> holder;
@@ -139,8 +139,8 @@ TopicInputs::TopicInputs(RosSession& session, TopicInputOptions options)
   ros::NodeHandle& node = *session.handles().node;
   const RosTopics& topics = s.options.topics;
   if (s.options.mode == InputMode::kCamera) {
-    s.colour = std::make_unique<message_filters::Subscriber<sensor_msgs::Image>>(
-        node, topics.colour, 2);
+    s.colour =
+        std::make_unique<message_filters::Subscriber<sensor_msgs::Image>>(node, topics.colour, 2);
     s.depth =
         std::make_unique<message_filters::Subscriber<sensor_msgs::Image>>(node, topics.depth, 2);
     s.info = std::make_unique<message_filters::Subscriber<sensor_msgs::CameraInfo>>(
@@ -182,8 +182,7 @@ std::optional<ObservedInput> TopicInputs::next(std::chrono::milliseconds timeout
   ObservedInput input = std::move(*s.pending);
   s.pending.reset();
   const std::uint64_t stamp = input.stamp_ns;
-  if (s.truth_seen)
-    s.arrived.wait_for(lock, kTruthWait, [&] { return s.truths.count(stamp) > 0; });
+  if (s.truth_seen) s.arrived.wait_for(lock, kTruthWait, [&] { return s.truths.count(stamp) > 0; });
   const auto truth = s.truths.find(stamp);
   if (truth != s.truths.end()) input.truth = truth->second;
   return input;

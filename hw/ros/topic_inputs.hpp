@@ -32,8 +32,11 @@ struct ObservedInput {
 class InputFeed {
  public:
   virtual ~InputFeed() = default;
-  // The next observation, waiting at most `timeout`; nothing when none came in time.
+  // The next observation, waiting at most `timeout`; nothing when none came in time (or the
+  // feed ended).
   virtual std::optional<ObservedInput> next(std::chrono::milliseconds timeout) = 0;
+  // True once a recording has given its last observation; live topics never end.
+  virtual bool ended() const { return false; }
   virtual std::string describe() const = 0;
 };
 

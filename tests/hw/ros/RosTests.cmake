@@ -35,11 +35,12 @@ gtest_discover_tests(ros_settings_test DISCOVERY_MODE PRE_TEST TEST_PREFIX "ros_
 
 # Debian's python3 has rospy; a virtualenv's or pyenv's may not.
 find_program(OASIS_DEBIAN_PYTHON NAMES python3 PATHS /usr/bin NO_DEFAULT_PATH REQUIRED)
-foreach(case IN ITEMS bad_parameter fail_safe sigint closed_loop)
+foreach(case IN ITEMS bad_parameter fail_safe sigint closed_loop launch replay)
   add_test(NAME ros.${case}
            COMMAND "${OASIS_DEBIAN_PYTHON}" "${ros_tests}/ros_node_test.py" ${case}
                    --oasis-ros $<TARGET_FILE:oasis-ros>
                    --sim $<TARGET_FILE:oasis-ros-hallway-sim>
-                   --oasis-go1 $<TARGET_FILE:oasis-go1>)
+                   --oasis-go1 $<TARGET_FILE:oasis-go1>
+                   --package-path "${CMAKE_CURRENT_BINARY_DIR}/package")
   set_tests_properties(ros.${case} PROPERTIES LABELS "ros;hw" TIMEOUT 300 RESOURCE_LOCK roscore_cpu)
 endforeach()
