@@ -231,6 +231,13 @@ def case_closed_loop(args, env, trials=3, seed=1):
          str(trials), "--controllers", "ours", "--json", "--quiet", "--logs",
          os.path.join(work, "sim")], stdout=subprocess.PIPE, text=True, check=True)
     sim_accuracy = accuracy_of(simulated.stdout, "ours")
+    same = total = 0
+    for trial in range(trials):
+        ours = decisions(logs[trial])
+        theirs = decisions(os.path.join(work, "sim", "ours_trial%02d.jsonl" % (trial + 1)))
+        same += sum(a[:2] == b[:2] for a, b in zip(ours, theirs))
+        total += len(theirs)
+    print("decisions equal to oasis-go1 sim's, step for step: %d of %d" % (same, total))
     print("accuracy over %d trials: oasis-ros over topics %.4f, oasis-go1 sim %.4f" %
           (trials, ros_accuracy, sim_accuracy))
     check(abs(ros_accuracy - sim_accuracy) <= 0.03,
