@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdio>
 #include <cstddef>
 #include <cstdint>
 #include <optional>
@@ -43,6 +44,7 @@ constexpr double kPersonDiameter = 0.3;
 constexpr double kPersonZ = 0.25;
 constexpr double kLabelZ = 0.6;
 constexpr double kLabelHeight = 0.15;
+constexpr double kBeliefX = 5.3;  // the belief's text, beyond the far edge of the domain
 
 std_msgs::ColorRGBA rgba(double r, double g, double b, double a) {
   std_msgs::ColorRGBA c;
@@ -468,6 +470,23 @@ Marker reach_marker(const ReachRegion& reach, const std::string& frame, const ro
   return m;
 }
 
+// The belief as text beyond the domain's far edge, one line per context, the attended one marked, so that
+// rviz (which has no display for ~belief's numbers) shows it beside the cells.
+Marker belief_marker(const std::vector<std::string>& names, const log::StepRecord& record,
+                     const std::string& frame, const ros::Time& stamp) {
+  Marker m = make_marker(frame, stamp, "belief", 0, Marker::TEXT_VIEW_FACING);
+  m.pose.position = point(kBeliefX, 0.0, kLabelZ);
+  m.scale.z = kLabelHeight;
+  m.color = rgba(1.0, 1.0, 1.0, 1.0);
+  for (std::size_t k = 0; k < record.belief.size(); ++k) {
+    char probability[16];
+    std::snprintf(probability, sizeof probability, "%.2f", record.belief[k]);
+    m.text += (k == 0 ? "" : "\n") + (k < names.size() ? names[k] : std::to_string(k)) + "  " +
+              probability + (k == record.abstraction ? "  <- attended" : "");
+  }
+  return m;
+}
+
 }  // namespace
 
 std::vector<std::string> context_names(const rt::CatalogView& catalog) {
@@ -533,6 +552,7 @@ visualization_msgs::MarkerArray attention_markers(const rt::CatalogView& catalog
     }
   }
   add_people(array, record, base_frame, stamp);
+  array.markers.push_back(belief_marker(context_names(catalog), record, base_frame, stamp));
   return array;
 }
 

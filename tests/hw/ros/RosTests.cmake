@@ -44,3 +44,6 @@ foreach(case IN ITEMS bad_parameter fail_safe sigint closed_loop launch replay)
                    --package-path "${CMAKE_CURRENT_BINARY_DIR}/package")
   set_tests_properties(ros.${case} PROPERTIES LABELS "ros;hw" TIMEOUT 300 RESOURCE_LOCK roscore_cpu)
 endforeach()
+# The closed loop runs in real time (at twice the trial's pace): alone, so that no other test
+# takes the cores it needs to keep up with the frames.
+set_tests_properties(ros.closed_loop PROPERTIES RUN_SERIAL TRUE)

@@ -164,6 +164,18 @@ TEST(BeliefMessage, LabelsNumbersBeyondTheNamesByIndex) {
 
 // ---- attention_markers on the Go1 catalog ----
 
+TEST(AttentionMarkers, ShowTheBeliefAsTextWithTheAttendedContextMarked) {
+  oasis::hw::log::StepRecord record = step_at({1.03, 0.41, 2.0, -1.0}, 1);
+  record.belief = {0.25, 0.75};
+  const MarkerArray array = markers_of(go1(), record);
+  const auto belief = std::find_if(array.markers.begin(), array.markers.end(),
+                                   [](const Marker& m) { return m.ns == "belief"; });
+  ASSERT_NE(belief, array.markers.end());
+  EXPECT_EQ(belief->type, Marker::TEXT_VIEW_FACING);
+  const std::vector<std::string> names = context_names(go1());
+  EXPECT_EQ(belief->text, names[0] + "  0.25\n" + names[1] + "  0.75  <- attended");
+}
+
 TEST(AttentionMarkers, AreInTheBaseFrameInStableSlots) {
   const MarkerArray full = markers_of(go1(), step_at({1.03, 0.41, 2.0, -1.0}, 0));
   const MarkerArray other = markers_of(go1(), step_at({3.0, -2.0, 0.5, 0.1}, 1));
@@ -181,7 +193,8 @@ TEST(AttentionMarkers, AreInTheBaseFrameInStableSlots) {
     EXPECT_TRUE(slots.emplace(m.ns, m.id).second) << m.ns << " " << m.id << " twice";
     if (m.action == Marker::ADD) drawn_namespaces.insert(m.ns);
   }
-  EXPECT_EQ(drawn_namespaces, (std::set<std::string>{"cells", "current_cell", "people", "reach"}));
+  EXPECT_EQ(drawn_namespaces,
+            (std::set<std::string>{"belief", "cells", "current_cell", "people", "reach"}));
 
   // Every step sends the same slots (drawn or deleted), in the same order: rviz replaces them.
   const auto keys = [](const MarkerArray& a) {
