@@ -3,9 +3,9 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <cstdio>
 #include <cstddef>
 #include <cstdint>
+#include <cstdio>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -470,8 +470,8 @@ Marker reach_marker(const ReachRegion& reach, const std::string& frame, const ro
   return m;
 }
 
-// The belief as text beyond the domain's far edge, one line per context, the attended one marked, so that
-// rviz (which has no display for ~belief's numbers) shows it beside the cells.
+// The belief as text beyond the domain's far edge, one line per context, the attended one marked,
+// so that rviz (which has no display for ~belief's numbers) shows it beside the cells.
 Marker belief_marker(const std::vector<std::string>& names, const log::StepRecord& record,
                      const std::string& frame, const ros::Time& stamp) {
   Marker m = make_marker(frame, stamp, "belief", 0, Marker::TEXT_VIEW_FACING);

@@ -334,11 +334,6 @@ void add_options(CLI::App& app, SimNodeRequest& request) {
       ->check(oasis::cli::whole_in(100, 600000));
 }
 
-// The arguments that are ROS remappings (name:=value, __name:=...), which ros::init takes.
-bool is_remapping(const std::string& argument) {
-  return argument.find(":=") != std::string::npos;
-}
-
 }  // namespace
 }  // namespace oasis::hw::ros_node
 
@@ -364,11 +359,8 @@ int main(int argc, char** argv) {
       "'oasis-go1 sim --seed S', give --seed S*1000+NN-1 (the robot then follows oasis-ros, so "
       "what it sees differs from that run's).\n"
       "  oasis-ros-hallway-sim --seed 1000 --bag trial01.bag");
-  std::vector<std::string> ours;  // CLI11 takes them last first
-  for (int k = argc - 1; k >= 1; --k)
-    if (!is_remapping(argv[k])) ours.emplace_back(argv[k]);
   try {
-    app.parse(ours);
+    app.parse(arguments_for_cli(argc, argv));
   } catch (const CLI::ParseError& e) {
     const int status = app.exit(e);
     return status == 0 ? 0 : 2;  // bad usage, distinct from 1 (an error in the input)

@@ -151,8 +151,7 @@ struct Drive {
 };
 
 double wall_clock_s() {
-  return std::chrono::duration<double>(std::chrono::system_clock::now().time_since_epoch())
-      .count();
+  return std::chrono::duration<double>(std::chrono::system_clock::now().time_since_epoch()).count();
 }
 
 // "median 8.1 ms, p99 12.0 ms, max 14.2 ms over 300 steps"
@@ -176,22 +175,22 @@ Drive drive(Assembly& assembly, FeedFrames& frames, app::RobotLink& link,
   std::optional<log::StepLogWriter> log_writer;
   if (!request.log_path.empty()) log_writer.emplace(request.log_path);
   Drive drive;
-  app::LoopParts parts{frames,
-                       perception,
-                       *assembly.controller,
-                       link,
-                       [&frames]() -> std::optional<log::GroundTruth> {
-                         return frames.current() ? frames.current()->truth : std::nullopt;
-                       },
-                       [&](const log::StepRecord& record) {
-                         drive.latencies_ms.push_back(
-                             (wall_clock_s() - frames.current()->stamp_s) * 1000.0);
-                         if (log_writer) log_writer->write(record);
-                         if (!request.quiet) print_step(record);
-                         if (publish) publish(record, frames.current()->stamp_s);
-                         drive.records.push_back(record);
-                       },
-                       [] { return go1::stop_signal_received(); }};
+  app::LoopParts parts{
+      frames,
+      perception,
+      *assembly.controller,
+      link,
+      [&frames]() -> std::optional<log::GroundTruth> {
+        return frames.current() ? frames.current()->truth : std::nullopt;
+      },
+      [&](const log::StepRecord& record) {
+        drive.latencies_ms.push_back((wall_clock_s() - frames.current()->stamp_s) * 1000.0);
+        if (log_writer) log_writer->write(record);
+        if (!request.quiet) print_step(record);
+        if (publish) publish(record, frames.current()->stamp_s);
+        drive.records.push_back(record);
+      },
+      [] { return go1::stop_signal_received(); }};
   app::LoopOptions options;
   options.period_s = assembly.period_s();
   options.keepalive_s = std::chrono::duration<double>(assembly.settings.go1.loop.keepalive).count();
@@ -326,11 +325,6 @@ int replay_bag(const NodeRequest& request) {
   return 0;
 }
 
-// The arguments that are ROS remappings (name:=value, __name:=...), which ros::init takes.
-bool is_remapping(const std::string& argument) {
-  return argument.find(":=") != std::string::npos;
-}
-
 }  // namespace
 }  // namespace oasis::hw::ros_node
 
@@ -364,11 +358,8 @@ int main(int argc, char** argv) {
       "Topic names are relative and remap as usual (cmd_vel:=/robot/cmd_vel). A zero Twist is "
       "sent when no fresh input comes, on Ctrl-C or SIGTERM, and on any error. hw/ros/README.md "
       "has a robot owner's step-by-step.");
-  std::vector<std::string> ours;
-  for (int k = argc - 1; k >= 1; --k)
-    if (!is_remapping(argv[k])) ours.emplace_back(argv[k]);
   try {
-    app.parse(ours);
+    app.parse(arguments_for_cli(argc, argv));
   } catch (const CLI::ParseError& e) {
     const int status = app.exit(e);
     return status == 0 ? 0 : 2;

@@ -40,6 +40,13 @@ YAML::Node yaml_of(XmlRpc::XmlRpcValue& value) {
 
 }  // namespace
 
+std::vector<std::string> arguments_for_cli(int argc, char** argv) {
+  std::vector<std::string> arguments;
+  for (int k = argc - 1; k >= 1; --k)
+    if (std::string(argv[k]).find(":=") == std::string::npos) arguments.emplace_back(argv[k]);
+  return arguments;
+}
+
 RosSession::RosSession(int& argc, char** argv, const std::string& node_name,
                        std::chrono::milliseconds master_timeout)
     : handles_(std::make_unique<RosSessionHandles>()) {

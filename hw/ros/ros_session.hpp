@@ -10,6 +10,7 @@
 #include <memory>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 namespace oasis::hw::ros_node {
 
@@ -19,6 +20,10 @@ class RosError : public std::runtime_error {
 };
 
 struct RosSessionHandles;  // ros_session_handles.hpp
+
+// A program's own arguments for CLI11's parse(): without the ROS remappings (name:=value,
+// _param:=value, __name:=...) that ros::init takes, in the reverse order CLI11 expects.
+std::vector<std::string> arguments_for_cli(int argc, char** argv);
 
 class RosSession {
  public:
