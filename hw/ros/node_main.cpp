@@ -44,6 +44,11 @@ struct NodeRequest {
   bool quiet = false;
 };
 
+// Seconds since the epoch on the wall clock, as ROS stamps are (comparable on one machine).
+double wall_clock_s() {
+  return std::chrono::duration<double>(std::chrono::system_clock::now().time_since_epoch()).count();
+}
+
 // The loop's frame source: the feed's next observation, kept for perception, the link's pose
 // and the ground truth of the same instant. Ends on a stop signal or when ROS shuts down.
 class FeedFrames final : public FrameSource {
@@ -60,6 +65,7 @@ class FeedFrames final : public FrameSource {
       if (!input && feed_.ended()) return SourceStop{SourceStop::Kind::kEnd, "the bag ended"};
       if (!input) continue;
       current_ = std::move(input);
+      received_s_ = wall_clock_s();
       Frame frame = current_->frame ? *current_->frame : Frame{};
       frame.timestamp_s = current_->stamp_s;
       return frame;
@@ -67,11 +73,13 @@ class FeedFrames final : public FrameSource {
   }
 
   const std::optional<ObservedInput>& current() const { return current_; }
+  double received_s() const { return received_s_; }  // when the loop took current()
 
  private:
   InputFeed& feed_;
   std::function<bool()> ros_ok_;
   std::optional<ObservedInput> current_;
+  double received_s_ = 0.0;
 };
 
 // Perception of the observation: ours on a camera frame; in detections mode the tracker's
@@ -145,14 +153,13 @@ struct Assembly {
 struct Drive {
   app::LoopResult result;
   std::vector<log::StepRecord> records;
-  // Per step, from the observation's stamp to the moment its decision went to the link, in
-  // milliseconds of the wall clock (the stamp is ROS wall time, on one machine comparable).
+  // Per step, in milliseconds of the wall clock: from the observation's stamp to the moment the
+  // loop took it (the transport: serialising, sending, matching by stamp) and to the moment its
+  // decision went to the link (all of it: also perception, the filter and the policy).
+  std::vector<double> received_ms;
   std::vector<double> latencies_ms;
 };
 
-double wall_clock_s() {
-  return std::chrono::duration<double>(std::chrono::system_clock::now().time_since_epoch()).count();
-}
 
 // "median 8.1 ms, p99 12.0 ms, max 14.2 ms over 300 steps"
 std::string latency_summary(std::vector<double> latencies_ms) {
@@ -184,7 +191,9 @@ Drive drive(Assembly& assembly, FeedFrames& frames, app::RobotLink& link,
         return frames.current() ? frames.current()->truth : std::nullopt;
       },
       [&](const log::StepRecord& record) {
-        drive.latencies_ms.push_back((wall_clock_s() - frames.current()->stamp_s) * 1000.0);
+        const double stamp_s = frames.current()->stamp_s;
+        drive.received_ms.push_back((frames.received_s() - stamp_s) * 1000.0);
+        drive.latencies_ms.push_back((wall_clock_s() - stamp_s) * 1000.0);
         if (log_writer) log_writer->write(record);
         if (!request.quiet) print_step(record);
         if (publish) publish(record, frames.current()->stamp_s);
@@ -274,7 +283,9 @@ int run_node(const NodeRequest& request, int argc, char** argv) {
             << ", inputs dropped " << inputs.dropped() << ", refused " << inputs.refused()
             << (inputs.refused() > 0 ? " (last: " + inputs.last_refusal() + ")" : "") << '\n'
             << "oasis-ros: latency from the observation's stamp to cmd_vel: "
-            << latency_summary(result.latencies_ms) << '\n';
+            << latency_summary(result.latencies_ms)
+            << "; of which to the observation's arrival: " << latency_summary(result.received_ms)
+            << '\n';
   session.shut_down(std::chrono::milliseconds(200));
   print_score(request, result.records);
   raise_received_signal();

@@ -43,7 +43,7 @@ def main():
             _, err = node.communicate(timeout=30)
             line = [l for l in err.splitlines() if "latency" in l]
             print("trial %d (seed %d): %s" % (trial + 1, 1000 + trial,
-                                              line[-1].split(": ", 2)[-1] if line else
+                                              line[-1].split("cmd_vel: ", 1)[-1] if line else
                                               "no latency line: " + err[-400:]))
     return 0
 
