@@ -160,7 +160,6 @@ struct Drive {
   std::vector<double> latencies_ms;
 };
 
-
 // "median 8.1 ms, p99 12.0 ms, max 14.2 ms over 300 steps"
 std::string latency_summary(std::vector<double> latencies_ms) {
   if (latencies_ms.empty()) return "no steps";
@@ -182,24 +181,23 @@ Drive drive(Assembly& assembly, FeedFrames& frames, app::RobotLink& link,
   std::optional<log::StepLogWriter> log_writer;
   if (!request.log_path.empty()) log_writer.emplace(request.log_path);
   Drive drive;
-  app::LoopParts parts{
-      frames,
-      perception,
-      *assembly.controller,
-      link,
-      [&frames]() -> std::optional<log::GroundTruth> {
-        return frames.current() ? frames.current()->truth : std::nullopt;
-      },
-      [&](const log::StepRecord& record) {
-        const double stamp_s = frames.current()->stamp_s;
-        drive.received_ms.push_back((frames.received_s() - stamp_s) * 1000.0);
-        drive.latencies_ms.push_back((wall_clock_s() - stamp_s) * 1000.0);
-        if (log_writer) log_writer->write(record);
-        if (!request.quiet) print_step(record);
-        if (publish) publish(record, frames.current()->stamp_s);
-        drive.records.push_back(record);
-      },
-      [] { return go1::stop_signal_received(); }};
+  app::LoopParts parts{frames,
+                       perception,
+                       *assembly.controller,
+                       link,
+                       [&frames]() -> std::optional<log::GroundTruth> {
+                         return frames.current() ? frames.current()->truth : std::nullopt;
+                       },
+                       [&](const log::StepRecord& record) {
+                         const double stamp_s = frames.current()->stamp_s;
+                         drive.received_ms.push_back((frames.received_s() - stamp_s) * 1000.0);
+                         drive.latencies_ms.push_back((wall_clock_s() - stamp_s) * 1000.0);
+                         if (log_writer) log_writer->write(record);
+                         if (!request.quiet) print_step(record);
+                         if (publish) publish(record, frames.current()->stamp_s);
+                         drive.records.push_back(record);
+                       },
+                       [] { return go1::stop_signal_received(); }};
   app::LoopOptions options;
   options.period_s = assembly.period_s();
   options.keepalive_s = std::chrono::duration<double>(assembly.settings.go1.loop.keepalive).count();
