@@ -1,7 +1,8 @@
 #pragma once
 // The partition refinement starts from: states grouped by their set of enabled actions, their
-// rewards R(s, a) for every action and, when labels are respected, their class of labels. It is the coarsest partition a bisimulation can
-// refine, and it is stable with respect to the set of all states.
+// rewards R(s, a) for every action and, when labels are respected, their class of labels. It is the
+// coarsest partition a bisimulation can refine, and it is stable with respect to the set of all
+// states.
 
 #include <cstdint>
 #include <optional>

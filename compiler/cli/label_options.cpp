@@ -16,8 +16,8 @@ void add_respect_labels_option(CLI::App& command, std::string& text) {
           [](const std::string& value) -> std::string {
             return model::LabelSelection::parse(value)
                        ? ""
-                       : "expected all, none or label names separated by commas, got \"" +
-                             value + "\"";
+                       : "expected all, none or label names separated by commas, got \"" + value +
+                             "\"";
           },
           "all|none|L1,L2");
 }

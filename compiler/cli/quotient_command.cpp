@@ -183,8 +183,7 @@ int run_quotient(const QuotientOptions& options) {
                  "output, or give -o FILE\n";
     return 2;
   }
-  auto label_class =
-      respected_label_classes(*loaded->model, options.respect_labels, options.file);
+  auto label_class = respected_label_classes(*loaded->model, options.respect_labels, options.file);
   if (!label_class) return 1;
   const auto results = run_contexts(*loaded->model, *selected, options, std::move(*label_class),
                                     load_options.progress);
@@ -201,7 +200,8 @@ CommandRunner add_quotient_command(CLI::App& app) {
       "Two states are bisimilar when, for every action, both have it enabled or neither,\n"
       "their rewards R(s,a) are equal, and their probabilities of reaching every block are\n"
       "equal (the paper's Definition 1); and they hold the same respected labels (a PRISM\n"
-      ".lab file's; --respect-labels, all by default, as Storm). Probabilities are compared exactly; --epsilon\n"
+      ".lab file's; --respect-labels, all by default, as Storm). Probabilities are compared "
+      "exactly; --epsilon\n"
       "rounds them instead, for models written with floating-point numbers, and says so in\n"
       "its output (docs/bisimulation.md explains what that mode guarantees).\n\n"
       "Formats: text (a summary), json (keys contexts[].name, states, transitions, blocks,\n"

@@ -139,8 +139,7 @@ int run_verify(const VerifyOptions& options) {
                  "are checked exactly, so differences below epsilon fail\n";
   }
 
-  const auto label_class =
-      respected_label_classes(model, result->respected_labels, options.result);
+  const auto label_class = respected_label_classes(model, result->respected_labels, options.result);
   if (!label_class) return 1;
   bool all_hold = true;
   for (const verify::ContextPartition& entry : result->contexts) {

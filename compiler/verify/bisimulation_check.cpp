@@ -86,9 +86,9 @@ VerificationResult check_bisimulation(const model::ExplicitModel& model, std::si
       if (!label_class.empty() && label_class[pair.first] != label_class[pair.other]) {
         Violation v =
             pair_violation(model, partition, ViolationKind::LabelsDiffer, pair, std::nullopt);
-        v.message += "their respected labels differ: " + model.states.name(pair.first) +
-                     " holds " + labels_text(model, pair.first) + ", " +
-                     model.states.name(pair.other) + " holds " + labels_text(model, pair.other);
+        v.message += "their respected labels differ: " + model.states.name(pair.first) + " holds " +
+                     labels_text(model, pair.first) + ", " + model.states.name(pair.other) +
+                     " holds " + labels_text(model, pair.other);
         return {std::move(v)};
       }
       for (ActionIndex a = 0; a < k; ++a) {

@@ -10,6 +10,7 @@
 
 #include <gtest/gtest.h>
 
+#include "../../support/scratch_directory.hpp"
 #include "bisim/refinement.hpp"
 #include "formats/model_file.hpp"
 #include "formats/prism_reader.hpp"
@@ -112,7 +113,8 @@ TEST_F(LabelBisimulation, TheVerifierFindsAQuotientTooFineForItsLabels) {
 
 TEST_F(LabelBisimulation, ExportWritesTheLabelsBackAndTheyReadTheSame) {
   const model::ExplicitModel model = die();
-  const std::string base = ::testing::TempDir() + "/oasis_label_die";
+  const test::ScratchDirectory scratch("oasis_label_die");
+  const std::string base = (scratch.path() / "die").string();
   std::string error;
   ASSERT_TRUE(formats::write_prism(model, 0, base, error)) << error;
   std::optional<model::ExplicitModel> again =
