@@ -54,16 +54,17 @@ class RewardNumbering {
 }  // namespace
 
 InitialBlocks blocks_by_rewards(const model::ExplicitModel& model, std::size_t context,
-                                std::optional<double> rounding) {
+                                std::optional<double> rounding,
+                                const std::vector<std::uint32_t>& label_class) {
   const model::TransitionMatrix& matrix = *model.contexts[context].transitions;
   const std::uint32_t num_actions = model.num_actions();
   RewardNumbering rewards(model, context, rounding);
   InitialBlocks result;
   result.block_of.resize(model.num_states());
-  // One entry per action (its reward, or disabled), and a last one that holds the state
-  // reward of a state with no enabled action: R(s) is the reward for being in s, and with
-  // no action there is no R(s, a) to carry it.
-  std::vector<std::uint32_t> signature(num_actions + 1);
+  // One entry per action (its reward, or disabled), one that holds the state reward of a state
+  // with no enabled action (R(s) is the reward for being in s, and with no action there is no
+  // R(s, a) to carry it), and a last one for the state's class of labels.
+  std::vector<std::uint32_t> signature(num_actions + 2);
   // Signature hash -> the blocks whose signature has that hash, with the signature.
   std::unordered_map<std::uint64_t,
                      std::vector<std::pair<std::vector<std::uint32_t>, std::uint32_t>>>
@@ -79,6 +80,8 @@ InitialBlocks blocks_by_rewards(const model::ExplicitModel& model, std::size_t c
     }
     signature[num_actions] = any_enabled ? kDisabled : rewards.state_only(s);
     hash = mix_bits(hash ^ signature[num_actions]);
+    signature[num_actions + 1] = label_class.empty() ? 0 : label_class[s];
+    hash = mix_bits(hash ^ signature[num_actions + 1]);
     auto& candidates = seen[hash];
     std::uint32_t block = kDisabled;
     for (const auto& [other, index] : candidates) {

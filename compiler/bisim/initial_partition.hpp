@@ -1,7 +1,8 @@
 #pragma once
-// The partition refinement starts from: states grouped by their set of enabled actions and
-// their rewards R(s, a) for every action. It is the coarsest partition a bisimulation can
-// refine, and it is stable with respect to the set of all states.
+// The partition refinement starts from: states grouped by their set of enabled actions, their
+// rewards R(s, a) for every action and, when labels are respected, their class of labels. It is the
+// coarsest partition a bisimulation can refine, and it is stable with respect to the set of all
+// states.
 
 #include <cstdint>
 #include <optional>
@@ -17,8 +18,10 @@ struct InitialBlocks {
 };
 
 // With `rounding` (the --epsilon mode), rewards are compared after rounding to multiples of
-// it, like probabilities.
+// it, like probabilities. `label_class` is empty (labels are not respected) or has one class
+// per state (model::label_classes): states of different classes start in different blocks.
 InitialBlocks blocks_by_rewards(const model::ExplicitModel& model, std::size_t context,
-                                std::optional<double> rounding);
+                                std::optional<double> rounding,
+                                const std::vector<std::uint32_t>& label_class = {});
 
 }  // namespace oasis::bisim

@@ -184,7 +184,8 @@ class Refiner {
   }
 
   void initial_partition() {
-    const InitialBlocks initial = blocks_by_rewards(model_, context_, options_.epsilon);
+    const InitialBlocks initial =
+        blocks_by_rewards(model_, context_, options_.epsilon, options_.label_class);
     state_scratch_.resize(num_states_);
     std::vector<std::uint32_t> sizes(initial.count, 0);
     for (StateIndex s = 0; s < num_states_; ++s) {

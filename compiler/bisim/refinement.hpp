@@ -35,6 +35,9 @@ struct RefinementOptions {
   bool rational_sums = false;
   // Called now and then during refinement.
   std::function<void(const RefinementProgress&)> progress;
+  // Empty, or one class per state (model::label_classes): states whose respected labels
+  // differ are never merged.
+  std::vector<std::uint32_t> label_class;
 };
 
 struct RefinementStatistics {

@@ -12,6 +12,7 @@
 
 #include "bisim/quotient.hpp"
 #include "cli/commands.hpp"
+#include "cli/label_options.hpp"
 #include "cli/number_options.hpp"
 #include "cli/quotient_output.hpp"
 #include "formats/aut_writer.hpp"
@@ -30,6 +31,7 @@ struct QuotientOptions {
   std::string output;
   bool partition = false;
   std::optional<double> epsilon;
+  std::string respect_labels = "all";
   unsigned jobs = 0;
   CommonOptions common;
 };
@@ -69,9 +71,11 @@ std::optional<std::vector<std::size_t>> select_contexts(const model::ExplicitMod
 std::vector<pipeline::DiscreteAbstraction> run_contexts(const model::ExplicitModel& model,
                                                         const std::vector<std::size_t>& selected,
                                                         const QuotientOptions& options,
+                                                        std::vector<std::uint32_t> label_class,
                                                         bool progress) {
   pipeline::DiscreteOptions refinement;
   refinement.epsilon = options.epsilon;
+  refinement.label_class = std::move(label_class);
   refinement.solve = false;
   refinement.jobs = options.jobs;
   std::mutex output;
@@ -96,6 +100,9 @@ int write_output(const LoadedModel& loaded,
   const bool to_stdout = options.output.empty() || options.output == "-";
   std::ostream& summary = (options.format == "text" || !to_stdout) ? std::cout : std::cerr;
   print_summary(summary, model, results, load_seconds, peak_memory_mib(), options.epsilon);
+  if (!model.labels.empty())
+    summary << "labels: " << model.labels.names.size() << "; respected: " << options.respect_labels
+            << '\n';
   if (options.format == "text") return 0;
 
   std::string error;
@@ -114,10 +121,11 @@ int write_output(const LoadedModel& loaded,
     }
     std::string text;
     if (options.format == "json") {
-      text = quotient_json(loaded, results, load_seconds, peak_memory_mib(), options.partition,
-                           options.epsilon)
-                 .dump(2) +
-             "\n";
+      nlohmann::json json = quotient_json(loaded, results, load_seconds, peak_memory_mib(),
+                                          options.partition, options.epsilon);
+      // What `verify` must respect to check these partitions.
+      json["respected_labels"] = options.respect_labels;
+      text = json.dump(2) + "\n";
     } else {
       const model::ExplicitModel quotient =
           bisim::build_quotient(model, results[i].context, results[i].partition);
@@ -175,7 +183,10 @@ int run_quotient(const QuotientOptions& options) {
                  "output, or give -o FILE\n";
     return 2;
   }
-  const auto results = run_contexts(*loaded->model, *selected, options, load_options.progress);
+  auto label_class = respected_label_classes(*loaded->model, options.respect_labels, options.file);
+  if (!label_class) return 1;
+  const auto results = run_contexts(*loaded->model, *selected, options, std::move(*label_class),
+                                    load_options.progress);
   return write_output(*loaded, results, options, load_seconds);
 }
 
@@ -188,7 +199,9 @@ CommandRunner add_quotient_command(CLI::App& app) {
   command->footer(
       "Two states are bisimilar when, for every action, both have it enabled or neither,\n"
       "their rewards R(s,a) are equal, and their probabilities of reaching every block are\n"
-      "equal (the paper's Definition 1). Probabilities are compared exactly; --epsilon\n"
+      "equal (the paper's Definition 1); and they hold the same respected labels (a PRISM\n"
+      ".lab file's; --respect-labels, all by default, as Storm). Probabilities are compared "
+      "exactly; --epsilon\n"
       "rounds them instead, for models written with floating-point numbers, and says so in\n"
       "its output (docs/bisimulation.md explains what that mode guarantees).\n\n"
       "Formats: text (a summary), json (keys contexts[].name, states, transitions, blocks,\n"
@@ -213,6 +226,7 @@ CommandRunner add_quotient_command(CLI::App& app) {
       ->add_option("--epsilon", options->epsilon,
                    "Compare probabilities rounded to multiples of E (approximate mode)")
       ->check(real_in(closed(1e-15, 0.5)));
+  add_respect_labels_option(*command, options->respect_labels);
   command
       ->add_option("-j,--jobs", options->jobs, "Contexts quotiented in parallel (default: cores)")
       ->check(whole_in(0, limits::kMaxJobs));

@@ -7,6 +7,7 @@
 #include <optional>
 
 #include "cli/commands.hpp"
+#include "cli/label_options.hpp"
 #include "cli/number_options.hpp"
 #include "model/catalog_data.hpp"
 #include "oasis/rt/catalog_file.hpp"
@@ -138,11 +139,13 @@ int run_verify(const VerifyOptions& options) {
                  "are checked exactly, so differences below epsilon fail\n";
   }
 
+  const auto label_class = respected_label_classes(model, result->respected_labels, options.result);
+  if (!label_class) return 1;
   bool all_hold = true;
   for (const verify::ContextPartition& entry : result->contexts) {
     const std::string& name = model.contexts[entry.context].name;
     const verify::VerificationResult verdict =
-        verify::verify_partition(model, entry.context, entry.partition);
+        verify::verify_partition(model, entry.context, entry.partition, *label_class);
     if (verdict.ok()) {
       std::cout << "context " << name << ": bisimulation and coarsest ("
                 << entry.partition.num_blocks

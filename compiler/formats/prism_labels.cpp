@@ -1,5 +1,5 @@
-// The .lab file; only its "init" label matters to us (our models have no atomic
-// propositions).
+// The .lab file: its labels are the model's atomic propositions, and "init" gives the initial
+// states.
 //
 //   0="init" 1="deadlock" 2="done"
 //   0: 0
@@ -16,14 +16,16 @@ class LabelsReader {
                std::vector<model::StateIndex>& initial)
       : scan_(file, diagnostics), num_states_(num_states), initial_(initial) {}
 
-  bool read(bool& found) {
+  bool read(bool& found, model::StateLabels& labels) {
     const std::size_t errors = scan_.diagnostics().error_count();
     if (!read_names()) return false;
     found = init_ != kNone;
+    model::StateLabelsBuilder builder(names_);
     while (scan_.next_line() && !scan_.diagnostics().should_stop()) {
-      read_state();
+      read_state(builder);
       scan_.skip_line();
     }
+    labels = builder.finish(num_states_);
     return scan_.diagnostics().error_count() == errors;
   }
 
@@ -50,6 +52,7 @@ class LabelsReader {
         return false;
       }
       if (rest.substr(0, close) == "init") init_ = index;
+      names_.emplace_back(rest.substr(0, close));
       scan_.seek(scan_.position() + close + 1);
       ++count_;
       scan_.skip_blanks();
@@ -58,7 +61,7 @@ class LabelsReader {
     return true;
   }
 
-  void read_state() {
+  void read_state(model::StateLabelsBuilder& builder) {
     model::StateIndex state = 0;
     if (!scan_.read_state(num_states_, "a state index", state)) return;
     scan_.skip_blanks();
@@ -73,6 +76,7 @@ class LabelsReader {
         return;
       }
       if (label == init_) initial_.push_back(state);
+      builder.add(state, label);
     }
   }
 
@@ -81,14 +85,16 @@ class LabelsReader {
   std::vector<model::StateIndex>& initial_;
   std::uint32_t count_ = 0;
   std::uint32_t init_ = kNone;
+  std::vector<std::string> names_;
 };
 
 }  // namespace
 
-bool read_prism_initial_states(FileId file, DiagnosticEngine& diagnostics, std::uint32_t num_states,
-                               std::vector<model::StateIndex>& initial, bool& found) {
+bool read_prism_labels(FileId file, DiagnosticEngine& diagnostics, std::uint32_t num_states,
+                       std::vector<model::StateIndex>& initial, model::StateLabels& labels,
+                       bool& found) {
   found = false;
-  return LabelsReader(file, diagnostics, num_states, initial).read(found);
+  return LabelsReader(file, diagnostics, num_states, initial).read(found, labels);
 }
 
 }  // namespace oasis::formats

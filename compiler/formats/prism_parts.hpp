@@ -84,9 +84,11 @@ bool read_prism_transitions(FileId file, DiagnosticEngine& diagnostics, const Re
 // Variables and valuations; every state must be listed once.
 bool read_prism_states(FileId file, DiagnosticEngine& diagnostics, model::StateSpace& states);
 
-// The states carrying the "init" label; `found` tells whether the file has that label.
-bool read_prism_initial_states(FileId file, DiagnosticEngine& diagnostics, std::uint32_t num_states,
-                               std::vector<model::StateIndex>& initial, bool& found);
+// Every label of a .lab file, and the states carrying "init"; `found` tells whether the file
+// has that label.
+bool read_prism_labels(FileId file, DiagnosticEngine& diagnostics, std::uint32_t num_states,
+                       std::vector<model::StateIndex>& initial, model::StateLabels& labels,
+                       bool& found);
 
 bool read_prism_state_rewards(FileId file, DiagnosticEngine& diagnostics, std::uint32_t num_states,
                               ValueCache& values, std::vector<ValueId>& rewards);

@@ -63,11 +63,14 @@ std::optional<model::TransitionMatrix> build_matrix(const PrismFiles& files,
 
 // From the "init" label of .lab, else the "- - s -" lines of .tra, else state 0 (PRISM's
 // own defaults). When both files list initial states they must agree.
+// Every label of .lab is kept as an atomic proposition (model/state_labels.hpp), "init" too, as
+// Storm keeps it.
 void read_initial_states(const PrismFiles& files, DiagnosticEngine& diagnostics,
-                         const PrismTransitions& tra, std::vector<StateIndex>& initial) {
+                         const PrismTransitions& tra, std::vector<StateIndex>& initial,
+                         model::StateLabels& labels) {
   bool found = false;
   if (files.labels) {
-    if (!read_prism_initial_states(*files.labels, diagnostics, tra.num_states, initial, found))
+    if (!read_prism_labels(*files.labels, diagnostics, tra.num_states, initial, labels, found))
       return;
     std::sort(initial.begin(), initial.end());
     initial.erase(std::unique(initial.begin(), initial.end()), initial.end());
@@ -137,7 +140,7 @@ std::optional<model::ExplicitModel> read_prism(const PrismFiles& files,
     read_prism_states(*files.states, diagnostics, model.states);
   }
   if (!diagnostics.should_stop())
-    read_initial_states(files, diagnostics, tra, model.states.initial);
+    read_initial_states(files, diagnostics, tra, model.states.initial, model.labels);
   if (!matrix || diagnostics.error_count() != errors) return std::nullopt;
   context.transitions = std::make_shared<const model::TransitionMatrix>(std::move(*matrix));
   model.contexts.push_back(std::move(context));

@@ -1,6 +1,8 @@
 #include "formats/prism_writer.hpp"
 
+#include <algorithm>
 #include <array>
+#include <limits>
 #include <optional>
 #include <vector>
 
@@ -15,6 +17,8 @@ namespace {
 using model::ActionIndex;
 using model::EdgeIndex;
 using model::StateIndex;
+
+constexpr std::uint32_t kNotWritten = std::numeric_limits<std::uint32_t>::max();
 
 // The j of an action named "[j]" (what the reader calls unlabelled choice j), if it is one.
 std::optional<std::uint32_t> unlabelled_slot(const std::string& name) {
@@ -161,20 +165,42 @@ class PrismWriter {
     out.append(' ');
   }
 
+  // "init" and "deadlock", as PRISM writes them, then the model's own labels (its atomic
+  // propositions, model/state_labels.hpp), so that a model read from PRISM files keeps them.
   void write_labels(AtomicFile& out) {
-    out.append("0=\"init\" 1=\"deadlock\"\n");
+    std::vector<std::uint32_t> written_as(model_.labels.names.size(), kNotWritten);
+    std::uint32_t next = 2;
+    out.append("0=\"init\" 1=\"deadlock\"");
+    for (std::uint32_t k = 0; k < model_.labels.names.size(); ++k) {
+      const std::string& name = model_.labels.names[k];
+      if (name == "init" || name == "deadlock") continue;  // written from the model itself
+      written_as[k] = next;
+      out.append(' ');
+      out.append_number(next++);
+      out.append("=\"" + name + "\"");
+    }
+    out.append('\n');
     std::vector<bool> initial(model_.num_states(), false);
     for (StateIndex s : model_.states.initial)
       initial[s] = true;
+    std::vector<std::uint32_t> held;
     for (StateIndex s = 0; s < model_.num_states(); ++s) {
       bool deadlock = true;
       for (ActionIndex a = 0; a < model_.num_actions() && deadlock; ++a)
         deadlock = !matrix_.enabled(s, a);
-      if (!initial[s] && !deadlock) continue;
+      held.clear();
+      for (std::uint32_t label : model_.labels.of(s))
+        if (written_as[label] != kNotWritten) held.push_back(written_as[label]);
+      if (!initial[s] && !deadlock && held.empty()) continue;
       out.append_number(s);
       out.append(':');
       if (initial[s]) out.append(" 0");
       if (deadlock) out.append(" 1");
+      std::sort(held.begin(), held.end());
+      for (std::uint32_t label : held) {
+        out.append(' ');
+        out.append_number(label);
+      }
       out.append('\n');
     }
   }

@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "model/state_labels.hpp"
 #include "support/rational.hpp"
 
 namespace oasis::model {
@@ -122,6 +123,7 @@ struct ExplicitModel {
   SwitchingModel switching;
   Objective objective;
   ObservationSpec observation;
+  StateLabels labels;  // atomic propositions; empty for .oasis specs and .aut files
 
   [[nodiscard]] std::uint32_t num_states() const { return states.size; }
   [[nodiscard]] std::uint32_t num_actions() const {

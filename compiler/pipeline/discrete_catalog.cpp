@@ -18,6 +18,7 @@ DiscreteAbstraction abstract_one(const model::ExplicitModel& model, std::size_t 
   result.context = context;
   bisim::RefinementOptions refinement;
   refinement.epsilon = options.epsilon;
+  refinement.label_class = options.label_class;
   if (options.progress) {
     refinement.progress = [&options, context](const bisim::RefinementProgress& progress) {
       options.progress(context, progress);

@@ -29,6 +29,8 @@ struct DiscreteOptions {
   policy::PolicyOptions policy;
   // Called now and then by the thread refining `context` (from several threads at once).
   std::function<void(std::size_t context, const bisim::RefinementProgress&)> progress;
+  // The states' classes of respected labels (model::label_classes); empty: none respected.
+  std::vector<std::uint32_t> label_class;
 };
 
 struct DiscreteAbstraction {

@@ -61,10 +61,19 @@ std::optional<Violation> deadlock_reward_violation(const model::ExplicitModel& m
   return v;
 }
 
+// "\"one\", \"done\"" or "no label": the labels that hold in `state`.
+std::string labels_text(const model::ExplicitModel& model, StateIndex state) {
+  std::string text;
+  for (std::uint32_t label : model.labels.of(state))
+    text += (text.empty() ? "\"" : ", \"") + model.labels.names[label] + "\"";
+  return text.empty() ? "no label" : text;
+}
+
 }  // namespace
 
 VerificationResult check_bisimulation(const model::ExplicitModel& model, std::size_t context,
-                                      const model::Partition& partition) {
+                                      const model::Partition& partition,
+                                      const std::vector<std::uint32_t>& label_class) {
   const model::TransitionMatrix& matrix = *model.contexts[context].transitions;
   const std::vector<std::vector<StateIndex>> blocks = partition.blocks();
   const ActionIndex k = model.num_actions();
@@ -74,6 +83,14 @@ VerificationResult check_bisimulation(const model::ExplicitModel& model, std::si
     const StateIndex r = blocks[b].front();
     for (std::size_t i = 1; i < blocks[b].size(); ++i) {
       const Pair pair{r, blocks[b][i], b};
+      if (!label_class.empty() && label_class[pair.first] != label_class[pair.other]) {
+        Violation v =
+            pair_violation(model, partition, ViolationKind::LabelsDiffer, pair, std::nullopt);
+        v.message += "their respected labels differ: " + model.states.name(pair.first) + " holds " +
+                     labels_text(model, pair.first) + ", " + model.states.name(pair.other) +
+                     " holds " + labels_text(model, pair.other);
+        return {std::move(v)};
+      }
       for (ActionIndex a = 0; a < k; ++a) {
         const bool in_first = matrix.enabled(pair.first, a);
         if (in_first != matrix.enabled(pair.other, a)) {

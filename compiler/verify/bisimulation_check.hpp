@@ -20,7 +20,10 @@ namespace oasis::verify {
 // Enabled actions and rewards are checked for all blocks before any probability, so the
 // violation reported is the most basic one. `partition` must have a valid shape
 // (check_partition_shape).
+// With `label_class` (one class of respected labels per state), the states of a block must
+// also share their class.
 VerificationResult check_bisimulation(const model::ExplicitModel& model, std::size_t context,
-                                      const model::Partition& partition);
+                                      const model::Partition& partition,
+                                      const std::vector<std::uint32_t>& label_class = {});
 
 }  // namespace oasis::verify

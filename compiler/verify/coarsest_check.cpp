@@ -126,13 +126,23 @@ std::size_t refine(const std::vector<std::vector<QuotientChoice>>& quotient, Poo
 }  // namespace
 
 VerificationResult check_coarsest(const model::ExplicitModel& model, std::size_t context,
-                                  const model::Partition& partition) {
+                                  const model::Partition& partition,
+                                  const std::vector<std::uint32_t>& label_class) {
   RationalPool pool;
   const auto quotient = build_quotient(model, context, partition, pool);
   PooledSums sums(pool);
   const std::size_t n = quotient.size();
+  // The first classes: one, or the blocks' classes of labels (every member of a block has its
+  // block's class, check_bisimulation made sure), renumbered densely.
   std::vector<std::uint32_t> class_of(n, 0);
   std::size_t num_classes = n == 0 ? 0 : 1;
+  if (!label_class.empty()) {
+    std::unordered_map<std::uint32_t, std::uint32_t> dense;
+    for (StateIndex s = 0; s < partition.num_states(); ++s)
+      class_of[partition.block_of[s]] =
+          dense.try_emplace(label_class[s], static_cast<std::uint32_t>(dense.size())).first->second;
+    num_classes = dense.size();
+  }
   while (true) {
     const std::size_t count = refine(quotient, sums, class_of);
     // Each round only splits classes (the old class is part of the signature), so an

@@ -16,7 +16,10 @@ namespace oasis::verify {
 // partition is the coarsest bisimulation iff this ends with one class per block, since the
 // coarsest bisimulation of the model is that of the quotient pulled back to the states.
 // Quadratic in the number of blocks in the worst case (a chain); simple on purpose.
+// With `label_class`, the naive refinement starts from the blocks' classes of respected labels
+// instead of one class.
 VerificationResult check_coarsest(const model::ExplicitModel& model, std::size_t context,
-                                  const model::Partition& partition);
+                                  const model::Partition& partition,
+                                  const std::vector<std::uint32_t>& label_class = {});
 
 }  // namespace oasis::verify

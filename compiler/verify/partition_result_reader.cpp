@@ -39,6 +39,11 @@ class Reader {
     if (contexts.empty()) fail("\"contexts\" is empty: nothing to verify");
     PartitionResult result;
     result.approximate = document.contains("exact") && document["exact"] == false;
+    if (document.contains("respected_labels")) {
+      if (!document["respected_labels"].is_string())
+        fail("\"respected_labels\" is not a string (all, none, or label names)");
+      result.respected_labels = document["respected_labels"].get<std::string>();
+    }
     std::vector<bool> seen(model_.contexts.size(), false);
     for (std::size_t i = 0; i < contexts.size(); ++i) {
       ContextPartition entry = read_context(contexts[i], i);

@@ -25,6 +25,7 @@ struct ContextPartition {
 struct PartitionResult {
   std::vector<ContextPartition> contexts;  // in the order of the file
   bool approximate = false;                // the file says "exact": false (--epsilon)
+  std::string respected_labels = "all";    // "respected_labels" (quotient --respect-labels)
 };
 
 // Reads `path`. States are names as model.states.name() prints them, or integer indices.

@@ -7,10 +7,11 @@
 namespace oasis::verify {
 
 VerificationResult verify_partition(const model::ExplicitModel& model, std::size_t context,
-                                    const model::Partition& partition) {
+                                    const model::Partition& partition,
+                                    const std::vector<std::uint32_t>& label_class) {
   VerificationResult result = check_partition_shape(model, partition);
-  if (result.ok()) result = check_bisimulation(model, context, partition);
-  if (result.ok()) result = check_coarsest(model, context, partition);
+  if (result.ok()) result = check_bisimulation(model, context, partition, label_class);
+  if (result.ok()) result = check_coarsest(model, context, partition, label_class);
   return result;
 }
 

@@ -14,7 +14,10 @@ namespace oasis::verify {
 // Runs check_partition_shape, check_bisimulation and check_coarsest in turn and returns the
 // first violation, if any. Exact throughout: probabilities and rewards are compared as GMP
 // rationals.
+// `label_class`: empty, or the states' classes of respected labels (model::label_classes),
+// which no block may mix.
 VerificationResult verify_partition(const model::ExplicitModel& model, std::size_t context,
-                                    const model::Partition& partition);
+                                    const model::Partition& partition,
+                                    const std::vector<std::uint32_t>& label_class = {});
 
 }  // namespace oasis::verify

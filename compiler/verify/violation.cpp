@@ -14,13 +14,15 @@ const char* kind_name(ViolationKind kind) {
       return "block probability differs";
     case ViolationKind::BlocksCouldMerge:
       return "blocks could merge";
+    case ViolationKind::LabelsDiffer:
+      return "labels differ";
   }
   return "?";
 }
 
 bool breaks_bisimulation(ViolationKind kind) {
   return kind == ViolationKind::EnabledActionsDiffer || kind == ViolationKind::RewardDiffers ||
-         kind == ViolationKind::BlockProbabilityDiffers;
+         kind == ViolationKind::BlockProbabilityDiffers || kind == ViolationKind::LabelsDiffer;
 }
 
 std::string describe_block(const model::ExplicitModel& model, const model::Partition& partition,

@@ -16,6 +16,7 @@ enum class ViolationKind {
   EnabledActionsDiffer,     // an action enabled in one state of a block and not in another
   RewardDiffers,            // R(s, a) differs between two states of a block
   BlockProbabilityDiffers,  // P(B | s, a) differs between two states of a block
+  LabelsDiffer,             // two states of a block hold different respected labels
   BlocksCouldMerge,         // a bisimulation, but two of its blocks are bisimilar
 };
 
