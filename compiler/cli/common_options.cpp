@@ -16,7 +16,7 @@ void add_common_options(CLI::App& command, CommonOptions& options) {
       ->check(whole_in(1, 100000));
   command
       .add_option("--max-spec-size", options.load.max_spec_bytes,
-                  "Refuse .oasis files larger than this (bytes, or with a unit: 64M)")
+                  "Refuse .oasis and PRISM programs larger than this (bytes, or with a unit: 64M)")
       ->capture_default_str()
       ->transform(CLI::AsSizeValue(false));
   command
@@ -30,6 +30,23 @@ void add_common_options(CLI::App& command, CommonOptions& options) {
                   "Refuse exact numbers whose numerator or denominator has more bits than this")
       ->capture_default_str()
       ->check(whole_in(64, std::uint64_t{1} << 34));
+  command.add_option("--const", options.load.constants,
+                     "PRISM programs: values of the constants the program leaves undefined, "
+                     "as NAME=VALUE separated by commas (N=4,p=0.1,fair=true)");
+  command
+      .add_option("--rewards", options.load.rewards,
+                  "PRISM programs: the reward structures that become contexts: none (as Storm, "
+                  "which builds a reward model only when a property needs it), all, or names "
+                  "separated by commas. With none, the program has one context, 'default'")
+      ->capture_default_str()
+      ->check(
+          [](const std::string& value) -> std::string {
+            return model::LabelSelection::parse(value)
+                       ? ""
+                       : "expected none, all or reward structure names separated by commas, got \"" +
+                             value + "\"";
+          },
+          "none|all|R1,R2");
   command
       .add_option("--progress", options.progress,
                   "Show progress on stderr (exploration, the stages of a continuous compile): auto "

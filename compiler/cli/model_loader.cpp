@@ -8,6 +8,7 @@
 #include "model/explorer.hpp"
 #include "oasis/rt/spec_hash.hpp"
 #include "policy/solvability.hpp"
+#include "prism/load_program.hpp"
 
 namespace oasis::cli {
 namespace {
@@ -15,6 +16,23 @@ namespace {
 void print_progress(std::uint64_t found, std::uint64_t explored) {
   std::cerr << "\rexploring: " << explored << " of " << found << " states found so far"
             << std::flush;
+}
+
+std::optional<model::ExplicitModel> load_prism_program(const std::string& path,
+                                                      SourceManager& sources,
+                                                      DiagnosticEngine& diagnostics,
+                                                      const LoadOptions& options) {
+  prism::LoadOptions prism_options;
+  prism_options.constants = options.constants;
+  // The option's check has parsed it already (common_options.cpp).
+  prism_options.rewards = model::LabelSelection::parse(options.rewards).value_or(model::LabelSelection{});
+  prism_options.max_bytes = options.max_spec_bytes;
+  prism_options.max_number_bits = options.max_number_bits;
+  prism_options.explore.max_states = options.max_states;
+  if (options.progress) prism_options.explore.progress = print_progress;
+  auto model = prism::load_program(path, sources, diagnostics, prism_options);
+  if (options.progress) std::cerr << "\r\033[K" << std::flush;
+  return model;
 }
 
 }  // namespace
@@ -26,6 +44,12 @@ std::optional<LoadedModel> load_model(const std::string& path, SourceManager& so
   // The input is the first file the front end or the reader adds; hash the bytes it parsed.
   const FileId input = sources.num_files();
   const auto hash_input = [&] { loaded.source_hash = rt::spec_hash(sources.file(input).text()); };
+  if (prism::is_program_path(path)) {
+    loaded.model = load_prism_program(path, sources, diagnostics, options);
+    if (!loaded.model) return std::nullopt;
+    hash_input();
+    return loaded;
+  }
   if (path.ends_with(".aut") || path.ends_with(".tra")) {
     formats::ReadOptions read_options;
     read_options.max_bytes = options.max_input_bytes;

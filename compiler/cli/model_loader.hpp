@@ -1,6 +1,7 @@
 #pragma once
 // Loading any input oasisc accepts: a .oasis spec (checked, then explored unless it has
-// continuous state) or an explicit model imported from another tool (.aut, .tra).
+// continuous state), a PRISM program (.pm, .nm, .prism: checked and explored) or an explicit
+// model imported from another tool (.aut, .tra).
 
 #include <cstdint>
 #include <optional>
@@ -20,12 +21,14 @@ struct LoadOptions {
   std::size_t max_number_bits = limits::kDefaultMaxNumberBits;
   bool explore = true;    // false: stop after the front end
   bool progress = false;  // report exploration progress on stderr
+  std::string constants;  // PRISM programs: values of undefined constants (--const N=4,p=0.1)
+  std::string rewards = "none";  // PRISM programs: reward structures as contexts (--rewards)
 };
 
 struct LoadedModel {
   std::string path;
-  std::optional<model::ModelIR> ir;           // specs only
-  std::optional<model::ExplicitModel> model;  // discrete specs and imports
+  std::optional<model::ModelIR> ir;           // .oasis specs only
+  std::optional<model::ExplicitModel> model;  // discrete specs, PRISM programs and imports
   // rt::spec_hash of the bytes the front end or the reader parsed, read once: a catalog
   // remembers which spec it was compiled from by it.
   std::uint64_t source_hash = 0;

@@ -213,7 +213,7 @@ CommandRunner add_quotient_command(CLI::App& app) {
       "  oasisc quotient specs/discrete_tracking.oasis --format json --partition -o result.json\n"
       "  oasisc verify specs/discrete_tracking.oasis result.json\n"
       "  oasisc quotient model.aut --format aut -o model.min.aut");
-  command->add_option("file", options->file, "Spec (.oasis) or model (.aut, .tra) file")
+  command->add_option("file", options->file, "Spec (.oasis), PRISM program (.pm, .nm, .prism) or model (.aut, .tra) file")
       ->required();
   command->add_option("-c,--context", options->contexts, "Quotient only this context (repeatable)");
   command->add_option("-f,--format", options->format, "Output: text, json, aut or dot")

@@ -207,7 +207,7 @@ CommandRunner add_verify_command(CLI::App& app) {
       "  oasisc verify specs/discrete_tracking.oasis out/discrete_tracking.bin\n"
       "  oasisc quotient specs/discrete_tracking.oasis --format json --partition -o r.json\n"
       "  oasisc verify specs/discrete_tracking.oasis r.json");
-  command->add_option("model", options->model, "Spec (.oasis) or model (.aut, .tra) file")
+  command->add_option("model", options->model, "Spec (.oasis), PRISM program (.pm, .nm, .prism) or model (.aut, .tra) file")
       ->required();
   command
       ->add_option(

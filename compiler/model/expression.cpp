@@ -1,6 +1,7 @@
 #include "model/expression.hpp"
 
 #include <algorithm>
+#include <string>
 #include <utility>
 
 namespace oasis::model {
@@ -58,6 +59,44 @@ std::int64_t to_int64(const Expression& expr, const Rational& value) {
   return value.get_num().get_si();
 }
 
+// base^exponent by repeated squaring, every product checked.
+std::int64_t int_power(const Expression& expr, std::int64_t base, std::int64_t exponent) {
+  if (exponent < 0) {
+    throw EvaluationError(expr.range, "integer power with the negative exponent " +
+                                          std::to_string(exponent) + " (write a real base)");
+  }
+  std::int64_t result = 1;
+  while (exponent > 0) {
+    if ((exponent & 1) != 0) result = checked(expr, multiply, result, base);
+    exponent >>= 1;
+    if (exponent > 0) base = checked(expr, multiply, base, base);
+  }
+  return result;
+}
+
+// Exact powers need an integer exponent; a huge one would build a huge number, so the
+// exponent is bounded (the number-size limit bounds the rest where results are checked).
+Rational rational_power(const Expression& expr, const Rational& base, std::int64_t exponent) {
+  constexpr std::int64_t kMaxExponent = 4096;
+  if (exponent > kMaxExponent || exponent < -kMaxExponent) {
+    throw EvaluationError(expr.range, "exponent " + std::to_string(exponent) +
+                                          " is too large for an exact power (at most " +
+                                          std::to_string(kMaxExponent) + ")");
+  }
+  if (base == 0 && exponent < 0) throw EvaluationError(expr.range, "division by zero");
+  const auto magnitude = static_cast<unsigned long>(exponent < 0 ? -exponent : exponent);
+  constexpr std::size_t kMaxResultBits = std::size_t{1} << 24;
+  if (bit_size(base) * magnitude > kMaxResultBits) {
+    throw EvaluationError(expr.range, "power too large to compute exactly (more than " +
+                                          std::to_string(kMaxResultBits) + " bits)");
+  }
+  Rational result;
+  mpz_pow_ui(result.get_num_mpz_t(), base.get_num_mpz_t(), magnitude);
+  mpz_pow_ui(result.get_den_mpz_t(), base.get_den_mpz_t(), magnitude);
+  result.canonicalize();
+  return exponent < 0 ? Rational(1 / result) : result;
+}
+
 }  // namespace
 
 std::string_view describe(Type type) {
@@ -100,6 +139,8 @@ bool evaluate_bool(const Expression& expr, Valuation state) {
       return evaluate_bool(args[0], state) && evaluate_bool(args[1], state);
     case Op::Or:
       return evaluate_bool(args[0], state) || evaluate_bool(args[1], state);
+    case Op::IfThenElse:
+      return evaluate_bool(args[evaluate_bool(args[0], state) ? 1 : 2], state);
     case Op::Equal:
     case Op::NotEqual:
       if (args[0].type == Type::Bool) {
@@ -160,6 +201,10 @@ std::int64_t evaluate_int(const Expression& expr, Valuation state) {
       const std::int64_t r = a % b;
       return r != 0 && ((r < 0) != (b < 0)) ? r + b : r;
     }
+    case Op::Power:
+      return int_power(expr, evaluate_int(args[0], state), evaluate_int(args[1], state));
+    case Op::IfThenElse:
+      return evaluate_int(args[evaluate_bool(args[0], state) ? 1 : 2], state);
     case Op::Floor:
     case Op::Ceil: {
       const Rational v = evaluate_number(args[0], state);
@@ -207,6 +252,10 @@ Rational evaluate_number(const Expression& expr, Valuation state) {
     }
     case Op::Abs:
       return abs(evaluate_number(args[0], state));
+    case Op::Power:
+      return rational_power(expr, evaluate_number(args[0], state), evaluate_int(args[1], state));
+    case Op::IfThenElse:
+      return evaluate_number(args[evaluate_bool(args[0], state) ? 1 : 2], state);
     default:
       throw EvaluationError(expr.range, "expression cannot be evaluated over a discrete state");
   }

@@ -45,6 +45,8 @@ enum class Op {
   Ceil,
   Abs,
   Mod,
+  Power,       // int ^ non-negative int, or number ^ int (PRISM's pow)
+  IfThenElse,  // operands: condition, then, else (PRISM's c ? a : b)
 };
 
 struct Expression {

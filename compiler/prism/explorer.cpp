@@ -1,0 +1,503 @@
+#include "prism/explorer.hpp"
+
+#include <string>
+#include <unordered_map>
+#include <utility>
+#include <vector>
+
+#include "formats/distribution_collector.hpp"
+#include "formats/prism_reader.hpp"
+#include "model/state_store.hpp"
+#include "support/double_range.hpp"
+#include "support/text.hpp"
+
+namespace oasis::prism {
+namespace {
+
+using model::Expression;
+using model::StateIndex;
+
+// Raised after a diagnostic has been reported; ends exploration.
+struct ExplorationFailed {};
+
+// More choices than this in one state means a synchronisation whose combinations explode.
+constexpr std::size_t kMaxChoicesPerState = 100'000;
+// `init ... endinit` is solved by trying every valuation; past this many it is refused.
+constexpr std::uint64_t kMaxInitCandidates = std::uint64_t{1} << 24;
+
+// One choice of a state: the commands that take part (one, or one per synchronising module).
+struct Choice {
+  std::optional<std::uint32_t> action;
+  std::vector<const Command*> commands;
+};
+
+class Explorer {
+ public:
+  Explorer(const Program& program, DiagnosticEngine& diagnostics, const ExploreOptions& options)
+      : program_(program),
+        diagnostics_(diagnostics),
+        options_(options),
+        store_(program.variables),
+        valuation_(program.variables.size()),
+        key_(store_.words_per_state()),
+        action_rewards_(program.rewards.size()) {}
+
+  std::optional<model::ExplicitModel> run() {
+    try {
+      prepare_probabilities();
+      add_initial_states();
+      for (StateIndex s = 0; s < store_.size(); ++s) {
+        store_.unpack(s, valuation_);
+        explore_state(s);
+        if (options_.progress && (s & 0xFFFFU) == 0xFFFFU) options_.progress(store_.size(), s + 1);
+      }
+      return build_model();
+    } catch (const ExplorationFailed&) {
+      return std::nullopt;
+    }
+  }
+
+ private:
+  // --- Initial states ------------------------------------------------------------------------
+
+  void prepare_probabilities() {
+    for (const Module& module : program_.modules) {
+      for (const Command& command : module.commands) {
+        for (const Update& update : command.updates) {
+          if (update.probability.is_constant())
+            constant_ids_[&update] = values_.intern(update.probability.constant);
+        }
+      }
+    }
+  }
+
+  void add_initial_states() {
+    if (!program_.init_predicate) {
+      for (std::size_t v = 0; v < program_.variables.size(); ++v)
+        valuation_[v] = program_.variables[v].init;
+      initial_.push_back(intern(valuation_, program_.range));
+      return;
+    }
+    std::uint64_t candidates = 1;
+    for (const model::DiscreteVariable& var : program_.variables) {
+      const auto width = static_cast<std::uint64_t>(var.high - var.low) + 1;
+      if (width > kMaxInitCandidates || candidates * width > kMaxInitCandidates) {
+        diagnostics_.error(program_.init_predicate->range,
+                           "'init ... endinit' would try more than " +
+                               std::to_string(kMaxInitCandidates) +
+                               " valuations; give each variable an init instead");
+        throw ExplorationFailed{};
+      }
+      candidates *= width;
+    }
+    for (std::size_t v = 0; v < program_.variables.size(); ++v)
+      valuation_[v] = program_.variables[v].low;
+    for (std::uint64_t i = 0; i < candidates; ++i) {
+      if (evaluate([&] { return model::evaluate_bool(*program_.init_predicate, valuation_); }))
+        initial_.push_back(intern(valuation_, program_.init_predicate->range));
+      next_valuation();
+    }
+    if (initial_.empty()) {
+      diagnostics_.error(program_.init_predicate->range, "no valuation satisfies the initial states' predicate");
+      throw ExplorationFailed{};
+    }
+  }
+
+  // Counts through every valuation, the last variable fastest.
+  void next_valuation() {
+    for (std::size_t v = program_.variables.size(); v-- > 0;) {
+      if (valuation_[v] < program_.variables[v].high) {
+        ++valuation_[v];
+        return;
+      }
+      valuation_[v] = program_.variables[v].low;
+    }
+  }
+
+  StateIndex intern(model::Valuation valuation, SourceRange cause) {
+    store_.pack(valuation, key_);
+    const auto [index, inserted] = store_.insert(key_);
+    if (inserted && store_.size() > options_.max_states) {
+      diagnostics_.error(cause, "exploration passed the limit of " +
+                                    std::to_string(options_.max_states) +
+                                    " states (raise it with --max-states)");
+      throw ExplorationFailed{};
+    }
+    return index;
+  }
+
+  // --- One state -----------------------------------------------------------------------------
+
+  void explore_state(StateIndex s) {
+    collect_choices();
+    if (choices_.empty()) {
+      deadlocks_.push_back(s);
+      begin_distribution(s, action_id(std::nullopt, 0));
+      collector_.add(s, RationalPool::kOne);
+      record_no_action_rewards();  // the self-loop PRISM adds earns nothing
+      return;
+    }
+    if (program_.type == ModelType::Dtmc) {
+      emit_mixture(s);
+    } else {
+      emit_choices(s);
+    }
+  }
+
+  // The enabled choices, unlabelled ones first, then each action's combinations.
+  void collect_choices() {
+    choices_.clear();
+    for (const Module& module : program_.modules) {
+      for (const Command& command : module.commands) {
+        if (!command.action && enabled(command)) choices_.push_back({std::nullopt, {&command}});
+      }
+    }
+    for (std::uint32_t a = 0; a < program_.actions.size(); ++a)
+      collect_synchronised(a);
+    if (choices_.size() > kMaxChoicesPerState) {
+      diagnostics_.error(program_.range, "state " + state_text() + " has more than " +
+                                             std::to_string(kMaxChoicesPerState) + " choices");
+      throw ExplorationFailed{};
+    }
+  }
+
+  void collect_synchronised(std::uint32_t a) {
+    // The enabled `a` commands of each module that has `a`; none in one of them blocks `a`.
+    participants_.clear();
+    for (const Module& module : program_.modules) {
+      if (!module.alphabet[a]) continue;
+      std::vector<const Command*> enabled_here;
+      for (const Command& command : module.commands) {
+        if (command.action == a && enabled(command)) enabled_here.push_back(&command);
+      }
+      if (enabled_here.empty()) return;
+      participants_.push_back(std::move(enabled_here));
+    }
+    // Every combination, the first module's command varying slowest.
+    std::vector<std::size_t> pick(participants_.size(), 0);
+    for (;;) {
+      Choice choice{a, {}};
+      for (std::size_t m = 0; m < participants_.size(); ++m)
+        choice.commands.push_back(participants_[m][pick[m]]);
+      choices_.push_back(std::move(choice));
+      if (choices_.size() > kMaxChoicesPerState) return;  // reported by the caller
+      std::size_t m = participants_.size();
+      while (m > 0 && ++pick[m - 1] == participants_[m - 1].size())
+        pick[--m] = 0;
+      if (m == 0) return;
+    }
+  }
+
+  bool enabled(const Command& command) {
+    return evaluate([&] { return model::evaluate_bool(command.guard, valuation_); });
+  }
+
+  void emit_choices(StateIndex s) {
+    std::uint32_t unlabelled = 0;
+    label_uses_.assign(program_.actions.size(), 0);
+    for (const Choice& choice : choices_) {
+      const std::uint32_t position = choice.action ? label_uses_[*choice.action]++ : unlabelled++;
+      begin_distribution(s, action_id(choice.action, position));
+      start_outcomes(choice);
+      for (auto& [target, probability] : row_)
+        collector_.add(target, probability);
+      record_action_rewards(choice.action, {});
+    }
+  }
+
+  // A dtmc's one distribution: the average of its enabled choices.
+  void emit_mixture(StateIndex s) {
+    begin_distribution(s, action_id(std::nullopt, 0));
+    const Rational share(1, static_cast<unsigned long>(choices_.size()));
+    mixture_.clear();
+    for (const Choice& choice : choices_) {
+      start_outcomes(choice);
+      for (auto& [target, probability] : row_) {
+        mixture_.emplace_back(target, choices_.size() == 1 ? probability
+                                                           : values_.intern(values_[probability] * share));
+      }
+    }
+    for (auto& [target, probability] : mixture_)
+      collector_.add(target, probability);
+    record_action_rewards(std::nullopt, share);
+  }
+
+  // The outcomes of choice.commands[i..], appended to row_: stack_[i] is the successor as the
+  // earlier commands' updates left it, reached with `probability`. Every update reads the
+  // source state, as in PRISM.
+  void outcomes(const Choice& choice, std::size_t i, ValueId probability) {
+    if (i == choice.commands.size()) {
+      row_.emplace_back(intern(stack_[i], choice.commands.front()->range), probability);
+      return;
+    }
+    const Command& command = *choice.commands[i];
+    Rational sum = 0;
+    for (const Update& update : command.updates) {
+      const ValueId p = update_probability(update, sum);
+      if (p == RationalPool::kZero) continue;
+      stack_[i + 1] = stack_[i];
+      for (const model::Update& assignment : update.assignments)
+        apply(assignment, stack_[i + 1]);
+      const ValueId combined =
+          probability == RationalPool::kOne ? p : values_.intern(values_[probability] * values_[p]);
+      outcomes(choice, i + 1, combined);
+    }
+    if (!command.constant_probabilities && sum != 1) {
+      diagnostics_.error(command.range, "in state " + state_text() + " the probabilities sum to " +
+                                            describe(sum) + ", not 1");
+      throw ExplorationFailed{};
+    }
+  }
+
+  void start_outcomes(const Choice& choice) {
+    row_.clear();
+    if (stack_.size() < choice.commands.size() + 1) stack_.resize(choice.commands.size() + 1);
+    stack_[0] = valuation_;
+    outcomes(choice, 0, RationalPool::kOne);
+  }
+
+  ValueId update_probability(const Update& update, Rational& state_sum) {
+    if (const auto it = constant_ids_.find(&update); it != constant_ids_.end()) {
+      state_sum += values_[it->second];
+      return it->second;
+    }
+    const Rational value = evaluate([&] { return model::evaluate_number(update.probability, valuation_); });
+    if (value < 0 || value > 1) {
+      diagnostics_.error(update.probability.range, "probability " + describe(value) + " in state " +
+                                                       state_text() + " is not in [0, 1]");
+      throw ExplorationFailed{};
+    }
+    state_sum += value;
+    return values_.intern(value);
+  }
+
+  void apply(const model::Update& update, std::vector<std::int64_t>& successor) {
+    const std::int64_t value = evaluate([&] { return model::evaluate_int(update.value, valuation_); });
+    const model::DiscreteVariable& var = program_.variables[update.variable];
+    if (value < var.low || value > var.high) {
+      diagnostics_.error(update.range, "update sets " + quoted(var.name) + " to " +
+                                           std::to_string(value) + ", outside its range [" +
+                                           std::to_string(var.low) + ".." +
+                                           std::to_string(var.high) + "], in state " + state_text());
+      throw ExplorationFailed{};
+    }
+    successor[update.variable] = value;
+  }
+
+  template <typename Evaluate>
+  auto evaluate(Evaluate&& run) -> decltype(run()) {
+    try {
+      return run();
+    } catch (const model::EvaluationError& error) {
+      diagnostics_.error(error.where, std::string(error.what()) + " in state " + state_text());
+      throw ExplorationFailed{};
+    }
+  }
+
+  // --- Actions and distributions -------------------------------------------------------------
+
+  // The action of the `position`-th choice labelled `label` (or unlabelled) in a state.
+  model::ActionIndex action_id(std::optional<std::uint32_t> label, std::uint32_t position) {
+    auto& ids = label ? labelled_ids_[*label] : unlabelled_ids_;
+    if (position < ids.size()) return ids[position];
+    std::string name;
+    if (!label || program_.type == ModelType::Dtmc) {
+      name = formats::unlabelled_action_name(position);
+    } else {
+      name = program_.actions[*label];
+      if (position > 0) name += "[" + std::to_string(position) + "]";
+    }
+    while (ids.size() <= position) {
+      ids.push_back(static_cast<model::ActionIndex>(action_names_.size()));
+      action_names_.push_back(ids.size() - 1 == position ? name : std::string());
+    }
+    return ids[position];
+  }
+
+  void begin_distribution(StateIndex s, model::ActionIndex action) {
+    if (collector_.full()) {
+      diagnostics_.error(program_.range, "the model has more than 2^32 transitions");
+      throw ExplorationFailed{};
+    }
+    collector_.begin(s, action, 0, 0);
+  }
+
+  // --- Rewards -------------------------------------------------------------------------------
+
+  // The action reward of the distribution just begun, per reward structure: the items of
+  // its label whose guard holds; in a dtmc the average over the state's choices.
+  void record_action_rewards(std::optional<std::uint32_t> label, std::optional<Rational> share) {
+    for (std::size_t r = 0; r < program_.rewards.size(); ++r) {
+      const RewardStructure& structure = program_.rewards[r];
+      Rational total = 0;
+      bool any = false;
+      for (const RewardItem& item : structure.items) {
+        if (item.kind == RewardItem::Kind::State) continue;
+        any = true;
+        if (share) {
+          for (const Choice& choice : choices_)
+            total += item_reward(item, choice.action) * *share;
+        } else {
+          total += item_reward(item, label);
+        }
+      }
+      if (any) action_rewards_[r].resize(collector_.size(), RationalPool::kZero);
+      if (any && total != 0) action_rewards_[r].back() = values_.intern(total);
+    }
+  }
+
+  void record_no_action_rewards() {
+    for (std::vector<ValueId>& rewards : action_rewards_) {
+      if (!rewards.empty()) rewards.resize(collector_.size(), RationalPool::kZero);
+    }
+  }
+
+  Rational item_reward(const RewardItem& item, std::optional<std::uint32_t> label) {
+    const bool matches = item.kind == RewardItem::Kind::Unlabelled ? !label.has_value()
+                                                                   : label == item.action;
+    if (!matches || !evaluate([&] { return model::evaluate_bool(item.guard, valuation_); }))
+      return 0;
+    return evaluate([&] { return model::evaluate_number(item.value, valuation_); });
+  }
+
+  // --- The model -----------------------------------------------------------------------------
+
+  model::ExplicitModel build_model() {
+    const std::uint32_t n = store_.size();
+    const auto num_actions = static_cast<std::uint32_t>(action_names_.size());
+    if (std::uint64_t{n} * num_actions >= UINT32_MAX) {
+      diagnostics_.error(program_.range, "model has more than 2^32 state-action pairs (" +
+                                             std::to_string(n) + " states x " +
+                                             std::to_string(num_actions) + " actions)");
+      throw ExplorationFailed{};
+    }
+    model::ExplicitModel model;
+    model.name = program_.name;
+    model.actions = action_names_;
+    fill_state_space(model.states);
+    std::vector<formats::DistributionCollector::Duplicate> duplicates;
+    auto matrix = collector_.finish(n, num_actions, values_, duplicates);
+    // Actions are named per state so that no state has two choices of one name.
+    if (!matrix) throw std::logic_error("PRISM exploration produced a repeated choice");
+    auto transitions = std::make_shared<const model::TransitionMatrix>(std::move(*matrix));
+    if (program_.rewards.empty()) model.contexts.push_back({"default", transitions, zero_rewards(n)});
+    for (std::size_t r = 0; r < program_.rewards.size(); ++r) {
+      model.contexts.push_back(
+          {program_.rewards[r].name, transitions, rewards(r, n, num_actions)});
+    }
+    model.labels = labels(n);
+    model.values = std::move(values_);
+    return model;
+  }
+
+  void fill_state_space(model::StateSpace& space) {
+    space.size = store_.size();
+    space.initial = initial_;
+    const std::size_t width = program_.variables.size();
+    for (const model::DiscreteVariable& var : program_.variables)
+      space.variables.push_back(var.name);
+    space.valuations.resize(std::size_t{space.size} * width);
+    for (StateIndex s = 0; s < space.size; ++s)
+      store_.unpack(s, std::span(space.valuations).subspan(std::size_t{s} * width, width));
+  }
+
+  static model::RewardTable zero_rewards(std::uint32_t n) {
+    model::RewardTable table;
+    table.state.assign(n, RationalPool::kZero);
+    return table;
+  }
+
+  model::RewardTable rewards(std::size_t r, std::uint32_t n, std::uint32_t num_actions) {
+    model::RewardTable table = zero_rewards(n);
+    const RewardStructure& structure = program_.rewards[r];
+    for (StateIndex s = 0; s < n; ++s) {
+      store_.unpack(s, valuation_);
+      Rational total = 0;
+      for (const RewardItem& item : structure.items) {
+        if (item.kind != RewardItem::Kind::State) continue;
+        if (evaluate([&] { return model::evaluate_bool(item.guard, valuation_); }))
+          total += evaluate([&] { return model::evaluate_number(item.value, valuation_); });
+      }
+      if (total != 0) table.state[s] = checked_value(total, structure.range);
+    }
+    const std::vector<ValueId>& per_distribution = action_rewards_[r];
+    if (per_distribution.empty()) return table;
+    table.choice.assign(std::size_t{n} * num_actions, RationalPool::kZero);
+    for (std::uint32_t d = 0; d < per_distribution.size(); ++d) {
+      if (per_distribution[d] == RationalPool::kZero) continue;
+      table.choice[std::size_t{collector_.source(d)} * num_actions + collector_.action(d)] =
+          checked_value(values_[per_distribution[d]], structure.range);
+    }
+    return table;
+  }
+
+  // A reward the catalog carries as a double must be one (support/double_range.hpp).
+  ValueId checked_value(const Rational& value, SourceRange where) {
+    const DoubleFit fit = double_fit(value);
+    if (fit != DoubleFit::kFaithful && fit != DoubleFit::kSubnormal) {
+      diagnostics_.error(where, carried_value_message(value, fit, "reward"));
+      throw ExplorationFailed{};
+    }
+    return values_.intern(value);
+  }
+
+  model::StateLabels labels(std::uint32_t n) {
+    std::vector<std::string> names = {"init", "deadlock"};
+    for (const Label& label : program_.labels)
+      names.push_back(label.name);
+    model::StateLabelsBuilder builder(std::move(names));
+    for (const StateIndex s : initial_)
+      builder.add(s, 0);
+    for (const StateIndex s : deadlocks_)
+      builder.add(s, 1);
+    for (StateIndex s = 0; s < n; ++s) {
+      store_.unpack(s, valuation_);
+      for (std::size_t l = 0; l < program_.labels.size(); ++l) {
+        if (evaluate([&] { return model::evaluate_bool(program_.labels[l].holds, valuation_); }))
+          builder.add(s, static_cast<std::uint32_t>(l + 2));
+      }
+    }
+    return builder.finish(n);
+  }
+
+  [[nodiscard]] std::string state_text() const {
+    std::string text = "(";
+    for (std::size_t v = 0; v < program_.variables.size(); ++v) {
+      if (v > 0) text += ',';
+      text += program_.variables[v].name + '=' + std::to_string(valuation_[v]);
+    }
+    return text + ')';
+  }
+
+  const Program& program_;
+  DiagnosticEngine& diagnostics_;
+  const ExploreOptions& options_;
+  model::StateStore store_;
+  RationalPool values_;
+  std::vector<std::int64_t> valuation_;
+  std::vector<std::vector<std::int64_t>> stack_;  // successors under construction (outcomes())
+  std::vector<std::uint64_t> key_;
+  std::unordered_map<const Update*, ValueId> constant_ids_;
+  std::vector<StateIndex> initial_;
+  std::vector<StateIndex> deadlocks_;
+  formats::DistributionCollector collector_;
+  std::vector<std::vector<ValueId>> action_rewards_;  // per structure, per distribution
+  std::vector<std::string> action_names_;
+  std::vector<model::ActionIndex> unlabelled_ids_;
+  std::unordered_map<std::uint32_t, std::vector<model::ActionIndex>> labelled_ids_;
+  std::vector<std::uint32_t> label_uses_;
+  // Per state scratch.
+  std::vector<Choice> choices_;
+  std::vector<std::vector<const Command*>> participants_;
+  std::vector<std::pair<StateIndex, ValueId>> row_;
+  std::vector<std::pair<StateIndex, ValueId>> mixture_;
+};
+
+}  // namespace
+
+std::optional<model::ExplicitModel> explore(const Program& program, DiagnosticEngine& diagnostics,
+                                            const ExploreOptions& options) {
+  return Explorer(program, diagnostics, options).run();
+}
+
+}  // namespace oasis::prism

@@ -1,0 +1,46 @@
+#include "prism/load_program.hpp"
+
+#include <algorithm>
+#include <filesystem>
+
+#include "frontend/input_validation.hpp"
+#include "prism/checker.hpp"
+#include "prism/lexer.hpp"
+#include "prism/parser.hpp"
+
+namespace oasis::prism {
+
+bool is_program_path(const std::string& path) {
+  return path.ends_with(".pm") || path.ends_with(".nm") || path.ends_with(".prism");
+}
+
+std::optional<model::ExplicitModel> load_program_text(FileId file, const std::string& name,
+                                                      DiagnosticEngine& diagnostics,
+                                                      const LoadOptions& options) {
+  const std::size_t errors_before = diagnostics.error_count();
+  if (!frontend::validate_input(file, diagnostics)) return std::nullopt;
+  const std::vector<Token> tokens = lex(file, diagnostics);
+  const ast::Program tree = parse(tokens, diagnostics);
+  // Semantic errors on a tree with syntax errors are mostly echoes of them: stop here.
+  if (diagnostics.error_count() != errors_before) return std::nullopt;
+  const auto program =
+      check(tree, name, diagnostics, {options.constants, options.max_number_bits, options.rewards});
+  if (!program) return std::nullopt;
+  return explore(*program, diagnostics, options.explore);
+}
+
+std::optional<model::ExplicitModel> load_program(const std::string& path, SourceManager& sources,
+                                                 DiagnosticEngine& diagnostics,
+                                                 const LoadOptions& options) {
+  MappedFile contents;
+  std::string reason;
+  // Source positions are 32-bit offsets, whatever the option says.
+  if (!contents.open(path, std::min(options.max_bytes, limits::kMaxAddressableBytes), reason)) {
+    diagnostics.file_error(path, "cannot read PRISM program: " + reason);
+    return std::nullopt;
+  }
+  const FileId file = sources.add(path, std::move(contents));
+  return load_program_text(file, std::filesystem::path(path).stem().string(), diagnostics, options);
+}
+
+}  // namespace oasis::prism
