@@ -1,0 +1,273 @@
+// The PRISM-language front end: its semantics (synchronisation, a dtmc's uniform choice, the
+// naming of an mdp's choices, renaming, constants, formulas, labels, rewards, initial states)
+// on small programs whose explicit models are worked out by hand, and its errors.
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <map>
+#include <sstream>
+#include <string>
+
+#include "prism/load_program.hpp"
+
+namespace oasis::prism {
+namespace {
+
+struct Loaded {
+  std::optional<model::ExplicitModel> model;
+  std::string messages;
+};
+
+Loaded load(const std::string& text, const std::string& constants = "",
+            const std::string& rewards = "none") {
+  SourceManager sources;
+  std::ostringstream out;
+  DiagnosticEngine diagnostics(sources, out);
+  const FileId file = sources.add("test.pm", text);
+  LoadOptions options;
+  options.constants = constants;
+  options.rewards = *model::LabelSelection::parse(rewards);
+  auto model = load_program_text(file, "test", diagnostics, options);
+  return {std::move(model), out.str()};
+}
+
+model::StateIndex state_named(const model::ExplicitModel& m, const std::string& name) {
+  for (model::StateIndex s = 0; s < m.num_states(); ++s) {
+    if (m.states.name(s) == name) return s;
+  }
+  ADD_FAILURE() << "no state " << name;
+  return 0;
+}
+
+// The distribution of action `action` in state `from`: target name -> probability.
+std::map<std::string, Rational> distribution(const model::ExplicitModel& m, const std::string& from,
+                                             const std::string& action) {
+  const auto a = static_cast<model::ActionIndex>(
+      std::find(m.actions.begin(), m.actions.end(), action) - m.actions.begin());
+  std::map<std::string, Rational> result;
+  if (a == m.num_actions()) {
+    ADD_FAILURE() << "no action " << action;
+    return result;
+  }
+  const model::TransitionMatrix& t = *m.contexts.at(0).transitions;
+  const model::StateIndex s = state_named(m, from);
+  for (model::EdgeIndex e = t.edges_begin(s, a); e < t.edges_end(s, a); ++e)
+    result[m.states.name(t.edge_target[e])] = m.values[t.edge_probability[e]];
+  return result;
+}
+
+std::vector<std::string> labels_of(const model::ExplicitModel& m, const std::string& state) {
+  std::vector<std::string> names;
+  for (const std::uint32_t l : m.labels.of(state_named(m, state)))
+    names.push_back(m.labels.names[l]);
+  return names;
+}
+
+constexpr const char* kDie = R"(
+dtmc
+module die
+  s : [0..7] init 0;
+  d : [0..6] init 0;
+  [] s=0 -> 0.5 : (s'=1) + 0.5 : (s'=2);
+  [] s=1 -> 0.5 : (s'=3) + 0.5 : (s'=4);
+  [] s=2 -> 0.5 : (s'=5) + 0.5 : (s'=6);
+  [] s=3 -> 0.5 : (s'=1) + 0.5 : (s'=7) & (d'=1);
+  [] s=4 -> 0.5 : (s'=7) & (d'=2) + 0.5 : (s'=7) & (d'=3);
+  [] s=5 -> 0.5 : (s'=7) & (d'=4) + 0.5 : (s'=7) & (d'=5);
+  [] s=6 -> 0.5 : (s'=2) + 0.5 : (s'=7) & (d'=6);
+  [] s=7 -> (s'=7);
+endmodule
+rewards "coin_flips" [] s<7 : 1; endrewards
+label "one" = s=7 & d=1;
+)";
+
+TEST(PrismProgram, KnuthYaoDieHasStormsThirteenStatesAndTwentyTransitions) {
+  const Loaded loaded = load(kDie);
+  ASSERT_TRUE(loaded.model) << loaded.messages;
+  const model::ExplicitModel& m = *loaded.model;
+  EXPECT_EQ(m.num_states(), 13U);
+  EXPECT_EQ(m.contexts.at(0).transitions->num_edges(), 20U);
+  EXPECT_EQ(m.actions, std::vector<std::string>{"[0]"});
+  EXPECT_EQ(m.states.name(m.states.initial.at(0)), "(s=0,d=0)");
+  EXPECT_EQ(labels_of(m, "(s=0,d=0)"), std::vector<std::string>{"init"});
+  EXPECT_EQ(labels_of(m, "(s=7,d=1)"), std::vector<std::string>{"one"});
+  EXPECT_EQ(distribution(m, "(s=3,d=0)", "[0]"),
+            (std::map<std::string, Rational>{{"(s=1,d=0)", Rational(1, 2)},
+                                             {"(s=7,d=1)", Rational(1, 2)}}));
+  EXPECT_FALSE(model::find_structural_problem(m));
+}
+
+TEST(PrismProgram, RewardStructuresBecomeContextsWhenSelected) {
+  const Loaded none = load(kDie);
+  ASSERT_TRUE(none.model) << none.messages;
+  ASSERT_EQ(none.model->contexts.size(), 1U);
+  EXPECT_EQ(none.model->contexts[0].name, "default");
+
+  const Loaded all = load(kDie, "", "all");
+  ASSERT_TRUE(all.model) << all.messages;
+  const model::ExplicitModel& m = *all.model;
+  ASSERT_EQ(m.contexts.size(), 1U);
+  EXPECT_EQ(m.contexts[0].name, "coin_flips");
+  EXPECT_EQ(m.reward(0, state_named(m, "(s=0,d=0)"), 0), 1);
+  EXPECT_EQ(m.reward(0, state_named(m, "(s=7,d=1)"), 0), 0);
+
+  const Loaded unknown = load(kDie, "", "flips");
+  EXPECT_FALSE(unknown.model);
+  EXPECT_NE(unknown.messages.find("no reward structure 'flips' (it has 'coin_flips')"),
+            std::string::npos)
+      << unknown.messages;
+}
+
+TEST(PrismProgram, SynchronisedCommandsMultiplyTheirOutcomes) {
+  const Loaded loaded = load(R"(
+mdp
+module a
+  x : [0..1] init 0;
+  [go] x=0 -> 1/2 : (x'=1) + 1/2 : true;
+endmodule
+module b
+  y : [0..1] init 0;
+  [go] y=0 -> 1/3 : (y'=1) + 2/3 : true;
+endmodule
+)");
+  ASSERT_TRUE(loaded.model) << loaded.messages;
+  EXPECT_EQ(distribution(*loaded.model, "(x=0,y=0)", "go"),
+            (std::map<std::string, Rational>{{"(x=0,y=0)", Rational(1, 3)},
+                                             {"(x=0,y=1)", Rational(1, 6)},
+                                             {"(x=1,y=0)", Rational(1, 3)},
+                                             {"(x=1,y=1)", Rational(1, 6)}}));
+  // Once one module cannot take part, `go` is blocked: (x=1,y=1) is a deadlock.
+  EXPECT_EQ(labels_of(*loaded.model, "(x=1,y=1)"), std::vector<std::string>{"deadlock"});
+  EXPECT_EQ(labels_of(*loaded.model, "(x=1,y=0)"), std::vector<std::string>{"deadlock"});
+}
+
+TEST(PrismProgram, ADtmcTakesItsEnabledCommandsUniformly) {
+  const Loaded loaded = load(R"(
+dtmc
+module m
+  x : [0..2] init 0;
+  [] x=0 -> (x'=1);
+  [] x=0 -> 1/2 : (x'=2) + 1/2 : (x'=1);
+  [] x>0 -> true;
+endmodule
+)");
+  ASSERT_TRUE(loaded.model) << loaded.messages;
+  EXPECT_EQ(distribution(*loaded.model, "(x=0)", "[0]"),
+            (std::map<std::string, Rational>{{"(x=1)", Rational(3, 4)},
+                                             {"(x=2)", Rational(1, 4)}}));
+}
+
+TEST(PrismProgram, AnMdpNamesUnlabelledChoicesByPlaceAndRepeatedLabelsByCount) {
+  const Loaded loaded = load(R"(
+mdp
+module m
+  x : [0..3] init 0;
+  [] x=0 -> (x'=1);
+  [] x=0 -> (x'=2);
+  [a] x=0 -> (x'=3);
+  [a] x<3 -> (x'=0);
+  [] x>0 -> true;
+endmodule
+)");
+  ASSERT_TRUE(loaded.model) << loaded.messages;
+  const model::ExplicitModel& m = *loaded.model;
+  EXPECT_EQ(distribution(m, "(x=0)", "[0]"), (std::map<std::string, Rational>{{"(x=1)", 1}}));
+  EXPECT_EQ(distribution(m, "(x=0)", "[1]"), (std::map<std::string, Rational>{{"(x=2)", 1}}));
+  EXPECT_EQ(distribution(m, "(x=0)", "a"), (std::map<std::string, Rational>{{"(x=3)", 1}}));
+  EXPECT_EQ(distribution(m, "(x=0)", "a[1]"), (std::map<std::string, Rational>{{"(x=0)", 1}}));
+  EXPECT_EQ(m.contexts[0].transitions->num_enabled_choices(), 4U + 2 + 2 + 1);
+}
+
+TEST(PrismProgram, RenamedModulesConstantsAndFormulas) {
+  const Loaded loaded = load(R"(
+mdp
+const int N;
+const double q = 1/4;
+formula next = mod(x + 1, N + 1);
+module one
+  x : [0..N] init 0;
+  [tick] true -> q : (x'=next) + 1 - q : true;
+endmodule
+module two = one [x=y, next=back, q=r] endmodule
+const double r = 1/2;
+formula back = y > 0 ? y - 1 : N;
+)",
+                             "N=2");
+  ASSERT_TRUE(loaded.model) << loaded.messages;
+  const model::ExplicitModel& m = *loaded.model;
+  EXPECT_EQ(m.num_states(), 9U);
+  EXPECT_EQ(distribution(m, "(x=0,y=0)", "tick"),
+            (std::map<std::string, Rational>{{"(x=0,y=0)", Rational(3, 8)},
+                                             {"(x=0,y=2)", Rational(3, 8)},
+                                             {"(x=1,y=0)", Rational(1, 8)},
+                                             {"(x=1,y=2)", Rational(1, 8)}}));
+}
+
+TEST(PrismProgram, BooleansInitBlocksAndFunctions) {
+  const Loaded loaded = load(R"(
+dtmc
+global done : bool;
+module m
+  k : [0..8];
+  [] !done & k < 8 -> (k'=min(8, pow(2, k) + floor(k/2))) & (done'=k=3);
+  [] done | k = 8 -> true;
+endmodule
+init k <= 1 & !done endinit
+)");
+  ASSERT_TRUE(loaded.model) << loaded.messages;
+  const model::ExplicitModel& m = *loaded.model;
+  EXPECT_EQ(m.states.initial.size(), 2U);
+  // k: 0 -> 1 -> 2 -> 5 (done stays false until leaving k=3, which is never reached).
+  EXPECT_EQ(distribution(m, "(done=0,k=2)", "[0]"),
+            (std::map<std::string, Rational>{{"(done=0,k=5)", 1}}));
+  EXPECT_EQ(distribution(m, "(done=0,k=5)", "[0]"),
+            (std::map<std::string, Rational>{{"(done=0,k=8)", 1}}));
+}
+
+TEST(PrismProgram, ConstantsOnTheCommandLineAreCheckedAgainstTheProgram) {
+  const std::string program = "dtmc\nconst int N;\nconst bool b = true;\nmodule m\n"
+                              "  x : [0..N] init 0;\n  [] true -> true;\nendmodule\n";
+  EXPECT_TRUE(load(program, "N=3").model);
+  EXPECT_NE(load(program).messages.find("constant 'N' has no value"), std::string::npos);
+  EXPECT_NE(load(program, "N=1.5").messages.find("constant 'N' is an int"), std::string::npos);
+  EXPECT_NE(load(program, "N=3,M=2").messages.find("the program has no constant 'M'"),
+            std::string::npos);
+  EXPECT_NE(load(program, "N=3,b=false").messages.find("so --const cannot set it"),
+            std::string::npos);
+  EXPECT_NE(load(program, "N").messages.find("expected NAME=VALUE"), std::string::npos);
+}
+
+TEST(PrismProgram, CyclesAndBlowUpsAreErrorsNotHangs) {
+  EXPECT_NE(load("dtmc\nconst int a = b;\nconst int b = a;\n").messages.find("in terms of itself"),
+            std::string::npos);
+  EXPECT_NE(load("dtmc\nformula f = g;\nformula g = f;\nmodule m x : [0..1]; [] f -> true; "
+                 "endmodule\n")
+                .messages.find("uses itself"),
+            std::string::npos);
+  // Each formula uses the one before twice: expanded, the last would have 2^40 nodes.
+  std::string doubling = "dtmc\nmodule m x : [0..1]; [] f40 > 0 -> true; endmodule\nformula f0 = x;\n";
+  for (int i = 1; i <= 40; ++i)
+    doubling += "formula f" + std::to_string(i) + " = f" + std::to_string(i - 1) + " + f" +
+                std::to_string(i - 1) + ";\n";
+  EXPECT_NE(load(doubling).messages.find("nodes once its formulas are expanded"), std::string::npos);
+  EXPECT_NE(load("dtmc\nconst int a = " + std::string(500, '(') + "1" + std::string(500, ')') + ";\n")
+                .messages.find("nested more than"),
+            std::string::npos);
+}
+
+TEST(PrismProgram, ProbabilitiesThatDependOnTheStateAreCheckedInEachState) {
+  const Loaded loaded = load(R"(
+dtmc
+module m
+  x : [0..2] init 0;
+  [] true -> x/4 : (x'=min(x+1,2)) + 1/2 : true;
+endmodule
+)");
+  ASSERT_FALSE(loaded.model);
+  EXPECT_NE(loaded.messages.find("in state (x=0) the probabilities sum to 1/2"), std::string::npos)
+      << loaded.messages;
+}
+
+}  // namespace
+}  // namespace oasis::prism
