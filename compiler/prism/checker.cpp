@@ -359,6 +359,7 @@ class Checker {
       for (const ast::Command& command : modules_[m].commands) {
         if (auto lowered = lower_command(command, static_cast<std::int64_t>(m))) {
           if (lowered->action) module.alphabet[*lowered->action] = true;
+          lowered->serial = next_serial_++;
           module.commands.push_back(std::move(*lowered));
         }
       }
@@ -578,6 +579,7 @@ class Checker {
   std::vector<bool> boolean_;         // per variable
   std::vector<std::int64_t> owner_;   // per variable: its module, or kGlobal
   std::unordered_map<std::string, std::uint32_t> action_index_;
+  std::uint32_t next_serial_ = 0;
 };
 
 }  // namespace

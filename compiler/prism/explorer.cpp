@@ -25,10 +25,12 @@ constexpr std::size_t kMaxChoicesPerState = 100'000;
 // `init ... endinit` is solved by trying every valuation; past this many it is refused.
 constexpr std::uint64_t kMaxInitCandidates = std::uint64_t{1} << 24;
 
-// One choice of a state: the commands that take part (one, or one per synchronising module).
+// One choice of a state: the commands that take part (one, or one per synchronising module),
+// choice_commands_[first .. first + count).
 struct Choice {
   std::optional<std::uint32_t> action;
-  std::vector<const Command*> commands;
+  std::uint32_t first = 0;
+  std::uint32_t count = 0;
 };
 
 class Explorer {
@@ -60,15 +62,30 @@ class Explorer {
  private:
   // --- Initial states ------------------------------------------------------------------------
 
+  // Indexes the commands once: the unlabelled ones; per action, the modules that take part
+  // and their commands of it; the pool ids of constant probabilities.
   void prepare_probabilities() {
+    by_action_.resize(program_.actions.size());
     for (const Module& module : program_.modules) {
+      for (std::uint32_t a = 0; a < program_.actions.size(); ++a) {
+        if (module.alphabet[a]) by_action_[a].emplace_back();
+      }
       for (const Command& command : module.commands) {
+        if (command.action) {
+          by_action_[*command.action].back().push_back(&command);
+        } else {
+          unlabelled_.push_back(&command);
+        }
+        if (first_update_.size() <= command.serial) first_update_.resize(command.serial + 1);
+        first_update_[command.serial] = static_cast<std::uint32_t>(probability_ids_.size());
         for (const Update& update : command.updates) {
-          if (update.probability.is_constant())
-            constant_ids_[&update] = values_.intern(update.probability.constant);
+          probability_ids_.push_back(update.probability.is_constant()
+                                         ? values_.intern(update.probability.constant)
+                                         : kStateDependent);
         }
       }
     }
+    participants_.resize(program_.modules.size());
   }
 
   void add_initial_states() {
@@ -147,10 +164,11 @@ class Explorer {
   // The enabled choices, unlabelled ones first, then each action's combinations.
   void collect_choices() {
     choices_.clear();
-    for (const Module& module : program_.modules) {
-      for (const Command& command : module.commands) {
-        if (!command.action && enabled(command)) choices_.push_back({std::nullopt, {&command}});
-      }
+    choice_commands_.clear();
+    for (const Command* command : unlabelled_) {
+      if (!enabled(*command)) continue;
+      choices_.push_back({std::nullopt, static_cast<std::uint32_t>(choice_commands_.size()), 1});
+      choice_commands_.push_back(command);
     }
     for (std::uint32_t a = 0; a < program_.actions.size(); ++a)
       collect_synchronised(a);
@@ -163,27 +181,26 @@ class Explorer {
 
   void collect_synchronised(std::uint32_t a) {
     // The enabled `a` commands of each module that has `a`; none in one of them blocks `a`.
-    participants_.clear();
-    for (const Module& module : program_.modules) {
-      if (!module.alphabet[a]) continue;
-      std::vector<const Command*> enabled_here;
-      for (const Command& command : module.commands) {
-        if (command.action == a && enabled(command)) enabled_here.push_back(&command);
+    const auto& modules = by_action_[a];
+    for (std::size_t m = 0; m < modules.size(); ++m) {
+      participants_[m].clear();
+      for (const Command* command : modules[m]) {
+        if (enabled(*command)) participants_[m].push_back(command);
       }
-      if (enabled_here.empty()) return;
-      participants_.push_back(std::move(enabled_here));
+      if (participants_[m].empty()) return;
     }
     // Every combination, the first module's command varying slowest.
-    std::vector<std::size_t> pick(participants_.size(), 0);
+    const std::size_t n = modules.size();
+    pick_.assign(n, 0);
     for (;;) {
-      Choice choice{a, {}};
-      for (std::size_t m = 0; m < participants_.size(); ++m)
-        choice.commands.push_back(participants_[m][pick[m]]);
-      choices_.push_back(std::move(choice));
+      choices_.push_back({a, static_cast<std::uint32_t>(choice_commands_.size()),
+                          static_cast<std::uint32_t>(n)});
+      for (std::size_t m = 0; m < n; ++m)
+        choice_commands_.push_back(participants_[m][pick_[m]]);
       if (choices_.size() > kMaxChoicesPerState) return;  // reported by the caller
-      std::size_t m = participants_.size();
-      while (m > 0 && ++pick[m - 1] == participants_[m - 1].size())
-        pick[--m] = 0;
+      std::size_t m = n;
+      while (m > 0 && ++pick_[m - 1] == participants_[m - 1].size())
+        pick_[--m] = 0;
       if (m == 0) return;
     }
   }
@@ -226,14 +243,19 @@ class Explorer {
   // earlier commands' updates left it, reached with `probability`. Every update reads the
   // source state, as in PRISM.
   void outcomes(const Choice& choice, std::size_t i, ValueId probability) {
-    if (i == choice.commands.size()) {
-      row_.emplace_back(intern(stack_[i], choice.commands.front()->range), probability);
+    if (i == choice.count) {
+      row_.emplace_back(intern(stack_[i], choice_commands_[choice.first]->range), probability);
       return;
     }
-    const Command& command = *choice.commands[i];
-    Rational sum = 0;
+    const Command& command = *choice_commands_[choice.first + i];
+    // Sums only where a probability depends on the state: the checker has summed the others.
+    const bool check_sum = !command.constant_probabilities;
+    if (check_sum) sums_[i] = 0;
+    const ValueId* ids = probability_ids_.data() + first_update_[command.serial];
     for (const Update& update : command.updates) {
-      const ValueId p = update_probability(update, sum);
+      const ValueId id = *ids++;
+      const ValueId p = id == kStateDependent ? state_probability(update) : id;
+      if (check_sum) sums_[i] += values_[p];
       if (p == RationalPool::kZero) continue;
       stack_[i + 1] = stack_[i];
       for (const model::Update& assignment : update.assignments)
@@ -242,32 +264,31 @@ class Explorer {
           probability == RationalPool::kOne ? p : values_.intern(values_[probability] * values_[p]);
       outcomes(choice, i + 1, combined);
     }
-    if (!command.constant_probabilities && sum != 1) {
+    if (check_sum && sums_[i] != 1) {
       diagnostics_.error(command.range, "in state " + state_text() + " the probabilities sum to " +
-                                            describe(sum) + ", not 1");
+                                            describe(sums_[i]) + ", not 1");
       throw ExplorationFailed{};
     }
   }
 
   void start_outcomes(const Choice& choice) {
     row_.clear();
-    if (stack_.size() < choice.commands.size() + 1) stack_.resize(choice.commands.size() + 1);
+    if (stack_.size() < choice.count + 1) {
+      stack_.resize(choice.count + 1);
+      sums_.resize(choice.count + 1);
+    }
     stack_[0] = valuation_;
     outcomes(choice, 0, RationalPool::kOne);
   }
 
-  ValueId update_probability(const Update& update, Rational& state_sum) {
-    if (const auto it = constant_ids_.find(&update); it != constant_ids_.end()) {
-      state_sum += values_[it->second];
-      return it->second;
-    }
+  // A probability that depends on the state, evaluated and checked in this one.
+  ValueId state_probability(const Update& update) {
     const Rational value = evaluate([&] { return model::evaluate_number(update.probability, valuation_); });
     if (value < 0 || value > 1) {
       diagnostics_.error(update.probability.range, "probability " + describe(value) + " in state " +
                                                        state_text() + " is not in [0, 1]");
       throw ExplorationFailed{};
     }
-    state_sum += value;
     return values_.intern(value);
   }
 
@@ -476,8 +497,13 @@ class Explorer {
   RationalPool values_;
   std::vector<std::int64_t> valuation_;
   std::vector<std::vector<std::int64_t>> stack_;  // successors under construction (outcomes())
+  std::vector<Rational> sums_;                    // per command of a choice (outcomes())
   std::vector<std::uint64_t> key_;
-  std::unordered_map<const Update*, ValueId> constant_ids_;
+  static constexpr ValueId kStateDependent = UINT32_MAX;
+  std::vector<const Command*> unlabelled_;
+  std::vector<std::vector<std::vector<const Command*>>> by_action_;  // [action][module][i]
+  std::vector<std::uint32_t> first_update_;  // per command serial: into probability_ids_
+  std::vector<ValueId> probability_ids_;     // per update; kStateDependent when not constant
   std::vector<StateIndex> initial_;
   std::vector<StateIndex> deadlocks_;
   formats::DistributionCollector collector_;
@@ -488,7 +514,9 @@ class Explorer {
   std::vector<std::uint32_t> label_uses_;
   // Per state scratch.
   std::vector<Choice> choices_;
+  std::vector<const Command*> choice_commands_;
   std::vector<std::vector<const Command*>> participants_;
+  std::vector<std::size_t> pick_;
   std::vector<std::pair<StateIndex, ValueId>> row_;
   std::vector<std::pair<StateIndex, ValueId>> mixture_;
 };

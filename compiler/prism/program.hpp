@@ -29,6 +29,7 @@ struct Command {
   // The sum of the probabilities when none depends on the state (checked already);
   // otherwise exploration checks it in each state.
   bool constant_probabilities = true;
+  std::uint32_t serial = 0;  // its place among all the program's commands
   SourceRange range;
 };
 
