@@ -41,10 +41,10 @@ void add_common_options(CLI::App& command, CommonOptions& options) {
       ->capture_default_str()
       ->check(
           [](const std::string& value) -> std::string {
-            return model::LabelSelection::parse(value)
-                       ? ""
-                       : "expected none, all or reward structure names separated by commas, got \"" +
-                             value + "\"";
+            return model::LabelSelection::parse(value) ? ""
+                                                       : "expected none, all or reward structure "
+                                                         "names separated by commas, got \"" +
+                                                             value + "\"";
           },
           "none|all|R1,R2");
   command

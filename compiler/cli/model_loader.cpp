@@ -19,13 +19,14 @@ void print_progress(std::uint64_t found, std::uint64_t explored) {
 }
 
 std::optional<model::ExplicitModel> load_prism_program(const std::string& path,
-                                                      SourceManager& sources,
-                                                      DiagnosticEngine& diagnostics,
-                                                      const LoadOptions& options) {
+                                                       SourceManager& sources,
+                                                       DiagnosticEngine& diagnostics,
+                                                       const LoadOptions& options) {
   prism::LoadOptions prism_options;
   prism_options.constants = options.constants;
   // The option's check has parsed it already (common_options.cpp).
-  prism_options.rewards = model::LabelSelection::parse(options.rewards).value_or(model::LabelSelection{});
+  prism_options.rewards =
+      model::LabelSelection::parse(options.rewards).value_or(model::LabelSelection{});
   prism_options.max_bytes = options.max_spec_bytes;
   prism_options.max_number_bits = options.max_number_bits;
   prism_options.explore.max_states = options.max_states;

@@ -50,7 +50,7 @@ struct Assignment {
 };
 
 struct Update {
-  std::optional<Expr> probability;  // none: 1
+  std::optional<Expr> probability;      // none: 1
   std::vector<Assignment> assignments;  // empty: `true`, nothing changes
   SourceRange range;
 };

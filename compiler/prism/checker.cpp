@@ -63,8 +63,9 @@ class Checker {
     program_.range = tree_.type_range;
     // PRISM reads a program without a type as an MDP; so do we, and say so.
     if (!tree_.type_given) {
-      diagnostics_.warning(tree_.type_range, "the program does not give its model type: read as "
-                                             "an mdp (start it with 'dtmc' or 'mdp')");
+      diagnostics_.warning(tree_.type_range,
+                           "the program does not give its model type: read as "
+                           "an mdp (start it with 'dtmc' or 'mdp')");
     }
   }
 
@@ -130,8 +131,8 @@ class Checker {
       case ConstantState::Status::Failed:
         return std::nullopt;
       case ConstantState::Status::Evaluating:
-        diagnostics_.error(constant.range, "constant " + quoted(constant.name) +
-                                               " is defined in terms of itself");
+        diagnostics_.error(constant.range,
+                           "constant " + quoted(constant.name) + " is defined in terms of itself");
         state.status = ConstantState::Status::Failed;
         return std::nullopt;
       case ConstantState::Status::Pending:
@@ -147,13 +148,14 @@ class Checker {
 
   std::optional<Expression> compute_constant(const ast::Constant& constant,
                                              const ConstantOverride* given) {
-    const Type wanted = constant.type == ast::ConstantType::Bool   ? Type::Bool
+    const Type wanted = constant.type == ast::ConstantType::Bool  ? Type::Bool
                         : constant.type == ast::ConstantType::Int ? Type::Int
                                                                   : Type::Real;
     if (!constant.value && given == nullptr) {
       diagnostics_.error(constant.range, "constant " + quoted(constant.name) +
                                              " has no value: define it here or give it with "
-                                             "--const " + constant.name + "=VALUE");
+                                             "--const " +
+                                             constant.name + "=VALUE");
       return std::nullopt;
     }
     if (given != nullptr) return overridden_value(constant, *given, wanted);
@@ -161,7 +163,8 @@ class Checker {
                        "the value of constant " + quoted(constant.name));
     if (!value) return std::nullopt;
     if (!value->is_constant()) {
-      diagnostics_.error(constant.value->range, "the value of a constant must not depend on the state");
+      diagnostics_.error(constant.value->range,
+                         "the value of a constant must not depend on the state");
       return std::nullopt;
     }
     value->type = wanted;
@@ -171,13 +174,13 @@ class Checker {
   std::optional<Expression> overridden_value(const ast::Constant& constant,
                                              const ConstantOverride& given, Type wanted) {
     const bool is_bool = given.type == Type::Bool;
-    const bool fits = wanted == Type::Bool ? is_bool
+    const bool fits = wanted == Type::Bool  ? is_bool
                       : wanted == Type::Int ? !is_bool && given.value.get_den() == 1
                                             : !is_bool;
     if (!fits) {
       diagnostics_.plain_error("--const " + given.name + "=" + given.text + ": constant " +
                                quoted(constant.name) + " is " +
-                               std::string(wanted == Type::Bool ? "a bool"
+                               std::string(wanted == Type::Bool  ? "a bool"
                                            : wanted == Type::Int ? "an int"
                                                                  : "a double"));
       return std::nullopt;
@@ -194,8 +197,9 @@ class Checker {
 
   std::optional<Expression> lower(const ast::Expr& expr, Scope scope, Type wanted,
                                   const std::string& what) {
-    ExpressionLowering lowering(diagnostics_, options_.max_number_bits,
-                                [this, scope](const ast::Expr& name) { return resolve(name, scope); });
+    ExpressionLowering lowering(
+        diagnostics_, options_.max_number_bits,
+        [this, scope](const ast::Expr& name) { return resolve(name, scope); });
     return lowering.lower_as(expr, wanted, what);
   }
 
@@ -255,8 +259,9 @@ class Checker {
     }
     if (!state.value) {
       state.expanding = true;
-      ExpressionLowering lowering(diagnostics_, options_.max_number_bits,
-                                  [this](const ast::Expr& name) { return resolve(name, Scope::State); });
+      ExpressionLowering lowering(
+          diagnostics_, options_.max_number_bits,
+          [this](const ast::Expr& name) { return resolve(name, Scope::State); });
       auto value = lowering.lower(formula.value);
       formulas_[i].expanding = false;
       if (!value) {
@@ -312,8 +317,9 @@ class Checker {
 
   void initial_value(const ast::Variable& var, model::DiscreteVariable& result) {
     if (tree_.init) {
-      diagnostics_.error(var.init->range, "a variable's 'init' cannot be given as well as "
-                                          "'init ... endinit'");
+      diagnostics_.error(var.init->range,
+                         "a variable's 'init' cannot be given as well as "
+                         "'init ... endinit'");
       return;
     }
     const auto init = lower(*var.init, Scope::Constants, var.boolean ? Type::Bool : Type::Int,
@@ -430,8 +436,9 @@ class Checker {
                                                 std::int64_t module, std::vector<bool>& assigned) {
     const auto it = symbols_.find(assignment.variable);
     if (it == symbols_.end() || it->second.kind != Symbol::Kind::Variable) {
-      diagnostics_.error(assignment.variable_range,
-                         quoted(assignment.variable) + " is not a variable, so it cannot be updated");
+      diagnostics_.error(
+          assignment.variable_range,
+          quoted(assignment.variable) + " is not a variable, so it cannot be updated");
       return std::nullopt;
     }
     const std::size_t slot = it->second.index;
@@ -501,8 +508,8 @@ class Checker {
       structure.range = rewards.range;
       structure.name = rewards.name.empty() ? "rewards" + std::to_string(r + 1) : rewards.name;
       if (const auto [it, inserted] = seen.try_emplace(structure.name, rewards.range); !inserted) {
-        diagnostics_.error(rewards.range, "reward structure " + quoted(structure.name) +
-                                              " is defined twice");
+        diagnostics_.error(rewards.range,
+                           "reward structure " + quoted(structure.name) + " is defined twice");
         diagnostics_.note(it->second, "first defined here");
         continue;
       }
@@ -527,8 +534,9 @@ class Checker {
       std::string known;
       for (const RewardStructure& r : program_.rewards)
         known += (known.empty() ? "" : ", ") + quoted(r.name);
-      diagnostics_.plain_error("--rewards: the program has no reward structure " + quoted(name) +
-                               (known.empty() ? std::string(" (it has none)") : " (it has " + known + ")"));
+      diagnostics_.plain_error(
+          "--rewards: the program has no reward structure " + quoted(name) +
+          (known.empty() ? std::string(" (it has none)") : " (it has " + known + ")"));
     }
     for (RewardStructure& structure : program_.rewards) {
       const bool named = std::find(selection.names.begin(), selection.names.end(),
@@ -576,8 +584,8 @@ class Checker {
   std::vector<ConstantOverride> overrides_;
   std::vector<ConstantState> constants_;
   std::vector<FormulaState> formulas_;
-  std::vector<bool> boolean_;         // per variable
-  std::vector<std::int64_t> owner_;   // per variable: its module, or kGlobal
+  std::vector<bool> boolean_;        // per variable
+  std::vector<std::int64_t> owner_;  // per variable: its module, or kGlobal
   std::unordered_map<std::string, std::uint32_t> action_index_;
   std::uint32_t next_serial_ = 0;
 };

@@ -33,9 +33,11 @@ std::vector<ConstantOverride> read_constant_overrides(std::string_view text,
     text = comma == std::string_view::npos ? std::string_view() : text.substr(comma + 1);
     const std::size_t equals = entry.find('=');
     const std::string_view name = trim(entry.substr(0, equals));
-    const std::string_view value = equals == std::string_view::npos ? "" : trim(entry.substr(equals + 1));
+    const std::string_view value =
+        equals == std::string_view::npos ? "" : trim(entry.substr(equals + 1));
     if (equals == std::string_view::npos || !is_name(name) || value.empty()) {
-      diagnostics.plain_error("--const: expected NAME=VALUE, as in N=4,p=0.1, not " + quoted(entry));
+      diagnostics.plain_error("--const: expected NAME=VALUE, as in N=4,p=0.1, not " +
+                              quoted(entry));
       continue;
     }
     ConstantOverride given{std::string(name), std::string(value), model::Type::Real, 0};

@@ -12,7 +12,7 @@ namespace oasis::prism {
 
 struct ConstantOverride {
   std::string name;
-  std::string text;  // as given
+  std::string text;                      // as given
   model::Type type = model::Type::Real;  // Bool for true/false; Int/Real for numbers
   Rational value;                        // booleans: 0 or 1
 };

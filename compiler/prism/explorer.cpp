@@ -115,7 +115,8 @@ class Explorer {
       next_valuation();
     }
     if (initial_.empty()) {
-      diagnostics_.error(program_.init_predicate->range, "no valuation satisfies the initial states' predicate");
+      diagnostics_.error(program_.init_predicate->range,
+                         "no valuation satisfies the initial states' predicate");
       throw ExplorationFailed{};
     }
   }
@@ -193,8 +194,8 @@ class Explorer {
     const std::size_t n = modules.size();
     pick_.assign(n, 0);
     for (;;) {
-      choices_.push_back({a, static_cast<std::uint32_t>(choice_commands_.size()),
-                          static_cast<std::uint32_t>(n)});
+      choices_.push_back(
+          {a, static_cast<std::uint32_t>(choice_commands_.size()), static_cast<std::uint32_t>(n)});
       for (std::size_t m = 0; m < n; ++m)
         choice_commands_.push_back(participants_[m][pick_[m]]);
       if (choices_.size() > kMaxChoicesPerState) return;  // reported by the caller
@@ -230,8 +231,9 @@ class Explorer {
     for (const Choice& choice : choices_) {
       start_outcomes(choice);
       for (auto& [target, probability] : row_) {
-        mixture_.emplace_back(target, choices_.size() == 1 ? probability
-                                                           : values_.intern(values_[probability] * share));
+        mixture_.emplace_back(target, choices_.size() == 1
+                                          ? probability
+                                          : values_.intern(values_[probability] * share));
       }
     }
     for (auto& [target, probability] : mixture_)
@@ -283,7 +285,8 @@ class Explorer {
 
   // A probability that depends on the state, evaluated and checked in this one.
   ValueId state_probability(const Update& update) {
-    const Rational value = evaluate([&] { return model::evaluate_number(update.probability, valuation_); });
+    const Rational value =
+        evaluate([&] { return model::evaluate_number(update.probability, valuation_); });
     if (value < 0 || value > 1) {
       diagnostics_.error(update.probability.range, "probability " + describe(value) + " in state " +
                                                        state_text() + " is not in [0, 1]");
@@ -293,13 +296,14 @@ class Explorer {
   }
 
   void apply(const model::Update& update, std::vector<std::int64_t>& successor) {
-    const std::int64_t value = evaluate([&] { return model::evaluate_int(update.value, valuation_); });
+    const std::int64_t value =
+        evaluate([&] { return model::evaluate_int(update.value, valuation_); });
     const model::DiscreteVariable& var = program_.variables[update.variable];
     if (value < var.low || value > var.high) {
-      diagnostics_.error(update.range, "update sets " + quoted(var.name) + " to " +
-                                           std::to_string(value) + ", outside its range [" +
-                                           std::to_string(var.low) + ".." +
-                                           std::to_string(var.high) + "], in state " + state_text());
+      diagnostics_.error(update.range,
+                         "update sets " + quoted(var.name) + " to " + std::to_string(value) +
+                             ", outside its range [" + std::to_string(var.low) + ".." +
+                             std::to_string(var.high) + "], in state " + state_text());
       throw ExplorationFailed{};
     }
     successor[update.variable] = value;
@@ -374,8 +378,8 @@ class Explorer {
   }
 
   Rational item_reward(const RewardItem& item, std::optional<std::uint32_t> label) {
-    const bool matches = item.kind == RewardItem::Kind::Unlabelled ? !label.has_value()
-                                                                   : label == item.action;
+    const bool matches =
+        item.kind == RewardItem::Kind::Unlabelled ? !label.has_value() : label == item.action;
     if (!matches || !evaluate([&] { return model::evaluate_bool(item.guard, valuation_); }))
       return 0;
     return evaluate([&] { return model::evaluate_number(item.value, valuation_); });
@@ -401,10 +405,10 @@ class Explorer {
     // Actions are named per state so that no state has two choices of one name.
     if (!matrix) throw std::logic_error("PRISM exploration produced a repeated choice");
     auto transitions = std::make_shared<const model::TransitionMatrix>(std::move(*matrix));
-    if (program_.rewards.empty()) model.contexts.push_back({"default", transitions, zero_rewards(n)});
+    if (program_.rewards.empty())
+      model.contexts.push_back({"default", transitions, zero_rewards(n)});
     for (std::size_t r = 0; r < program_.rewards.size(); ++r) {
-      model.contexts.push_back(
-          {program_.rewards[r].name, transitions, rewards(r, n, num_actions)});
+      model.contexts.push_back({program_.rewards[r].name, transitions, rewards(r, n, num_actions)});
     }
     model.labels = labels(n);
     model.values = std::move(values_);

@@ -69,10 +69,11 @@ std::optional<Expression> ExpressionLowering::lower_as(const ast::Expr& expr, Ty
   if (!result) return std::nullopt;
   const bool fits = result->type == wanted || (wanted == Type::Real && result->type == Type::Int);
   if (!fits) {
-    diagnostics_.error(expr.range, std::string(what) + " must be " +
-                                       (wanted == Type::Real ? std::string("a number")
-                                                             : "of type " + std::string(model::describe(wanted))) +
-                                       ", not " + std::string(model::describe(result->type)));
+    diagnostics_.error(
+        expr.range, std::string(what) + " must be " +
+                        (wanted == Type::Real ? std::string("a number")
+                                              : "of type " + std::string(model::describe(wanted))) +
+                        ", not " + std::string(model::describe(result->type)));
     return std::nullopt;
   }
   return result;
@@ -127,8 +128,8 @@ std::optional<Expression> ExpressionLowering::literal(const ast::Expr& expr) {
     diagnostics_.error(expr.range, too_long_message(*value, max_number_bits_));
     return std::nullopt;
   }
-  return Expression::make_constant(*value, expr.kind == ast::Expr::Kind::Integer ? Type::Int : Type::Real,
-                                   expr.range);
+  return Expression::make_constant(
+      *value, expr.kind == ast::Expr::Kind::Integer ? Type::Int : Type::Real, expr.range);
 }
 
 bool ExpressionLowering::check_operand(const Expression& operand, bool want_number,
@@ -150,8 +151,9 @@ std::optional<Expression> ExpressionLowering::unary(const ast::Expr& expr) {
 }
 
 std::optional<Expression> ExpressionLowering::binary(const ast::Expr& expr) {
-  const auto* found = std::find_if(std::begin(kBinaryOperators), std::end(kBinaryOperators),
-                                   [&](const BinaryOperator& o) { return o.spelling == expr.text; });
+  const auto* found =
+      std::find_if(std::begin(kBinaryOperators), std::end(kBinaryOperators),
+                   [&](const BinaryOperator& o) { return o.spelling == expr.text; });
   auto left = lower_node(expr.operands[0]);
   auto right = lower_node(expr.operands[1]);
   if (!left || !right) return std::nullopt;
@@ -211,7 +213,7 @@ std::optional<Expression> ExpressionLowering::call(const ast::Expr& expr) {
     std::size_t min_args, max_args;
   };
   static constexpr Function kFunctions[] = {
-      {"min", Op::Min, 2, 64}, {"max", Op::Max, 2, 64}, {"floor", Op::Floor, 1, 1},
+      {"min", Op::Min, 2, 64},  {"max", Op::Max, 2, 64},  {"floor", Op::Floor, 1, 1},
       {"ceil", Op::Ceil, 1, 1}, {"pow", Op::Power, 2, 2}, {"mod", Op::Mod, 2, 2},
   };
   const auto* found = std::find_if(std::begin(kFunctions), std::end(kFunctions),

@@ -27,7 +27,9 @@ class ExpressionLowering {
   using Resolve = std::function<std::optional<model::Expression>(const ast::Expr& name)>;
 
   ExpressionLowering(DiagnosticEngine& diagnostics, std::size_t max_number_bits, Resolve resolve)
-      : diagnostics_(diagnostics), max_number_bits_(max_number_bits), resolve_(std::move(resolve)) {}
+      : diagnostics_(diagnostics),
+        max_number_bits_(max_number_bits),
+        resolve_(std::move(resolve)) {}
 
   // nullopt after reporting an error.
   std::optional<model::Expression> lower(const ast::Expr& expr);

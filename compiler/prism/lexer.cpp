@@ -24,20 +24,20 @@ struct Symbol {
 
 // Longest spellings first, so that "<=>" is not read as "<=" then ">".
 constexpr std::array kSymbols = {
-    Symbol{"<=>", TokenKind::Iff},       Symbol{"->", TokenKind::Arrow},
-    Symbol{"=>", TokenKind::Implies},    Symbol{"!=", TokenKind::NotEqual},
-    Symbol{"<=", TokenKind::LessEqual},  Symbol{">=", TokenKind::GreaterEqual},
-    Symbol{"..", TokenKind::DotDot},     Symbol{"(", TokenKind::LeftParen},
-    Symbol{")", TokenKind::RightParen},  Symbol{"[", TokenKind::LeftBracket},
+    Symbol{"<=>", TokenKind::Iff},        Symbol{"->", TokenKind::Arrow},
+    Symbol{"=>", TokenKind::Implies},     Symbol{"!=", TokenKind::NotEqual},
+    Symbol{"<=", TokenKind::LessEqual},   Symbol{">=", TokenKind::GreaterEqual},
+    Symbol{"..", TokenKind::DotDot},      Symbol{"(", TokenKind::LeftParen},
+    Symbol{")", TokenKind::RightParen},   Symbol{"[", TokenKind::LeftBracket},
     Symbol{"]", TokenKind::RightBracket}, Symbol{"{", TokenKind::LeftBrace},
-    Symbol{"}", TokenKind::RightBrace},  Symbol{";", TokenKind::Semicolon},
-    Symbol{":", TokenKind::Colon},       Symbol{",", TokenKind::Comma},
-    Symbol{"'", TokenKind::Prime},       Symbol{"=", TokenKind::Equal},
-    Symbol{"<", TokenKind::Less},        Symbol{">", TokenKind::Greater},
-    Symbol{"+", TokenKind::Plus},        Symbol{"-", TokenKind::Minus},
-    Symbol{"*", TokenKind::Star},        Symbol{"/", TokenKind::Slash},
-    Symbol{"&", TokenKind::And},         Symbol{"|", TokenKind::Or},
-    Symbol{"!", TokenKind::Not},         Symbol{"?", TokenKind::Question},
+    Symbol{"}", TokenKind::RightBrace},   Symbol{";", TokenKind::Semicolon},
+    Symbol{":", TokenKind::Colon},        Symbol{",", TokenKind::Comma},
+    Symbol{"'", TokenKind::Prime},        Symbol{"=", TokenKind::Equal},
+    Symbol{"<", TokenKind::Less},         Symbol{">", TokenKind::Greater},
+    Symbol{"+", TokenKind::Plus},         Symbol{"-", TokenKind::Minus},
+    Symbol{"*", TokenKind::Star},         Symbol{"/", TokenKind::Slash},
+    Symbol{"&", TokenKind::And},          Symbol{"|", TokenKind::Or},
+    Symbol{"!", TokenKind::Not},          Symbol{"?", TokenKind::Question},
 };
 
 class Lexer {
@@ -90,8 +90,8 @@ class Lexer {
     // A run of characters PRISM does not use is one error, not one per byte.
     while (pos_ < text_.size() && !known_start(text_[pos_]))
       ++pos_;
-    diagnostics_.error(range(start, pos_), "unexpected character " + shown(text_[start]) +
-                                               " in a PRISM program");
+    diagnostics_.error(range(start, pos_),
+                       "unexpected character " + shown(text_[start]) + " in a PRISM program");
     return std::nullopt;
   }
 

@@ -44,9 +44,8 @@ void rename(ast::Command& command, const Renaming& renaming) {
 
 const ast::Module* find_base(const std::vector<ast::Module>& modules, const ast::Module& copy,
                              DiagnosticEngine& diagnostics) {
-  const auto base = std::find_if(modules.begin(), modules.end(), [&](const ast::Module& m) {
-    return m.name == *copy.base;
-  });
+  const auto base = std::find_if(modules.begin(), modules.end(),
+                                 [&](const ast::Module& m) { return m.name == *copy.base; });
   if (base == modules.end()) {
     diagnostics.error(copy.base_range, "no module " + quoted(*copy.base) + " to copy");
     return nullptr;

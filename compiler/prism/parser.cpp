@@ -20,11 +20,14 @@ constexpr std::array<std::string_view, 9> kRefusedTypes = {
 
 // Words that cannot name anything.
 constexpr std::array<std::string_view, 30> kKeywords = {
-    "dtmc",     "probabilistic", "mdp",      "nondeterministic", "ctmc",   "const",
-    "int",      "double",        "bool",     "formula",          "global", "module",
-    "endmodule", "label",        "rewards",  "endrewards",       "init",   "endinit",
-    "true",     "false",         "min",      "max",              "floor",  "ceil",
-    "pow",      "mod",           "system",   "endsystem",        "func",   "prob"};
+    "dtmc",      "probabilistic", "mdp",     "nondeterministic",
+    "ctmc",      "const",         "int",     "double",
+    "bool",      "formula",       "global",  "module",
+    "endmodule", "label",         "rewards", "endrewards",
+    "init",      "endinit",       "true",    "false",
+    "min",       "max",           "floor",   "ceil",
+    "pow",       "mod",           "system",  "endsystem",
+    "func",      "prob"};
 
 bool is_keyword(std::string_view word) {
   return std::find(kKeywords.begin(), kKeywords.end(), word) != kKeywords.end();
@@ -57,7 +60,8 @@ class Parser {
 
   void item() {
     const Token& token = peek();
-    if (token.kind != TokenKind::Identifier) fail(token, "expected a declaration, a module or a model type");
+    if (token.kind != TokenKind::Identifier)
+      fail(token, "expected a declaration, a module or a model type");
     const std::string_view word = token.text;
     if (word == "dtmc" || word == "probabilistic") return model_type(ast::ModelType::Dtmc);
     if (word == "mdp" || word == "nondeterministic") return model_type(ast::ModelType::Mdp);
@@ -72,7 +76,10 @@ class Parser {
     if (word == "label") return label();
     if (word == "rewards") return rewards();
     if (word == "init") return init();
-    if (word == "system") fail(token, "'system ... endsystem' is not supported: oasis composes every module in parallel, synchronising on shared actions");
+    if (word == "system")
+      fail(token,
+           "'system ... endsystem' is not supported: oasis composes every module in parallel, "
+           "synchronising on shared actions");
     fail(token, "expected a declaration, a module or a model type, not " + quoted(word));
   }
 
@@ -175,8 +182,10 @@ class Parser {
   void module_body(ast::Module& module) {
     for (;;) {
       if (accept_word("endmodule")) return;
-      if (at(TokenKind::EndOfFile)) fail(peek(), "expected 'endmodule' to end module " + quoted(module.name));
-      if (at_top_level_word()) fail(peek(), "expected 'endmodule' to end module " + quoted(module.name) + " before this");
+      if (at(TokenKind::EndOfFile))
+        fail(peek(), "expected 'endmodule' to end module " + quoted(module.name));
+      if (at_top_level_word())
+        fail(peek(), "expected 'endmodule' to end module " + quoted(module.name) + " before this");
       try {
         if (at(TokenKind::LeftBracket)) {
           module.commands.push_back(command());
@@ -268,7 +277,8 @@ class Parser {
     }
     for (;;) {
       if (accept_word("endrewards")) break;
-      if (at(TokenKind::EndOfFile) || at_top_level_word()) fail(peek(), "expected 'endrewards' to end the reward structure");
+      if (at(TokenKind::EndOfFile) || at_top_level_word())
+        fail(peek(), "expected 'endrewards' to end the reward structure");
       try {
         rewards.items.push_back(reward_item());
       } catch (const SyntaxError&) {
@@ -316,8 +326,8 @@ class Parser {
 
   ast::Expr expression() {
     if (++depth_ > limits::kMaxNesting) {
-      fail(peek(), "expression nested more than " + std::to_string(limits::kMaxNesting) +
-                       " levels deep");
+      fail(peek(),
+           "expression nested more than " + std::to_string(limits::kMaxNesting) + " levels deep");
     }
     ast::Expr result = conditional();
     --depth_;
@@ -369,12 +379,16 @@ class Parser {
   }
 
   ast::Expr relation() {
-    return left_associative(&Parser::sum,
-                            {TokenKind::Equal, TokenKind::NotEqual, TokenKind::Less,
-                             TokenKind::LessEqual, TokenKind::Greater, TokenKind::GreaterEqual});
+    return left_associative(
+        &Parser::sum, {TokenKind::Equal, TokenKind::NotEqual, TokenKind::Less, TokenKind::LessEqual,
+                       TokenKind::Greater, TokenKind::GreaterEqual});
   }
-  ast::Expr sum() { return left_associative(&Parser::product, {TokenKind::Plus, TokenKind::Minus}); }
-  ast::Expr product() { return left_associative(&Parser::unary, {TokenKind::Star, TokenKind::Slash}); }
+  ast::Expr sum() {
+    return left_associative(&Parser::product, {TokenKind::Plus, TokenKind::Minus});
+  }
+  ast::Expr product() {
+    return left_associative(&Parser::unary, {TokenKind::Star, TokenKind::Slash});
+  }
 
   ast::Expr unary() {
     if (!at(TokenKind::Minus)) return primary();
@@ -413,11 +427,12 @@ class Parser {
     const Token& token = advance();
     if (token.text == "true" || token.text == "false") return leaf(ast::Expr::Kind::Bool, token);
     if (!at(TokenKind::LeftParen)) {
-      if (is_keyword(token.text)) fail(token, "expected an expression, found the keyword " + quoted(token.text));
+      if (is_keyword(token.text))
+        fail(token, "expected an expression, found the keyword " + quoted(token.text));
       return leaf(ast::Expr::Kind::Name, token);
     }
     std::string function(token.text);
-    advance();  // (
+    advance();                 // (
     if (function == "func") {  // func(min, a, b) is min(a, b)
       function = std::string(identifier("the function's name").text);
       expect(TokenKind::Comma, "after the function's name");
@@ -436,8 +451,8 @@ class Parser {
 
   void nest() {
     if (++depth_ > limits::kMaxNesting) {
-      fail(peek(), "expression nested more than " + std::to_string(limits::kMaxNesting) +
-                       " levels deep");
+      fail(peek(),
+           "expression nested more than " + std::to_string(limits::kMaxNesting) + " levels deep");
     }
   }
 
@@ -494,8 +509,10 @@ class Parser {
   }
   const Token& identifier(std::string_view what) {
     const Token& token = peek();
-    if (token.kind != TokenKind::Identifier) fail(token, "expected " + std::string(what) + ", found " + describe(token));
-    if (is_keyword(token.text)) fail(token, "the keyword " + quoted(token.text) + " cannot be " + std::string(what));
+    if (token.kind != TokenKind::Identifier)
+      fail(token, "expected " + std::string(what) + ", found " + describe(token));
+    if (is_keyword(token.text))
+      fail(token, "the keyword " + quoted(token.text) + " cannot be " + std::string(what));
     return advance();
   }
 
@@ -519,8 +536,8 @@ class Parser {
   [[nodiscard]] bool at_top_level_word() const {
     if (!at(TokenKind::Identifier)) return false;
     static constexpr std::array<std::string_view, 12> kStarts = {
-        "module", "const",  "formula", "global", "label", "rewards",
-        "init",   "dtmc",   "mdp",     "probabilistic", "nondeterministic", "system"};
+        "module", "const", "formula",       "global",           "label", "rewards", "init",
+        "dtmc",   "mdp",   "probabilistic", "nondeterministic", "system"};
     return std::find(kStarts.begin(), kStarts.end(), peek().text) != kStarts.end();
   }
 

@@ -2,12 +2,12 @@
 // naming of an mdp's choices, renaming, constants, formulas, labels, rewards, initial states)
 // on small programs whose explicit models are worked out by hand, and its errors.
 
-#include <gtest/gtest.h>
-
 #include <algorithm>
 #include <map>
 #include <sstream>
 #include <string>
+
+#include <gtest/gtest.h>
 
 #include "prism/load_program.hpp"
 
@@ -153,9 +153,9 @@ module m
 endmodule
 )");
   ASSERT_TRUE(loaded.model) << loaded.messages;
-  EXPECT_EQ(distribution(*loaded.model, "(x=0)", "[0]"),
-            (std::map<std::string, Rational>{{"(x=1)", Rational(3, 4)},
-                                             {"(x=2)", Rational(1, 4)}}));
+  EXPECT_EQ(
+      distribution(*loaded.model, "(x=0)", "[0]"),
+      (std::map<std::string, Rational>{{"(x=1)", Rational(3, 4)}, {"(x=2)", Rational(1, 4)}}));
 }
 
 TEST(PrismProgram, AnMdpNamesUnlabelledChoicesByPlaceAndRepeatedLabelsByCount) {
@@ -226,8 +226,9 @@ init k <= 1 & !done endinit
 }
 
 TEST(PrismProgram, ConstantsOnTheCommandLineAreCheckedAgainstTheProgram) {
-  const std::string program = "dtmc\nconst int N;\nconst bool b = true;\nmodule m\n"
-                              "  x : [0..N] init 0;\n  [] true -> true;\nendmodule\n";
+  const std::string program =
+      "dtmc\nconst int N;\nconst bool b = true;\nmodule m\n"
+      "  x : [0..N] init 0;\n  [] true -> true;\nendmodule\n";
   EXPECT_TRUE(load(program, "N=3").model);
   EXPECT_NE(load(program).messages.find("constant 'N' has no value"), std::string::npos);
   EXPECT_NE(load(program, "N=1.5").messages.find("constant 'N' is an int"), std::string::npos);
@@ -246,14 +247,17 @@ TEST(PrismProgram, CyclesAndBlowUpsAreErrorsNotHangs) {
                 .messages.find("uses itself"),
             std::string::npos);
   // Each formula uses the one before twice: expanded, the last would have 2^40 nodes.
-  std::string doubling = "dtmc\nmodule m x : [0..1]; [] f40 > 0 -> true; endmodule\nformula f0 = x;\n";
+  std::string doubling =
+      "dtmc\nmodule m x : [0..1]; [] f40 > 0 -> true; endmodule\nformula f0 = x;\n";
   for (int i = 1; i <= 40; ++i)
     doubling += "formula f" + std::to_string(i) + " = f" + std::to_string(i - 1) + " + f" +
                 std::to_string(i - 1) + ";\n";
-  EXPECT_NE(load(doubling).messages.find("nodes once its formulas are expanded"), std::string::npos);
-  EXPECT_NE(load("dtmc\nconst int a = " + std::string(500, '(') + "1" + std::string(500, ')') + ";\n")
-                .messages.find("nested more than"),
+  EXPECT_NE(load(doubling).messages.find("nodes once its formulas are expanded"),
             std::string::npos);
+  EXPECT_NE(
+      load("dtmc\nconst int a = " + std::string(500, '(') + "1" + std::string(500, ')') + ";\n")
+          .messages.find("nested more than"),
+      std::string::npos);
 }
 
 TEST(PrismProgram, ProbabilitiesThatDependOnTheStateAreCheckedInEachState) {
