@@ -29,10 +29,10 @@ BlobSamples sample_blob(const Frame& frame, const CameraMount& mount, const Shir
   samples.lateral_m.reserve(capacity);
   samples.depth_m.reserve(capacity);
   for (int v = blob.box.y; v < blob.box.y + blob.box.height; v += step) {
-    const int* label_row = blob.labels.ptr<int>(v);
+    const int* label_row = blob.labels.ptr<int>(v - blob.box.y);
     const auto* depth_row = frame.depth.ptr<std::uint16_t>(v);
     for (int u = blob.box.x; u < blob.box.x + blob.box.width; u += step) {
-      if (label_row[u] != blob.label) continue;
+      if (label_row[u - blob.box.x] != blob.label) continue;
       ++samples.visited;
       if (depth_row[u] == 0) continue;
       const double depth_m = depth_row[u] * frame.depth_scale_m_per_unit;

@@ -33,9 +33,11 @@ struct SegmentationConfig {
 };
 
 struct ShirtBlob {
-  cv::Mat labels;  // CV_32S component labels of the whole image (shared across blobs)
+  // CV_32S component labels over `box` only (row 0 is image row box.y, column 0 image column
+  // box.x): the pixels of the blob are those labelled `label`.
+  cv::Mat labels;
   int label = 0;
-  cv::Rect box;
+  cv::Rect box;  // full-image pixels
   int area_px = 0;
 };
 

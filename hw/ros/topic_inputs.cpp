@@ -138,31 +138,40 @@ TopicInputs::TopicInputs(RosSession& session, TopicInputOptions options)
   s.options = std::move(options);
   ros::NodeHandle& node = *session.handles().node;
   const RosTopics& topics = s.options.topics;
+  // Without TCP_NODELAY, Nagle's algorithm may hold a message's last segment back until the
+  // previous one is acknowledged: latency for nothing, as each message is written whole. It
+  // matters for the small messages too: the loop waits for a frame's ground truth.
+  const ros::TransportHints no_delay = ros::TransportHints().tcpNoDelay();
   if (s.options.mode == InputMode::kCamera) {
-    s.colour =
-        std::make_unique<message_filters::Subscriber<sensor_msgs::Image>>(node, topics.colour, 2);
-    s.depth =
-        std::make_unique<message_filters::Subscriber<sensor_msgs::Image>>(node, topics.depth, 2);
+    s.colour = std::make_unique<message_filters::Subscriber<sensor_msgs::Image>>(
+        node, topics.colour, 2, no_delay);
+    s.depth = std::make_unique<message_filters::Subscriber<sensor_msgs::Image>>(node, topics.depth,
+                                                                                2, no_delay);
     s.info = std::make_unique<message_filters::Subscriber<sensor_msgs::CameraInfo>>(
-        node, topics.camera_info, 2);
+        node, topics.camera_info, 2, no_delay);
     s.sync = std::make_unique<ImageSync>(*s.colour, *s.depth, *s.info, 10);
     s.sync->registerCallback(&State::on_images, &s);
   } else {
-    s.subscribers.push_back(node.subscribe(topics.detections, 10, &State::on_detections, &s));
+    s.subscribers.push_back(
+        node.subscribe(topics.detections, 10, &State::on_detections, &s, no_delay));
     s.subscribers.push_back(node.subscribe<std_msgs::Float64>(
-        topics.reward, 10, [&s](const std_msgs::Float64ConstPtr& message) {
+        topics.reward, 10,
+        [&s](const std_msgs::Float64ConstPtr& message) {
           std::lock_guard<std::mutex> lock(s.mutex);
           s.reward = message->data;
-        }));
+        },
+        ros::VoidConstPtr(), no_delay));
     s.subscribers.push_back(node.subscribe<std_msgs::Int8>(
-        topics.treat_holder, 10, [&s](const std_msgs::Int8ConstPtr& message) {
+        topics.treat_holder, 10,
+        [&s](const std_msgs::Int8ConstPtr& message) {
           std::lock_guard<std::mutex> lock(s.mutex);
           s.holder = message->data;
-        }));
+        },
+        ros::VoidConstPtr(), no_delay));
   }
   if (s.options.use_odom)
-    s.subscribers.push_back(node.subscribe(topics.odom, 50, &State::on_odometry, &s));
-  s.subscribers.push_back(node.subscribe(topics.ground_truth, 10, &State::on_truth, &s));
+    s.subscribers.push_back(node.subscribe(topics.odom, 50, &State::on_odometry, &s, no_delay));
+  s.subscribers.push_back(node.subscribe(topics.ground_truth, 10, &State::on_truth, &s, no_delay));
 }
 
 TopicInputs::~TopicInputs() {
