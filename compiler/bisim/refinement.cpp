@@ -41,8 +41,10 @@
 #include <algorithm>
 #include <chrono>
 #include <limits>
+#include <stdexcept>
 
 #include "bisim/initial_partition.hpp"
+#include "bisim/unlabelled_refinement.hpp"
 #include "bisim/weights.hpp"
 #include "support/hash.hpp"
 
@@ -641,6 +643,11 @@ class Refiner {
 Partition coarsest_bisimulation(const model::ExplicitModel& model, std::size_t context,
                                 const RefinementOptions& options,
                                 RefinementStatistics* statistics) {
+  if (options.unlabelled_choices) {
+    if (options.epsilon)
+      throw std::invalid_argument("unlabelled choices are compared exactly only");
+    return coarsest_unlabelled_bisimulation(model, context, options, statistics);
+  }
   return Refiner(model, context, options).run(statistics);
 }
 

@@ -38,6 +38,9 @@ struct RefinementOptions {
   // Empty, or one class per state (model::label_classes): states whose respected labels
   // differ are never merged.
   std::vector<std::uint32_t> label_class;
+  // Storm's MDP semantics: a state's choices are a set of distributions, their action names
+  // ignored (unlabelled_refinement.hpp). Exact only. False: Definition 1, action by action.
+  bool unlabelled_choices = false;
 };
 
 struct RefinementStatistics {

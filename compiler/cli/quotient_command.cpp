@@ -32,6 +32,7 @@ struct QuotientOptions {
   bool partition = false;
   std::optional<double> epsilon;
   std::string respect_labels = "all";
+  std::string choices = "labelled";  // --choices: labelled (Definition 1) or unlabelled (Storm)
   unsigned jobs = 0;
   CommonOptions common;
 };
@@ -76,6 +77,7 @@ std::vector<pipeline::DiscreteAbstraction> run_contexts(const model::ExplicitMod
   pipeline::DiscreteOptions refinement;
   refinement.epsilon = options.epsilon;
   refinement.label_class = std::move(label_class);
+  refinement.unlabelled_choices = options.choices == "unlabelled";
   refinement.solve = false;
   refinement.jobs = options.jobs;
   std::mutex output;
@@ -125,6 +127,7 @@ int write_output(const LoadedModel& loaded,
                                           options.partition, options.epsilon);
       // What `verify` must respect to check these partitions.
       json["respected_labels"] = options.respect_labels;
+      json["choices"] = options.choices;
       text = json.dump(2) + "\n";
     } else {
       const model::ExplicitModel quotient =
@@ -153,6 +156,16 @@ int write_output(const LoadedModel& loaded,
 
 int run_quotient(const QuotientOptions& options) {
   // A quotient .aut can be as large as the model, so standard output must be asked for.
+  if (options.choices == "unlabelled" && (options.format == "aut" || options.format == "dot")) {
+    std::cerr << "oasisc: error: --choices unlabelled gives partitions (text, json): the "
+                 "quotient MDP that aut and dot write names its choices by action\n";
+    return 2;
+  }
+  if (options.choices == "unlabelled" && options.epsilon) {
+    std::cerr << "oasisc: error: --choices unlabelled compares probabilities exactly; it does "
+                 "not take --epsilon\n";
+    return 2;
+  }
   if (options.format == "aut" && options.output.empty()) {
     std::cerr << "oasisc: error: --format aut writes files: give one with -o FILE (or -o - "
                  "for standard output)\n";
@@ -213,7 +226,9 @@ CommandRunner add_quotient_command(CLI::App& app) {
       "  oasisc quotient specs/discrete_tracking.oasis --format json --partition -o result.json\n"
       "  oasisc verify specs/discrete_tracking.oasis result.json\n"
       "  oasisc quotient model.aut --format aut -o model.min.aut");
-  command->add_option("file", options->file, "Spec (.oasis), PRISM program (.pm, .nm, .prism) or model (.aut, .tra) file")
+  command
+      ->add_option("file", options->file,
+                   "Spec (.oasis), PRISM program (.pm, .nm, .prism) or model (.aut, .tra) file")
       ->required();
   command->add_option("-c,--context", options->contexts, "Quotient only this context (repeatable)");
   command->add_option("-f,--format", options->format, "Output: text, json, aut or dot")
@@ -227,6 +242,13 @@ CommandRunner add_quotient_command(CLI::App& app) {
                    "Compare probabilities rounded to multiples of E (approximate mode)")
       ->check(real_in(closed(1e-15, 0.5)));
   add_respect_labels_option(*command, options->respect_labels);
+  command
+      ->add_option("--choices", options->choices,
+                   "How the choices of two states are matched: labelled (by action name, "
+                   "Definition 1: what a policy needs) or unlabelled (as sets of distributions, "
+                   "whatever their names: Storm's MDP bisimulation)")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"labelled", "unlabelled"}));
   command
       ->add_option("-j,--jobs", options->jobs, "Contexts quotiented in parallel (default: cores)")
       ->check(whole_in(0, limits::kMaxJobs));

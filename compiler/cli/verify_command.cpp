@@ -144,10 +144,11 @@ int run_verify(const VerifyOptions& options) {
   bool all_hold = true;
   for (const verify::ContextPartition& entry : result->contexts) {
     const std::string& name = model.contexts[entry.context].name;
-    const verify::VerificationResult verdict =
-        verify::verify_partition(model, entry.context, entry.partition, *label_class);
+    const verify::VerificationResult verdict = verify::verify_partition(
+        model, entry.context, entry.partition, *label_class, result->unlabelled_choices);
     if (verdict.ok()) {
-      std::cout << "context " << name << ": bisimulation and coarsest ("
+      std::cout << "context " << name << ": bisimulation"
+                << (result->unlabelled_choices ? " (unlabelled choices)" : "") << " and coarsest ("
                 << entry.partition.num_blocks
                 << (entry.partition.num_blocks == 1 ? " block)\n" : " blocks)\n");
       continue;
@@ -207,7 +208,9 @@ CommandRunner add_verify_command(CLI::App& app) {
       "  oasisc verify specs/discrete_tracking.oasis out/discrete_tracking.bin\n"
       "  oasisc quotient specs/discrete_tracking.oasis --format json --partition -o r.json\n"
       "  oasisc verify specs/discrete_tracking.oasis r.json");
-  command->add_option("model", options->model, "Spec (.oasis), PRISM program (.pm, .nm, .prism) or model (.aut, .tra) file")
+  command
+      ->add_option("model", options->model,
+                   "Spec (.oasis), PRISM program (.pm, .nm, .prism) or model (.aut, .tra) file")
       ->required();
   command
       ->add_option(

@@ -19,6 +19,7 @@ DiscreteAbstraction abstract_one(const model::ExplicitModel& model, std::size_t 
   bisim::RefinementOptions refinement;
   refinement.epsilon = options.epsilon;
   refinement.label_class = options.label_class;
+  refinement.unlabelled_choices = options.unlabelled_choices;
   if (options.progress) {
     refinement.progress = [&options, context](const bisim::RefinementProgress& progress) {
       options.progress(context, progress);

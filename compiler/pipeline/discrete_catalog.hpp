@@ -31,6 +31,8 @@ struct DiscreteOptions {
   std::function<void(std::size_t context, const bisim::RefinementProgress&)> progress;
   // The states' classes of respected labels (model::label_classes); empty: none respected.
   std::vector<std::uint32_t> label_class;
+  // Storm's MDP semantics (bisim::RefinementOptions::unlabelled_choices); partitions only.
+  bool unlabelled_choices = false;
 };
 
 struct DiscreteAbstraction {

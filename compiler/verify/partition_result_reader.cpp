@@ -44,6 +44,12 @@ class Reader {
         fail("\"respected_labels\" is not a string (all, none, or label names)");
       result.respected_labels = document["respected_labels"].get<std::string>();
     }
+    if (document.contains("choices")) {
+      const json& choices = document["choices"];
+      if (!choices.is_string() || (choices != "labelled" && choices != "unlabelled"))
+        fail("\"choices\" is neither \"labelled\" nor \"unlabelled\"");
+      result.unlabelled_choices = choices == "unlabelled";
+    }
     std::vector<bool> seen(model_.contexts.size(), false);
     for (std::size_t i = 0; i < contexts.size(); ++i) {
       ContextPartition entry = read_context(contexts[i], i);

@@ -26,6 +26,7 @@ struct PartitionResult {
   std::vector<ContextPartition> contexts;  // in the order of the file
   bool approximate = false;                // the file says "exact": false (--epsilon)
   std::string respected_labels = "all";    // "respected_labels" (quotient --respect-labels)
+  bool unlabelled_choices = false;         // "choices": "unlabelled" (quotient --choices)
 };
 
 // Reads `path`. States are names as model.states.name() prints them, or integer indices.

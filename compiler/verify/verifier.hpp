@@ -16,8 +16,10 @@ namespace oasis::verify {
 // rationals.
 // `label_class`: empty, or the states' classes of respected labels (model::label_classes),
 // which no block may mix.
+// `unlabelled_choices`: Storm's MDP semantics (unlabelled_check.hpp) instead of Definition 1.
 VerificationResult verify_partition(const model::ExplicitModel& model, std::size_t context,
                                     const model::Partition& partition,
-                                    const std::vector<std::uint32_t>& label_class = {});
+                                    const std::vector<std::uint32_t>& label_class = {},
+                                    bool unlabelled_choices = false);
 
 }  // namespace oasis::verify
