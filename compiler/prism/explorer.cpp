@@ -50,6 +50,7 @@ class Explorer {
       add_initial_states();
       for (StateIndex s = 0; s < store_.size(); ++s) {
         store_.unpack(s, valuation_);
+        current_ = s;
         explore_state(s);
         if (options_.progress && (s & 0xFFFFU) == 0xFFFFU) options_.progress(store_.size(), s + 1);
       }
@@ -246,7 +247,11 @@ class Explorer {
   // source state, as in PRISM.
   void outcomes(const Choice& choice, std::size_t i, ValueId probability) {
     if (i == choice.count) {
-      row_.emplace_back(intern(stack_[i], choice_commands_[choice.first]->range), probability);
+      // A self-loop (`true`, an update that changes nothing) needs no lookup in the store.
+      const StateIndex target = stack_[i] == valuation_
+                                    ? current_
+                                    : intern(stack_[i], choice_commands_[choice.first]->range);
+      row_.emplace_back(target, probability);
       return;
     }
     const Command& command = *choice_commands_[choice.first + i];
@@ -499,7 +504,8 @@ class Explorer {
   const ExploreOptions& options_;
   model::StateStore store_;
   RationalPool values_;
-  std::vector<std::int64_t> valuation_;
+  std::vector<std::int64_t> valuation_;  // of the state being explored, current_
+  StateIndex current_ = 0;
   std::vector<std::vector<std::int64_t>> stack_;  // successors under construction (outcomes())
   std::vector<Rational> sums_;                    // per command of a choice (outcomes())
   std::vector<std::uint64_t> key_;
