@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "model/state_store.hpp"
+#include "model/valuation_text.hpp"
 #include "support/double_range.hpp"
 #include "support/text.hpp"
 
@@ -221,12 +222,9 @@ class Explorer {
 
   void apply(const Update& update) {
     const std::int64_t value = evaluate([&] { return evaluate_int(update.value, valuation_); });
-    const DiscreteVariable& var = ir_.variables[update.variable];
-    if (value < var.low || value > var.high) {
-      diagnostics_.error(update.range,
-                         "update sets " + quoted(var.name) + " to " + std::to_string(value) +
-                             ", outside its range [" + std::to_string(var.low) + " .. " +
-                             std::to_string(var.high) + "], in state " + state_text());
+    if (const std::string problem = range_violation(ir_.variables[update.variable], value);
+        !problem.empty()) {
+      diagnostics_.error(update.range, problem + ", in state " + state_text());
       throw ExplorationFailed{};
     }
     successor_[update.variable] = value;
@@ -263,12 +261,7 @@ class Explorer {
 
   [[nodiscard]] std::string state_text() const {
     if (ir_.kind == ModelKind::Explicit) return quoted(ir_.state_names[valuation_[0]]);
-    std::string text = "(";
-    for (std::size_t v = 0; v < ir_.variables.size(); ++v) {
-      if (v > 0) text += ',';
-      text += ir_.variables[v].name + '=' + std::to_string(valuation_[v]);
-    }
-    return text + ')';
+    return valuation_text(ir_.variables, valuation_);
   }
 
   ExplicitModel build_model() {

@@ -8,6 +8,7 @@
 #include "formats/distribution_collector.hpp"
 #include "formats/prism_reader.hpp"
 #include "model/state_store.hpp"
+#include "model/valuation_text.hpp"
 #include "support/double_range.hpp"
 #include "support/text.hpp"
 
@@ -303,12 +304,10 @@ class Explorer {
   void apply(const model::Update& update, std::vector<std::int64_t>& successor) {
     const std::int64_t value =
         evaluate([&] { return model::evaluate_int(update.value, valuation_); });
-    const model::DiscreteVariable& var = program_.variables[update.variable];
-    if (value < var.low || value > var.high) {
-      diagnostics_.error(update.range,
-                         "update sets " + quoted(var.name) + " to " + std::to_string(value) +
-                             ", outside its range [" + std::to_string(var.low) + ".." +
-                             std::to_string(var.high) + "], in state " + state_text());
+    if (const std::string problem =
+            model::range_violation(program_.variables[update.variable], value);
+        !problem.empty()) {
+      diagnostics_.error(update.range, problem + ", in state " + state_text());
       throw ExplorationFailed{};
     }
     successor[update.variable] = value;
@@ -491,12 +490,7 @@ class Explorer {
   }
 
   [[nodiscard]] std::string state_text() const {
-    std::string text = "(";
-    for (std::size_t v = 0; v < program_.variables.size(); ++v) {
-      if (v > 0) text += ',';
-      text += program_.variables[v].name + '=' + std::to_string(valuation_[v]);
-    }
-    return text + ')';
+    return model::valuation_text(program_.variables, valuation_);
   }
 
   const Program& program_;
