@@ -10,6 +10,7 @@
 #include "cli/commands.hpp"
 #include "geom/relevance.hpp"
 #include "model/statistics.hpp"
+#include "prism/load_program.hpp"
 
 namespace oasis::cli {
 namespace {
@@ -21,7 +22,8 @@ struct InfoOptions {
 };
 
 const char* kind_name(const LoadedModel& loaded) {
-  if (!loaded.ir) return "imported";
+  // A PRISM program is explored like a factored spec; .aut and .tra files are imported.
+  if (!loaded.ir) return prism::is_program_path(loaded.path) ? "prism" : "imported";
   switch (loaded.ir->kind) {
     case model::ModelKind::Explicit:
       return "explicit";
