@@ -18,6 +18,9 @@ struct Expr {
   std::string text;
   std::vector<Expr> operands;
   SourceRange range;
+  // Of the tree: a chain such as 1+1+...+1 is as deep as it is long, and every later pass
+  // recurses over it, so the parser bounds it like parenthesis nesting.
+  int depth = 1;
 };
 
 enum class ConstantType { Int, Double, Bool };

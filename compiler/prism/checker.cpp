@@ -29,6 +29,13 @@ enum class Scope { Constants, State };
 
 constexpr std::int64_t kGlobal = -1;
 
+// How deeply formulas may use one another: a lowered expression is at most this many times
+// as deep as the parser lets one expression be (limits::kMaxNesting).
+constexpr int kMaxFormulaNesting = 24;
+
+// Exploration recurses once per module taking part in a synchronised choice.
+constexpr std::size_t kMaxModules = 1024;
+
 class Checker {
  public:
   Checker(const ast::Program& tree, std::string name, DiagnosticEngine& diagnostics,
@@ -41,6 +48,11 @@ class Checker {
     const std::size_t errors_before = diagnostics_.error_count();
     check_model_type();
     modules_ = expand_renamed_modules(tree_.modules, diagnostics_);
+    if (modules_.size() > kMaxModules) {
+      diagnostics_.error(modules_[kMaxModules].range,
+                         "more than " + std::to_string(kMaxModules) + " modules");
+      return std::nullopt;
+    }
     declare_constants_and_formulas();
     overrides_ = read_constant_overrides(options_.constants, diagnostics_);
     apply_overrides();
@@ -138,8 +150,17 @@ class Checker {
       case ConstantState::Status::Pending:
         break;
     }
+    // Constants are evaluated in order, so only forward references nest; bound them.
+    if (evaluating_constants_ >= limits::kMaxNesting) {
+      diagnostics_.error(constant.range, "constants defined in terms of later ones more than " +
+                                             std::to_string(limits::kMaxNesting) + " deep");
+      state.status = ConstantState::Status::Failed;
+      return std::nullopt;
+    }
     state.status = ConstantState::Status::Evaluating;
+    ++evaluating_constants_;
     std::optional<Expression> value = compute_constant(constant, state.given);
+    --evaluating_constants_;
     if (constants_[i].status == ConstantState::Status::Failed) return std::nullopt;
     constants_[i].status = value ? ConstantState::Status::Done : ConstantState::Status::Failed;
     constants_[i].value = value;
@@ -246,6 +267,7 @@ class Checker {
     bool expanding = false;
     bool failed = false;
     std::optional<Expression> value;  // lowered with variables
+    int level = 0;                    // 1 + the deepest level of the formulas it uses
   };
 
   std::optional<Expression> formula_value(std::size_t i, const ast::Expr& use, Scope scope) {
@@ -257,25 +279,53 @@ class Checker {
       state.failed = true;
       return std::nullopt;
     }
-    if (!state.value) {
-      state.expanding = true;
-      ExpressionLowering lowering(
-          diagnostics_, options_.max_number_bits,
-          [this](const ast::Expr& name) { return resolve(name, Scope::State); });
-      auto value = lowering.lower(formula.value);
-      formulas_[i].expanding = false;
-      if (!value) {
-        formulas_[i].failed = true;
-        return std::nullopt;
-      }
-      formulas_[i].value = std::move(value);
-    }
+    const int outer_level = used_formula_level_;
+    if (!state.value && !expand_formula(i)) return std::nullopt;
+    // The expression being lowered now reaches as deep as this formula does.
+    used_formula_level_ = std::max(outer_level, formulas_[i].level);
     if (scope == Scope::Constants && formulas_[i].value->depends_on_state()) {
       diagnostics_.error(use.range, "formula " + quoted(formula.name) +
                                         " depends on the state; the value here must be constant");
       return std::nullopt;
     }
     return formulas_[i].value;
+  }
+
+  // Lowers formula i once. Formulas expand into one another, so the depth of a lowered
+  // expression grows with how deeply they nest: that is bounded (kMaxFormulaNesting), and so
+  // is the depth of every later pass over the expression (evaluation recurses).
+  bool expand_formula(std::size_t i) {
+    const ast::Formula& formula = tree_.formulas[i];
+    if (++expanding_formulas_ > kMaxFormulaNesting) {
+      diagnostics_.error(formula.range, "formulas nested more than " +
+                                            std::to_string(kMaxFormulaNesting) +
+                                            " deep, counted from formula " + quoted(formula.name));
+      --expanding_formulas_;
+      formulas_[i].failed = true;
+      return false;
+    }
+    formulas_[i].expanding = true;
+    used_formula_level_ = 0;
+    ExpressionLowering lowering(
+        diagnostics_, options_.max_number_bits,
+        [this](const ast::Expr& name) { return resolve(name, Scope::State); });
+    auto value = lowering.lower(formula.value);
+    --expanding_formulas_;
+    FormulaState& state = formulas_[i];
+    state.expanding = false;
+    state.level = used_formula_level_ + 1;
+    if (value && state.level > kMaxFormulaNesting) {
+      diagnostics_.error(formula.range, "formulas nested more than " +
+                                            std::to_string(kMaxFormulaNesting) +
+                                            " deep, counted from formula " + quoted(formula.name));
+      value.reset();
+    }
+    if (!value) {
+      state.failed = true;
+      return false;
+    }
+    state.value = std::move(value);
+    return true;
   }
 
   // --- Variables -------------------------------------------------------------------------
@@ -584,6 +634,9 @@ class Checker {
   std::vector<ConstantOverride> overrides_;
   std::vector<ConstantState> constants_;
   std::vector<FormulaState> formulas_;
+  int used_formula_level_ = 0;       // the deepest formula level the current lowering uses
+  int expanding_formulas_ = 0;       // formulas being lowered, one inside another
+  int evaluating_constants_ = 0;     // constants being evaluated, one inside another
   std::vector<bool> boolean_;        // per variable
   std::vector<std::int64_t> owner_;  // per variable: its module, or kGlobal
   std::unordered_map<std::string, std::uint32_t> action_index_;

@@ -1,5 +1,6 @@
 #include "prism/explorer.hpp"
 
+#include <algorithm>
 #include <string>
 #include <unordered_map>
 #include <utility>
@@ -23,6 +24,8 @@ struct ExplorationFailed {};
 
 // More choices than this in one state means a synchronisation whose combinations explode.
 constexpr std::size_t kMaxChoicesPerState = 100'000;
+// Nor more outcomes than this in one choice (the product of its commands' updates).
+constexpr std::uint64_t kMaxOutcomesPerChoice = 1'000'000;
 // `init ... endinit` is solved by trying every valuation; past this many it is refused.
 constexpr std::uint64_t kMaxInitCandidates = std::uint64_t{1} << 24;
 
@@ -281,12 +284,28 @@ class Explorer {
 
   void start_outcomes(const Choice& choice) {
     row_.clear();
+    check_outcome_count(choice);
     if (stack_.size() < choice.count + 1) {
       stack_.resize(choice.count + 1);
       sums_.resize(choice.count + 1);
     }
     stack_[0] = valuation_;
     outcomes(choice, 0, RationalPool::kOne);
+  }
+
+  // The outcomes of a synchronised choice multiply: refuse a product that would not end.
+  void check_outcome_count(const Choice& choice) {
+    std::uint64_t outcomes = 1;
+    for (std::uint32_t i = 0; i < choice.count; ++i) {
+      outcomes *= std::max<std::size_t>(1, choice_commands_[choice.first + i]->updates.size());
+      if (outcomes > kMaxOutcomesPerChoice) {
+        diagnostics_.error(choice_commands_[choice.first]->range,
+                           "in state " + state_text() + " the synchronised commands of action " +
+                               quoted(program_.actions.at(*choice.action)) + " have more than " +
+                               std::to_string(kMaxOutcomesPerChoice) + " combined outcomes");
+        throw ExplorationFailed{};
+      }
+    }
   }
 
   // A probability that depends on the state, evaluated and checked in this one.

@@ -340,8 +340,11 @@ class Parser {
     ast::Expr then = expression();
     expect(TokenKind::Colon, "between the two branches of '? :'");
     ast::Expr otherwise = expression();
-    return node(ast::Expr::Kind::IfThenElse, "?",
-                {std::move(condition), std::move(then), std::move(otherwise)});
+    std::vector<ast::Expr> operands;
+    operands.push_back(std::move(condition));
+    operands.push_back(std::move(then));
+    operands.push_back(std::move(otherwise));
+    return node(ast::Expr::Kind::IfThenElse, "?", std::move(operands));
   }
 
   ast::Expr implication() {
@@ -349,7 +352,7 @@ class Parser {
     if (!at(TokenKind::Implies)) return left;
     advance();
     ast::Expr right = implication();  // a => b => c is a => (b => c)
-    return node(ast::Expr::Kind::Binary, "=>", {std::move(left), std::move(right)});
+    return node(ast::Expr::Kind::Binary, "=>", pair_of(std::move(left), std::move(right)));
   }
 
   template <typename Next>
@@ -358,7 +361,7 @@ class Parser {
     while (std::find(operators.begin(), operators.end(), peek().kind) != operators.end()) {
       const std::string op(advance().text);
       ast::Expr right = (this->*next)();
-      left = node(ast::Expr::Kind::Binary, op, {std::move(left), std::move(right)});
+      left = node(ast::Expr::Kind::Binary, op, pair_of(std::move(left), std::move(right)));
     }
     return left;
   }
@@ -373,7 +376,7 @@ class Parser {
     nest();
     ast::Expr operand = negation();
     --depth_;
-    ast::Expr result = node(ast::Expr::Kind::Unary, "!", {std::move(operand)});
+    ast::Expr result = node(ast::Expr::Kind::Unary, "!", one_of(std::move(operand)));
     result.range = span(op.range, result.range);
     return result;
   }
@@ -396,7 +399,7 @@ class Parser {
     nest();
     ast::Expr operand = unary();
     --depth_;
-    ast::Expr result = node(ast::Expr::Kind::Unary, "-", {std::move(operand)});
+    ast::Expr result = node(ast::Expr::Kind::Unary, "-", one_of(std::move(operand)));
     result.range = span(op.range, result.range);
     return result;
   }
@@ -446,6 +449,9 @@ class Parser {
     --depth_;
     const Token& close = expect(TokenKind::RightParen, "to close the function's arguments");
     call.range = span(token.range, close.range);
+    for (const ast::Expr& operand : call.operands)
+      call.depth = std::max(call.depth, operand.depth + 1);
+    check_depth(call);
     return call;
   }
 
@@ -464,13 +470,37 @@ class Parser {
     return expr;
   }
 
-  static ast::Expr node(ast::Expr::Kind kind, std::string op, std::vector<ast::Expr> operands) {
+  ast::Expr node(ast::Expr::Kind kind, std::string op, std::vector<ast::Expr> operands) {
     ast::Expr expr;
     expr.kind = kind;
     expr.text = std::move(op);
     expr.range = span(operands.front().range, operands.back().range);
+    for (const ast::Expr& operand : operands)
+      expr.depth = std::max(expr.depth, operand.depth + 1);
     expr.operands = std::move(operands);
+    check_depth(expr);
     return expr;
+  }
+
+  // An initializer list would copy its elements, making a long chain quadratic.
+  static std::vector<ast::Expr> pair_of(ast::Expr left, ast::Expr right) {
+    std::vector<ast::Expr> operands;
+    operands.reserve(2);
+    operands.push_back(std::move(left));
+    operands.push_back(std::move(right));
+    return operands;
+  }
+  static std::vector<ast::Expr> one_of(ast::Expr operand) {
+    std::vector<ast::Expr> operands;
+    operands.push_back(std::move(operand));
+    return operands;
+  }
+
+  void check_depth(const ast::Expr& expr) {
+    if (expr.depth <= limits::kMaxNesting) return;
+    diagnostics_.error(expr.range, "expression is too long or nested too deeply (the limit is " +
+                                       std::to_string(limits::kMaxNesting) + " levels)");
+    throw SyntaxError{};
   }
 
   // --- Tokens ------------------------------------------------------------------------------

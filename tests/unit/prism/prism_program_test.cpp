@@ -246,10 +246,10 @@ TEST(PrismProgram, CyclesAndBlowUpsAreErrorsNotHangs) {
                  "endmodule\n")
                 .messages.find("uses itself"),
             std::string::npos);
-  // Each formula uses the one before twice: expanded, the last would have 2^40 nodes.
+  // Each formula uses the one before twice: expanded, the last would have 2^22 nodes.
   std::string doubling =
-      "dtmc\nmodule m x : [0..1]; [] f40 > 0 -> true; endmodule\nformula f0 = x;\n";
-  for (int i = 1; i <= 40; ++i)
+      "dtmc\nmodule m x : [0..1]; [] f22 > 0 -> true; endmodule\nformula f0 = x;\n";
+  for (int i = 1; i <= 22; ++i)
     doubling += "formula f" + std::to_string(i) + " = f" + std::to_string(i - 1) + " + f" +
                 std::to_string(i - 1) + ";\n";
   EXPECT_NE(load(doubling).messages.find("nodes once its formulas are expanded"),
@@ -258,6 +258,44 @@ TEST(PrismProgram, CyclesAndBlowUpsAreErrorsNotHangs) {
       load("dtmc\nconst int a = " + std::string(500, '(') + "1" + std::string(500, ')') + ";\n")
           .messages.find("nested more than"),
       std::string::npos);
+}
+
+// Inputs whose every later pass would recurse as deep as they are long, or never end: each is
+// a located error (the fuzz target feeds such inputs too).
+TEST(PrismProgram, DepthAndSizeAreBoundedWhereTheyWouldOverflowTheStack) {
+  const std::string module = "module m x : [0..1]; [] true -> true; endmodule\n";
+  std::string sum = "dtmc\nconst int a = 1";
+  for (int i = 0; i < 100000; ++i)
+    sum += "+1";
+  EXPECT_NE(load(sum + ";\n" + module).messages.find("too long or nested too deeply"),
+            std::string::npos);
+
+  std::string formulas = "dtmc\n" + module + "formula g0 = x;\n";
+  for (int i = 1; i <= 40; ++i)
+    formulas += "formula g" + std::to_string(i) + " = g" + std::to_string(i - 1) + " + 1;\n";
+  formulas += "label \"deep\" = g40 > 0;\n";
+  EXPECT_NE(load(formulas).messages.find("formulas nested more than 24 deep"), std::string::npos);
+
+  std::string forward = "dtmc\n" + module;
+  for (int i = 0; i < 300; ++i)
+    forward += "const int c" + std::to_string(i) + " = c" + std::to_string(i + 1) + " + 1;\n";
+  forward += "const int c300 = 0;\n";
+  EXPECT_NE(load(forward).messages.find("in terms of later ones more than 200 deep"),
+            std::string::npos);
+
+  std::string many = "mdp\n";
+  for (int i = 0; i < 1100; ++i)
+    many += "module m" + std::to_string(i) + " endmodule\n";
+  EXPECT_NE(load(many).messages.find("more than 1024 modules"), std::string::npos);
+
+  // 30 modules that synchronise on `a`, each with two outcomes: 2^30 combined.
+  std::string wide = "mdp\n";
+  for (int i = 0; i < 30; ++i) {
+    const std::string v = "v" + std::to_string(i);
+    wide += "module n" + std::to_string(i) + " " + v + " : [0..1]; [a] true -> 1/2 : (" + v +
+            "'=0) + 1/2 : (" + v + "'=1); endmodule\n";
+  }
+  EXPECT_NE(load(wide).messages.find("combined outcomes"), std::string::npos);
 }
 
 TEST(PrismProgram, ProbabilitiesThatDependOnTheStateAreCheckedInEachState) {
