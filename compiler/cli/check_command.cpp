@@ -62,7 +62,9 @@ CommandRunner add_check_command(CLI::App& app) {
       "problems that show only in some state, such as a variable leaving its range, are\n"
       "found too. Exit status: 0 when every file is sound, 1 otherwise.\n\n"
       "Example:\n  oasisc check specs/*.oasis");
-  command->add_option("files", options->files, "Spec (.oasis), PRISM program (.pm, .nm, .prism) or model (.aut, .tra) files")
+  command
+      ->add_option("files", options->files,
+                   "Spec (.oasis), PRISM program (.pm, .nm, .prism) or model (.aut, .tra) files")
       ->required();
   command->add_flag("-q,--quiet", options->quiet, "Print only problems");
   add_common_options(*command, options->common);

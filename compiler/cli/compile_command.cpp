@@ -361,7 +361,9 @@ CommandRunner add_compile_command(CLI::App& app) {
       "  oasisc compile specs/go1_treat.oasis -o go1 --format bin,json,cpp,svg --epsilon 0.1\n"
       "  oasisc compile specs/go1_treat.oasis -o go1 --with-transitions   # rows for analysis\n"
       "  oasisc verify specs/go1_treat.oasis go1/go1_treat.json");
-  command->add_option("spec", options->spec, "Spec (.oasis), PRISM program (.pm, .nm, .prism) or model (.aut, .tra) file")
+  command
+      ->add_option("spec", options->spec,
+                   "Spec (.oasis), PRISM program (.pm, .nm, .prism) or model (.aut, .tra) file")
       ->required();
   command->add_option("-o,--output", options->output,
                       "Output directory (default: the spec's file name without extension); "

@@ -82,7 +82,9 @@ CommandRunner add_export_command(CLI::App& app) {
       "Examples:\n"
       "  oasisc export specs/discrete_tracking.oasis --context object_at_s1 --format aut -o t.aut\n"
       "  oasisc export model.aut --format prism -o model   # writes model.tra, model.lab, ...");
-  command->add_option("file", options->file, "Spec (.oasis), PRISM program (.pm, .nm, .prism) or model (.aut, .tra) file")
+  command
+      ->add_option("file", options->file,
+                   "Spec (.oasis), PRISM program (.pm, .nm, .prism) or model (.aut, .tra) file")
       ->required();
   command->add_option("-c,--context", options->context,
                       "Context to export (needed when the model has several)");

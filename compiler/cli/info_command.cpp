@@ -282,7 +282,9 @@ CommandRunner add_info_command(CLI::App& app) {
       "ignored_variables; docs/geometry.md); their states come from the geometry layer.\n\n"
       "Examples:\n  oasisc info specs/discrete_tracking.oasis\n"
       "  oasisc info specs/discrete_tracking.oasis --json | jq '.contexts[].name'");
-  command->add_option("file", options->file, "Spec (.oasis), PRISM program (.pm, .nm, .prism) or model (.aut, .tra) file")
+  command
+      ->add_option("file", options->file,
+                   "Spec (.oasis), PRISM program (.pm, .nm, .prism) or model (.aut, .tra) file")
       ->required();
   command->add_flag("--json", options->json,
                     "Print JSON (keys: model, states, actions, contexts[])");
