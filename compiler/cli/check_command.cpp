@@ -25,6 +25,9 @@ std::string describe_loaded(const LoadedModel& loaded) {
     if (ir.kind == model::ModelKind::Continuous) {
       text += std::to_string(ir.continuous.size()) + " continuous variables, ";
     }
+  } else if (loaded.model) {
+    text = "model '" + loaded.model->name + "' (" + (loaded.prism_program ? "prism" : "imported") +
+           "), ";
   }
   if (loaded.model) text += std::to_string(loaded.model->num_states()) + " states, ";
   const std::size_t contexts =

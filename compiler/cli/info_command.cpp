@@ -10,7 +10,6 @@
 #include "cli/commands.hpp"
 #include "geom/relevance.hpp"
 #include "model/statistics.hpp"
-#include "prism/load_program.hpp"
 
 namespace oasis::cli {
 namespace {
@@ -23,7 +22,7 @@ struct InfoOptions {
 
 const char* kind_name(const LoadedModel& loaded) {
   // A PRISM program is explored like a factored spec; .aut and .tra files are imported.
-  if (!loaded.ir) return prism::is_program_path(loaded.path) ? "prism" : "imported";
+  if (!loaded.ir) return loaded.prism_program ? "prism" : "imported";
   switch (loaded.ir->kind) {
     case model::ModelKind::Explicit:
       return "explicit";

@@ -8,6 +8,7 @@
 #include "model/explorer.hpp"
 #include "oasis/rt/spec_hash.hpp"
 #include "policy/solvability.hpp"
+#include "prism/imported_catalog.hpp"
 #include "prism/load_program.hpp"
 
 namespace oasis::cli {
@@ -18,10 +19,7 @@ void print_progress(std::uint64_t found, std::uint64_t explored) {
             << std::flush;
 }
 
-std::optional<model::ExplicitModel> load_prism_program(const std::string& path,
-                                                       SourceManager& sources,
-                                                       DiagnosticEngine& diagnostics,
-                                                       const LoadOptions& options) {
+prism::LoadOptions prism_load_options(const LoadOptions& options) {
   prism::LoadOptions prism_options;
   prism_options.constants = options.constants;
   // The option's check has parsed it already (common_options.cpp).
@@ -31,9 +29,38 @@ std::optional<model::ExplicitModel> load_prism_program(const std::string& path,
   prism_options.max_number_bits = options.max_number_bits;
   prism_options.explore.max_states = options.max_states;
   if (options.progress) prism_options.explore.progress = print_progress;
-  auto model = prism::load_program(path, sources, diagnostics, prism_options);
+  return prism_options;
+}
+
+std::optional<model::ExplicitModel> load_prism_program(const std::string& path,
+                                                       SourceManager& sources,
+                                                       DiagnosticEngine& diagnostics,
+                                                       const LoadOptions& options) {
+  auto model = prism::load_program(path, sources, diagnostics, prism_load_options(options));
   if (options.progress) std::cerr << "\r\033[K" << std::flush;
   return model;
+}
+
+// A spec that imports a PRISM program: the program explored, with the spec's catalog. The
+// hash covers the spec's bytes followed by the program's, so that a catalog compiled from them
+// is stale when either changes.
+bool load_imported_program(LoadedModel& loaded, FileId spec_file, SourceManager& sources,
+                           DiagnosticEngine& diagnostics, const LoadOptions& options) {
+  const FileId program_file = sources.num_files();
+  loaded.model = prism::load_imported_catalog(*loaded.ir, loaded.path, sources, diagnostics,
+                                              prism_load_options(options));
+  if (options.progress) std::cerr << "\r\033[K" << std::flush;
+  if (!loaded.model) return false;
+  std::string both(sources.file(spec_file).text());
+  both += sources.file(program_file).text();
+  loaded.source_hash = rt::spec_hash(both);
+  if (const auto reason = policy::unsolvable_reason(*loaded.model)) {
+    diagnostics.error(loaded.ir->objective_range, *reason);
+    return false;
+  }
+  loaded.ir.reset();  // what the spec says is in the model now
+  loaded.prism_program = true;
+  return true;
 }
 
 }  // namespace
@@ -46,6 +73,7 @@ std::optional<LoadedModel> load_model(const std::string& path, SourceManager& so
   const FileId input = sources.num_files();
   const auto hash_input = [&] { loaded.source_hash = rt::spec_hash(sources.file(input).text()); };
   if (prism::is_program_path(path)) {
+    loaded.prism_program = true;
     loaded.model = load_prism_program(path, sources, diagnostics, options);
     if (!loaded.model) return std::nullopt;
     hash_input();
@@ -70,6 +98,10 @@ std::optional<LoadedModel> load_model(const std::string& path, SourceManager& so
       {.max_bytes = options.max_spec_bytes, .max_number_bits = options.max_number_bits});
   if (!loaded.ir) return std::nullopt;
   hash_input();
+  if (loaded.ir->imported) {
+    if (!load_imported_program(loaded, input, sources, diagnostics, options)) return std::nullopt;
+    return loaded;
+  }
   if (!options.explore || loaded.ir->kind == model::ModelKind::Continuous) return loaded;
 
   model::ExploreOptions explore_options{.max_states = options.max_states, .progress = {}};

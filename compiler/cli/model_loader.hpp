@@ -27,8 +27,9 @@ struct LoadOptions {
 
 struct LoadedModel {
   std::string path;
-  std::optional<model::ModelIR> ir;           // .oasis specs only
+  std::optional<model::ModelIR> ir;           // .oasis specs that write their model
   std::optional<model::ExplicitModel> model;  // discrete specs, PRISM programs and imports
+  bool prism_program = false;                 // a PRISM program, given or imported by the spec
   // rt::spec_hash of the bytes the front end or the reader parsed, read once: a catalog
   // remembers which spec it was compiled from by it.
   std::uint64_t source_hash = 0;

@@ -157,6 +157,9 @@ struct MdpDecl {
 struct ContextDecl {
   Name name;
   bool is_base = false;  // `context c = base;`
+  // `context c = rewards "time";`: a reward structure of the imported program, its name
+  // without the quotes (the range covers them).
+  std::optional<Name> reward_structure;
   Behaviour behaviour;
   SourceRange range;
 };
@@ -207,9 +210,20 @@ struct CatalogDecl {
   SourceRange range;
 };
 
+// `import "robot.nm" { const N = 4; discount 0.9; }`: a PRISM program in place of an `mdp`
+// block. The block is optional.
+struct ImportDecl {
+  Name path;  // as written, without the quotes
+  std::vector<ConstDecl> constants;
+  std::optional<Setting> discount;
+  std::optional<Setting> horizon;
+  SourceRange range;
+};
+
 struct SpecFile {
   FileId file = 0;
   std::vector<MdpDecl> mdps;
+  std::vector<ImportDecl> imports;
   std::vector<CatalogDecl> catalogs;
 };
 

@@ -7,6 +7,8 @@
 #include "frontend/behaviour_lowering.hpp"
 #include "frontend/catalog_checker.hpp"
 #include "frontend/expression_checker.hpp"
+#include "frontend/import_checker.hpp"
+#include "frontend/objective_checker.hpp"
 #include "frontend/observation_checker.hpp"
 #include "frontend/scope.hpp"
 #include "model/affine.hpp"
@@ -59,7 +61,8 @@ class Checker {
     if (spec_.mdps.empty()) {
       const FileId file = spec_.file;
       diagnostics_.error(SourceLocation{file, 0},
-                         "spec declares no model: expected an 'mdp NAME { ... }' block");
+                         "spec declares no model: expected an 'mdp NAME { ... }' block or an "
+                         "'import \"FILE\";'");
       return nullptr;
     }
     for (std::size_t i = 1; i < spec_.mdps.size(); ++i) {
@@ -114,22 +117,8 @@ class Checker {
   }
 
   void declare_constants(const ast::MdpDecl& mdp) {
-    for (const ast::ConstDecl& constant : mdp.constants) {
-      auto value = expressions_.check(*constant.value, ExpressionRules{.place = "in a constant"});
-      if (value && !value->is_constant()) {
-        diagnostics_.error(constant.value->range, "constant " + quoted(constant.name.text) +
-                                                      " needs a value known before exploration");
-        value.reset();
-      }
-      Symbol symbol{SymbolKind::Constant,
-                    0,
-                    value ? value->type : Type::Int,
-                    value ? value->constant : Rational(0),
-                    constant.name.range,
-                    !value};
-      scope_.declare(constant.name.text, constant.name.range, std::move(symbol), "name",
-                     diagnostics_);
-    }
+    for (const ast::ConstDecl& constant : mdp.constants)
+      declare_constant(constant, scope_, expressions_, diagnostics_);
   }
 
   void declare_states_or_variables(const ast::MdpDecl& mdp) {
@@ -258,22 +247,7 @@ class Checker {
       ir_.missing = model::MissingPolicy::SelfLoop;
     if (mdp.missing == ast::MissingTransitions::Disabled)
       ir_.missing = model::MissingPolicy::Disabled;
-    if (mdp.discount && mdp.horizon) {
-      diagnostics_.error(mdp.horizon->range, "give a 'discount' or a 'horizon', not both");
-    }
-    if (mdp.discount) {
-      ir_.objective_range = mdp.discount->value->range;
-      check_discount(*mdp.discount->value, mdp.horizon.has_value());
-    }
-    if (mdp.horizon) {
-      ir_.objective_range = mdp.horizon->value->range;
-      auto value = expressions_.constant_integer(*mdp.horizon->value, "the horizon");
-      if (value && (*value < 1 || *value > limits::kMaxHorizon)) {
-        diagnostics_.error(mdp.horizon->value->range, "horizon must be between 1 and 10^9 steps");
-      } else if (value) {
-        ir_.objective.horizon = static_cast<std::uint32_t>(*value);
-      }
-    }
+    check_objective(mdp.discount, mdp.horizon, ir_, diagnostics_, expressions_);
     check_abstraction_target(mdp);
     if (mdp.period) {
       auto value = expressions_.constant_number(*mdp.period->value, "the period");
@@ -317,24 +291,6 @@ class Checker {
 
   // The policy solver works in doubles (docs/policies.md): a discount must stay a discount
   // there, and 1 is allowed only with a finite horizon, where values stay finite.
-  void check_discount(const ast::Expr& expr, bool has_horizon) {
-    auto value = expressions_.constant_number(expr, "the discount");
-    if (!value) return;
-    if (*value <= 0 || *value > 1) {
-      diagnostics_.error(expr.range, "discount must be in (0, 1], not " + describe(*value));
-    } else if (*value == 1 && !has_horizon) {
-      diagnostics_.error(expr.range,
-                         "discount 1 over an infinite horizon may give infinite values: write a "
-                         "discount below 1, or 'horizon N' for undiscounted rewards over N steps");
-    } else if (*value < 1 && to_double(*value) == 1) {
-      diagnostics_.error(expr.range, "discount 1 - " + describe(1 - *value) +
-                                         " rounds to 1 in double precision, where the policy "
-                                         "is solved; write at most 1 - 2^-53 (0.9999999999999999)");
-    } else {
-      ir_.objective.discount = *value;
-    }
-  }
-
   // ---- completeness -----------------------------------------------------------------------
 
   void check_explicit_complete() {
@@ -437,6 +393,14 @@ class Checker {
     for (const ast::ContextDecl& decl : catalog.contexts) {
       const auto index = static_cast<std::uint32_t>(ir_.contexts.size());
       if (!names.declare(decl.name.text, decl.name.range, index, "context", diagnostics_)) continue;
+      if (decl.reward_structure) {
+        diagnostics_.error(decl.reward_structure->range,
+                           "'rewards \"NAME\"' takes a reward structure of an imported PRISM "
+                           "program; this spec's model is written here, so give the context its "
+                           "reward items: 'context " +
+                               std::string(decl.name.text) + " { reward ...; }'");
+        continue;
+      }
       LoweredBehaviour body = lowering_.lower_behaviour(decl.behaviour, /*is_context=*/true);
       if (!decl.is_base && body.empty) {
         diagnostics_.error(decl.range, "context " + quoted(decl.name.text) +
@@ -468,6 +432,7 @@ class Checker {
 
 std::optional<model::ModelIR> check(const ast::SpecFile& spec, DiagnosticEngine& diagnostics,
                                     std::size_t max_number_bits) {
+  if (!spec.imports.empty()) return check_import_spec(spec, diagnostics, max_number_bits);
   return Checker(spec, diagnostics, max_number_bits).run();
 }
 

@@ -349,4 +349,24 @@ std::optional<Rational> ExpressionChecker::branch_probability(const ast::Branch&
   return p;
 }
 
+std::optional<model::Expression> declare_constant(const ast::ConstDecl& constant, Scope& scope,
+                                                  ExpressionChecker& expressions,
+                                                  DiagnosticEngine& diagnostics) {
+  auto value = expressions.check(*constant.value, ExpressionRules{.place = "in a constant"});
+  if (value && !value->is_constant()) {
+    diagnostics.error(constant.value->range, "constant " + quoted(constant.name.text) +
+                                                 " needs a value known before exploration");
+    value.reset();
+  }
+  Symbol symbol{SymbolKind::Constant,
+                0,
+                value ? value->type : model::Type::Int,
+                value ? value->constant : Rational(0),
+                constant.name.range,
+                !value};
+  const bool fresh = scope.declare(constant.name.text, constant.name.range, std::move(symbol),
+                                   "name", diagnostics);
+  return fresh ? value : std::nullopt;
+}
+
 }  // namespace oasis::frontend

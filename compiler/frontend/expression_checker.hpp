@@ -62,4 +62,11 @@ class ExpressionChecker {
   std::size_t max_number_bits_;
 };
 
+// `const NAME = expr;`: checks the value, which must fold to a constant, and declares the name
+// in `scope` (the scope `expressions` reads), marked failed when the value has an error so that
+// its uses say nothing more. The value when both the value and the name were sound.
+std::optional<model::Expression> declare_constant(const ast::ConstDecl& constant, Scope& scope,
+                                                  ExpressionChecker& expressions,
+                                                  DiagnosticEngine& diagnostics);
+
 }  // namespace oasis::frontend

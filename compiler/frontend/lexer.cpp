@@ -32,6 +32,7 @@ constexpr std::array kKeywords = {
     Keyword{"discount", TokenKind::KwDiscount},
     Keyword{"horizon", TokenKind::KwHorizon},
     Keyword{"period", TokenKind::KwPeriod},
+    Keyword{"import", TokenKind::KwImport},
     Keyword{"true", TokenKind::KwTrue},
     Keyword{"false", TokenKind::KwFalse},
 };
@@ -106,6 +107,7 @@ class Lexer {
     const char c = text_[pos_];
     if (is_identifier_start(c)) return identifier(begin);
     if (is_digit(c)) return number(begin);
+    if (c == '"') return string(begin);
     if (auto kind = punctuation(); kind != TokenKind::Invalid) return make(kind, begin, pos_);
     return invalid_character(begin);
   }
@@ -209,6 +211,19 @@ class Lexer {
     return TokenKind::Invalid;
   }
 
+  // A file name in `import "robot.nm"` or a reward structure's name: no escapes, one line.
+  Token string(std::size_t begin) {
+    const std::size_t close = text_.find_first_of("\"\n", begin + 1);
+    if (close == std::string_view::npos || text_[close] != '"') {
+      diagnostics_.error(SourceRange{{file_, static_cast<std::uint32_t>(begin)}, 1},
+                         "string not closed on its line");
+      pos_ = close == std::string_view::npos ? text_.size() : close;
+      return make(TokenKind::Invalid, begin, pos_);
+    }
+    pos_ = close + 1;
+    return make(TokenKind::String, begin, pos_);
+  }
+
   Token invalid_character(std::size_t begin) {
     // Take the whole UTF-8 sequence so the message shows the character, not a byte.
     std::size_t end = begin + 1;
@@ -238,6 +253,8 @@ std::string_view describe(TokenKind kind) {
       return "name";
     case TokenKind::Number:
       return "number";
+    case TokenKind::String:
+      return "string";
     case TokenKind::LeftBrace:
       return "'{'";
     case TokenKind::RightBrace:

@@ -144,7 +144,8 @@ class Parser {
   }
 
   void skip_to_top_level() {
-    while (!at(TokenKind::EndOfFile) && !at(TokenKind::KwMdp) && !at(TokenKind::KwCatalog)) {
+    while (!at(TokenKind::EndOfFile) && !at(TokenKind::KwMdp) && !at(TokenKind::KwCatalog) &&
+           !at(TokenKind::KwImport)) {
       advance();
     }
   }
@@ -156,8 +157,47 @@ class Parser {
       result_.mdps.push_back(mdp());
     } else if (at(TokenKind::KwCatalog)) {
       result_.catalogs.push_back(catalog());
+    } else if (at(TokenKind::KwImport)) {
+      result_.imports.push_back(import());
     } else {
-      fail(peek(), "expected 'mdp' or 'catalog', found " + found(peek()));
+      fail(peek(), "expected 'mdp', 'import' or 'catalog', found " + found(peek()));
+    }
+  }
+
+  // A string token's text without its quotes; its range keeps them.
+  Name expect_string(std::string_view context) {
+    const Token& token = expect(TokenKind::String, context);
+    return Name{token.text.substr(1, token.text.size() - 2), range_of(token)};
+  }
+
+  ImportDecl import() {
+    ImportDecl decl;
+    const SourceRange start = range_of(advance());
+    decl.path = expect_string("after 'import' (the PRISM program's file, as in \"robot.nm\")");
+    if (at(TokenKind::LeftBrace)) {
+      block([&] { import_item(decl); });
+    } else {
+      expect(TokenKind::Semicolon, "or '{' after the imported file");
+    }
+    decl.range = span(start, previous_range());
+    return decl;
+  }
+
+  void import_item(ImportDecl& decl) {
+    switch (peek().kind) {
+      case TokenKind::KwConst:
+        decl.constants.push_back(constant());
+        return;
+      case TokenKind::KwDiscount:
+      case TokenKind::KwHorizon: {
+        std::optional<Setting>& target = at(TokenKind::KwDiscount) ? decl.discount : decl.horizon;
+        if (target) fail(peek(), "the import already has a '" + std::string(peek().text) + "'");
+        target = setting();
+        return;
+      }
+      default:
+        fail(peek(),
+             "expected 'const', 'discount' or 'horizon' in an import, found " + found(peek()));
     }
   }
 
@@ -601,9 +641,13 @@ class Parser {
     const SourceRange start = range_of(advance());
     decl.name = expect_name("a context name");
     if (accept(TokenKind::Assign)) {
-      expect_word("base", "after '=' (a context can only alias the base model)");
+      if (accept_word("rewards")) {
+        decl.reward_structure = expect_string("after 'rewards' (a reward structure's name)");
+      } else {
+        expect_word("base", "or 'rewards \"name\"' after '='");
+        decl.is_base = true;
+      }
       expect(TokenKind::Semicolon);
-      decl.is_base = true;
     } else {
       block([&] {
         if (!behaviour_item(decl.behaviour)) {

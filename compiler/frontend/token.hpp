@@ -13,6 +13,7 @@ enum class TokenKind : std::uint8_t {
   EndOfFile,
   Identifier,
   Number,
+  String,  // "text" on one line; the token's text keeps the quotes
   // Keywords.
   // Reserved words. Words that only mean something in one spot (self, disabled, in, gaussian,
   // stay, uniform, base) are not reserved: the parser recognises them there by spelling.
@@ -35,6 +36,7 @@ enum class TokenKind : std::uint8_t {
   KwDiscount,
   KwHorizon,
   KwPeriod,
+  KwImport,
   KwTrue,
   KwFalse,
   // Punctuation and operators.

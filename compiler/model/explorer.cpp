@@ -348,6 +348,12 @@ class Explorer {
 
 std::optional<ExplicitModel> explore(const ModelIR& ir, DiagnosticEngine& diagnostics,
                                      const ExploreOptions& options) {
+  if (ir.imported) {
+    // The program is the PRISM front end's to read (prism/imported_catalog.hpp), a layer up.
+    diagnostics.error(ir.imported->path_range,
+                      "this spec imports its model: it is explored by the PRISM front end");
+    return std::nullopt;
+  }
   return Explorer(ir, diagnostics, options).run();
 }
 

@@ -23,7 +23,8 @@ struct ExploreOptions {
 
 // nullopt after reporting an error: a state limit passed, a variable sent out of its range,
 // two commands of one action enabled in the same state (not an MDP), an action with no
-// enabled command where the spec asks for none to be missing, a bad probability.
+// enabled command where the spec asks for none to be missing, a bad probability. A spec that
+// imports a PRISM program (ir.imported) is refused: prism::load_imported_catalog explores it.
 std::optional<ExplicitModel> explore(const ModelIR& ir, DiagnosticEngine& diagnostics,
                                      const ExploreOptions& options = {});
 

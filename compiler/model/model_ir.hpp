@@ -94,9 +94,27 @@ struct CommandTable {
 struct ContextIR {
   std::string name;
   SourceRange range;
+  // A spec that imports a PRISM program: the program's reward structure this context takes
+  // (`context c = rewards "name";`, where the range is), or none (`= base`: no rewards).
+  std::optional<std::string> reward_structure;
+  SourceRange reward_structure_range;
   std::uint32_t command_table = 0;  // contexts that do not override transitions share table 0
   std::vector<Reward> rewards;
   std::vector<std::optional<AffineDynamics>> dynamics;  // per action; continuous models only
+};
+
+// `import "robot.nm" { const N = 4; }`: the spec's model is a PRISM program, explored by the
+// PRISM front end (which sits above this layer); the spec gives its constants and catalog.
+struct ImportedProgram {
+  struct Constant {
+    std::string name;
+    Rational value;
+    Type type = Type::Int;  // Bool (value 0 or 1), Int or Real
+    SourceRange range;      // the `const` item
+  };
+  std::string path;  // as written
+  SourceRange path_range;
+  std::vector<Constant> constants;
 };
 
 struct ModelIR {
@@ -122,6 +140,9 @@ struct ModelIR {
   std::optional<std::uint64_t> max_cells;
   // The catalog's `observation` block, checked (discrete models only).
   ObservationSpec observation;
+  // Set when the spec imports its model; contexts then name reward structures, and the model's
+  // own fields (actions, variables, command tables) are empty.
+  std::optional<ImportedProgram> imported;
 };
 
 }  // namespace oasis::model

@@ -55,6 +55,12 @@ class Checker {
     }
     declare_constants_and_formulas();
     overrides_ = read_constant_overrides(options_.constants, diagnostics_);
+    for (const ConstantOverride& given : options_.spec_constants) {
+      const bool on_command_line =
+          std::any_of(overrides_.begin(), overrides_.end(),
+                      [&](const ConstantOverride& o) { return o.name == given.name; });
+      if (!on_command_line) overrides_.push_back(given);
+    }
     apply_overrides();
     evaluate_constants();
     declare_variables();
@@ -115,18 +121,29 @@ class Checker {
     for (const ConstantOverride& given : overrides_) {
       const auto it = symbols_.find(given.name);
       if (it == symbols_.end() || it->second.kind != Symbol::Kind::Constant) {
-        diagnostics_.plain_error("--const " + given.name + "=...: the program has no constant " +
-                                 quoted(given.name));
+        report_given(given, "the program has no constant " + quoted(given.name));
         continue;
       }
       const ast::Constant& constant = tree_.constants[it->second.index];
       if (constant.value) {
         diagnostics_.error(constant.range, "constant " + quoted(given.name) +
-                                               " is defined here, so --const cannot set it");
+                                               " is defined here, so " +
+                                               (given.given_at ? "the importing spec" : "--const") +
+                                               " cannot set it");
+        if (given.given_at) diagnostics_.note(*given.given_at, "the spec sets it here");
         continue;
       }
       constants_[it->second.index].given = &given;
     }
+  }
+
+  // A problem with a value given from outside the program: at the spec's `const` item, or
+  // as a message about --const.
+  void report_given(const ConstantOverride& given, const std::string& problem) {
+    if (given.given_at)
+      diagnostics_.error(*given.given_at, problem);
+    else
+      diagnostics_.plain_error("--const " + given.name + "=" + given.text + ": " + problem);
   }
 
   void evaluate_constants() {
@@ -173,10 +190,12 @@ class Checker {
                         : constant.type == ast::ConstantType::Int ? Type::Int
                                                                   : Type::Real;
     if (!constant.value && given == nullptr) {
+      const std::string where = options_.imported ? "in the importing spec ('const " +
+                                                        constant.name + " = VALUE;') or with "
+                                                  : "with ";
       diagnostics_.error(constant.range, "constant " + quoted(constant.name) +
-                                             " has no value: define it here or give it with "
-                                             "--const " +
-                                             constant.name + "=VALUE");
+                                             " has no value: define it here or give it " + where +
+                                             "--const " + constant.name + "=VALUE");
       return std::nullopt;
     }
     if (given != nullptr) return overridden_value(constant, *given, wanted);
@@ -199,16 +218,14 @@ class Checker {
                       : wanted == Type::Int ? !is_bool && given.value.get_den() == 1
                                             : !is_bool;
     if (!fits) {
-      diagnostics_.plain_error("--const " + given.name + "=" + given.text + ": constant " +
-                               quoted(constant.name) + " is " +
-                               std::string(wanted == Type::Bool  ? "a bool"
-                                           : wanted == Type::Int ? "an int"
-                                                                 : "a double"));
+      report_given(given, "constant " + quoted(constant.name) + " is " +
+                              std::string(wanted == Type::Bool  ? "a bool"
+                                          : wanted == Type::Int ? "an int"
+                                                                : "a double"));
       return std::nullopt;
     }
     if (bit_size(given.value) > options_.max_number_bits) {
-      diagnostics_.plain_error("--const " + given.name + ": " +
-                               too_long_message(given.value, options_.max_number_bits));
+      report_given(given, too_long_message(given.value, options_.max_number_bits));
       return std::nullopt;
     }
     return Expression::make_constant(given.value, wanted, constant.range);
@@ -577,16 +594,21 @@ class Checker {
     using Kind = model::LabelSelection::Kind;
     if (selection.kind == Kind::kAll) return;
     std::vector<RewardStructure> kept;
-    for (const std::string& name : selection.names) {
+    for (std::size_t i = 0; i < selection.names.size(); ++i) {
+      const std::string& name = selection.names[i];
       const auto found = std::find_if(program_.rewards.begin(), program_.rewards.end(),
                                       [&](const RewardStructure& r) { return r.name == name; });
       if (found != program_.rewards.end()) continue;
       std::string known;
       for (const RewardStructure& r : program_.rewards)
         known += (known.empty() ? "" : ", ") + quoted(r.name);
-      diagnostics_.plain_error(
-          "--rewards: the program has no reward structure " + quoted(name) +
-          (known.empty() ? std::string(" (it has none)") : " (it has " + known + ")"));
+      const std::string problem =
+          "the program has no reward structure " + quoted(name) +
+          (known.empty() ? std::string(" (it has none)") : " (it has " + known + ")");
+      if (i < options_.reward_ranges.size())
+        diagnostics_.error(options_.reward_ranges[i], problem);
+      else
+        diagnostics_.plain_error("--rewards: " + problem);
     }
     for (RewardStructure& structure : program_.rewards) {
       const bool named = std::find(selection.names.begin(), selection.names.end(),

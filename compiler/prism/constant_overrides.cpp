@@ -40,7 +40,7 @@ std::vector<ConstantOverride> read_constant_overrides(std::string_view text,
                               quoted(entry));
       continue;
     }
-    ConstantOverride given{std::string(name), std::string(value), model::Type::Real, 0};
+    ConstantOverride given{std::string(name), std::string(value), model::Type::Real, 0, {}};
     if (value == "true" || value == "false") {
       given.type = model::Type::Bool;
       given.value = value == "true" ? 1 : 0;

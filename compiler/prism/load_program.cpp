@@ -23,8 +23,10 @@ std::optional<model::ExplicitModel> load_program_text(FileId file, const std::st
   const ast::Program tree = parse(tokens, diagnostics);
   // Semantic errors on a tree with syntax errors are mostly echoes of them: stop here.
   if (diagnostics.error_count() != errors_before) return std::nullopt;
-  const auto program =
-      check(tree, name, diagnostics, {options.constants, options.max_number_bits, options.rewards});
+  const CheckOptions check_options{
+      options.constants,       options.spec_constants, options.imported_at.has_value(),
+      options.max_number_bits, options.rewards,        options.reward_ranges};
+  const auto program = check(tree, name, diagnostics, check_options);
   if (!program) return std::nullopt;
   return explore(*program, diagnostics, options.explore);
 }
@@ -36,7 +38,10 @@ std::optional<model::ExplicitModel> load_program(const std::string& path, Source
   std::string reason;
   // Source positions are 32-bit offsets, whatever the option says.
   if (!contents.open(path, std::min(options.max_bytes, limits::kMaxAddressableBytes), reason)) {
-    diagnostics.file_error(path, "cannot read PRISM program: " + reason);
+    if (options.imported_at)
+      diagnostics.error(*options.imported_at, "cannot read the imported program: " + reason);
+    else
+      diagnostics.file_error(path, "cannot read PRISM program: " + reason);
     return std::nullopt;
   }
   const FileId file = sources.add(path, std::move(contents));

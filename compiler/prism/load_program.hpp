@@ -6,8 +6,10 @@
 #include <cstddef>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "model/explicit_model.hpp"
+#include "prism/constant_overrides.hpp"
 #include "prism/explorer.hpp"
 #include "support/diagnostics.hpp"
 
@@ -15,6 +17,11 @@ namespace oasis::prism {
 
 struct LoadOptions {
   std::string constants;  // --const N=4,p=0.1
+  // A spec that imports the program: its constants, where it names each reward structure, and
+  // where it names the file (a file that cannot be read is reported there).
+  std::vector<ConstantOverride> spec_constants;
+  std::vector<SourceRange> reward_ranges;
+  std::optional<SourceRange> imported_at;
   // --rewards: the reward structures that become contexts (CheckOptions::rewards).
   model::LabelSelection rewards{model::LabelSelection::Kind::kNone, {}};
   std::size_t max_bytes = limits::kDefaultMaxSpecBytes;

@@ -22,7 +22,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   DiagnosticEngine diagnostics(sources, messages);
   const FileId file = sources.add("fuzz.oasis", fuzz::text_of(data, size));
   const auto ir = frontend::check_spec_text(file, diagnostics);
-  bool has_model = ir && ir->kind == model::ModelKind::Continuous;
+  // Continuous models are not explored; an imported program is the PRISM target's to read.
+  bool has_model = ir && (ir->kind == model::ModelKind::Continuous || ir->imported);
   if (ir && !has_model) {
     model::ExploreOptions options;
     options.max_states = kMaxStates;

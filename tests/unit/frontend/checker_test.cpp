@@ -135,7 +135,7 @@ std::vector<ErrorCase> error_cases() {
   return {
       // ---- checker.cpp ---------------------------------------------------------------------
       {"NoModel", "catalog { context c = base; }",
-       "spec declares no model: expected an 'mdp NAME { ... }' block"},
+       "spec declares no model: expected an 'mdp NAME { ... }' block or an 'import \"FILE\";'"},
       {"NoModelInEmptyFile", "", "spec declares no model"},
       {"TwoModels", kExplicit + "mdp n { states c; actions go; c, go -> c; }",
        "a spec holds one 'mdp'; contexts of the same model go in its 'catalog'"},

@@ -596,8 +596,8 @@ TEST(ParserErrors, RecoversAcrossBlocks) {
 TEST(ParserErrors, RecoversAtTopLevel) {
   Parsed parsed("garbage here; mdp m { states a; }");
   EXPECT_EQ(parsed.errors(), 1U);
-  EXPECT_TRUE(
-      parsed.reported("parse.oasis:1:1: error: expected 'mdp' or 'catalog', found 'garbage'"))
+  EXPECT_TRUE(parsed.reported(
+      "parse.oasis:1:1: error: expected 'mdp', 'import' or 'catalog', found 'garbage'"))
       << parsed.output();
   ASSERT_EQ(parsed.tree.mdps.size(), 1U);
   EXPECT_EQ(parsed.tree.mdps[0].states.size(), 1U);
@@ -709,8 +709,7 @@ TEST(ParserErrors, BadCatalogItems) {
       "2:3: error: expected 'context', 'switching', 'prior' or 'observation', found 'states'"))
       << parsed.output();
   EXPECT_TRUE(parsed.reported(
-      "3:15: error: expected 'base' after '=' (a context can only alias the base model), found "
-      "'other'"))
+      "3:15: error: expected 'base' or 'rewards \"name\"' after '=', found 'other'"))
       << parsed.output();
   EXPECT_TRUE(parsed.reported(
       "4:15: error: expected a transition, command, reward or dynamics in a context, found "

@@ -231,8 +231,10 @@ RunResult run_front_end(const std::string& text) {
     DiagnosticEngine diagnostics(sources, out);
     const FileId file = sources.add("fuzz.oasis", text);
     const auto ir = frontend::check_spec_text(file, diagnostics);
-    if (ir && ir->kind == model::ModelKind::Continuous) {
-      result.has_model = true;  // continuous models are not explored
+    if (ir && (ir->kind == model::ModelKind::Continuous || ir->imported)) {
+      // Continuous models are not explored; an imported program is read by the PRISM front
+      // end, which has its own fuzz tests, and not from a fuzzed spec's folder.
+      result.has_model = true;
     } else if (ir) {
       model::ExploreOptions options;
       options.max_states = kMaxStates;
