@@ -122,6 +122,8 @@ Expression Expression::make_constant(Rational value, Type type, SourceRange rang
   expr.op = Op::Constant;
   expr.type = type;
   expr.constant = std::move(value);
+  expr.is_small_integer = expr.constant.get_den() == 1 && expr.constant.get_num().fits_slong_p();
+  expr.small_integer = expr.is_small_integer ? expr.constant.get_num().get_si() : 0;
   expr.range = range;
   return expr;
 }
@@ -130,7 +132,7 @@ bool evaluate_bool(const Expression& expr, Valuation state) {
   const auto& args = expr.operands;
   switch (expr.op) {
     case Op::Constant:
-      return expr.constant != 0;
+      return expr.is_small_integer ? expr.small_integer != 0 : expr.constant != 0;
     case Op::StateIs:
       return state[0] == static_cast<std::int64_t>(expr.slot);
     case Op::Not:
@@ -165,7 +167,7 @@ std::int64_t evaluate_int(const Expression& expr, Valuation state) {
   const auto& args = expr.operands;
   switch (expr.op) {
     case Op::Constant:
-      return to_int64(expr, expr.constant);
+      return expr.is_small_integer ? expr.small_integer : to_int64(expr, expr.constant);
     case Op::Variable:
       return state[expr.slot];
     case Op::Negate:

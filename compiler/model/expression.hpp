@@ -52,7 +52,11 @@ enum class Op {
 struct Expression {
   Op op = Op::Constant;
   Type type = Type::Int;
-  Rational constant;       // Op::Constant; booleans are 0 or 1
+  Rational constant;  // Op::Constant; booleans are 0 or 1
+  // Op::Constant: the value as a 64-bit integer when it is one (make_constant sets both), so
+  // that evaluating a guard over each explored state does not read the Rational.
+  bool is_small_integer = true;
+  std::int64_t small_integer = 0;
   std::uint32_t slot = 0;  // Variable, ContinuousVariable, StateIs, RegionIs
   std::vector<Expression> operands;
   SourceRange range;

@@ -22,7 +22,7 @@ StateStore::StateStore(const std::vector<DiscreteVariable>& variables) {
     used += bits;
   }
   words_ = word + 1;
-  slots_.assign(1024, 0);
+  slots_.resize(1024);
 }
 
 void StateStore::pack(Valuation valuation, std::span<std::uint64_t> key) const {
@@ -51,36 +51,43 @@ std::uint64_t StateStore::hash(std::span<const std::uint64_t> key) const {
 
 bool StateStore::key_equals(std::uint32_t state, std::span<const std::uint64_t> key) const {
   const std::uint64_t* stored = keys_.data() + std::size_t{state} * words_;
-  for (std::size_t i = 0; i < words_; ++i) {
+  for (std::size_t i = 1; i < words_; ++i) {  // the slot has compared word 0
     if (stored[i] != key[i]) return false;
   }
   return true;
 }
 
-std::pair<std::uint32_t, bool> StateStore::insert(std::span<const std::uint64_t> key) {
-  if ((std::size_t{count_} + 1) * 2 > slots_.size()) grow();  // load factor <= 1/2
+std::size_t StateStore::find_slot(std::span<const std::uint64_t> key) const {
   const std::size_t mask = slots_.size() - 1;
   for (std::size_t i = hash(key) & mask;; i = (i + 1) & mask) {
-    const std::uint32_t slot = slots_[i];
-    if (slot == 0) {
-      if (count_ == UINT32_MAX - 1) throw std::length_error("more than 2^32 states");
-      slots_[i] = count_ + 1;
-      keys_.insert(keys_.end(), key.begin(), key.end());
-      return {count_++, true};
-    }
-    if (key_equals(slot - 1, key)) return {slot - 1, false};
+    const Slot& slot = slots_[i];
+    if (slot.state == 0) return i;
+    if (slot.first_word == key[0] && (words_ == 1 || key_equals(slot.state - 1, key))) return i;
   }
 }
 
+std::pair<std::uint32_t, bool> StateStore::insert(std::span<const std::uint64_t> key) {
+  if ((std::size_t{count_} + 1) * 2 > slots_.size()) grow();  // load factor <= 1/2
+  Slot& slot = slots_[find_slot(key)];
+  if (slot.state != 0) return {slot.state - 1, false};
+  if (count_ == UINT32_MAX - 1) throw std::length_error("more than 2^32 states");
+  slot = {key[0], count_ + 1};
+  keys_.insert(keys_.end(), key.begin(), key.end());
+  return {count_++, true};
+}
+
 void StateStore::grow() {
-  std::vector<std::uint32_t> bigger(slots_.size() * 2, 0);
+  std::vector<Slot, HugePageAllocator<Slot>> bigger(slots_.size() * 2);
   const std::size_t mask = bigger.size() - 1;
-  for (std::uint32_t state = 0; state < count_; ++state) {
-    std::span<const std::uint64_t> key(keys_.data() + std::size_t{state} * words_, words_);
+  for (const Slot& slot : slots_) {
+    if (slot.state == 0) continue;
+    // A one-word key is in the slot itself: no need to read the keys.
+    const std::span<const std::uint64_t> key =
+        words_ == 1 ? std::span<const std::uint64_t>(&slot.first_word, 1) : key_of(slot.state - 1);
     std::size_t i = hash(key) & mask;
-    while (bigger[i] != 0)
+    while (bigger[i].state != 0)
       i = (i + 1) & mask;
-    bigger[i] = state + 1;
+    bigger[i] = slot;
   }
   slots_ = std::move(bigger);
 }

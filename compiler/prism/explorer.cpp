@@ -26,6 +26,8 @@ struct ExplorationFailed {};
 constexpr std::size_t kMaxChoicesPerState = 100'000;
 // Nor more outcomes than this in one choice (the product of its commands' updates).
 constexpr std::uint64_t kMaxOutcomesPerChoice = 1'000'000;
+// Nor more than this over all of a state's choices, which are held together (all_outcomes()).
+constexpr std::size_t kMaxOutcomesPerState = 10'000'000;
 // `init ... endinit` is solved by trying every valuation; past this many it is refused.
 constexpr std::uint64_t kMaxInitCandidates = std::uint64_t{1} << 24;
 
@@ -46,7 +48,8 @@ class Explorer {
         store_(program.variables),
         valuation_(program.variables.size()),
         key_(store_.words_per_state()),
-        action_rewards_(program.rewards.size()) {}
+        action_rewards_(program.rewards.size()),
+        labelled_ids_(program.actions.size()) {}
 
   std::optional<model::ExplicitModel> run() {
     try {
@@ -139,7 +142,11 @@ class Explorer {
 
   StateIndex intern(model::Valuation valuation, SourceRange cause) {
     store_.pack(valuation, key_);
-    const auto [index, inserted] = store_.insert(key_);
+    return intern_key(key_, cause);
+  }
+
+  StateIndex intern_key(std::span<const std::uint64_t> key, SourceRange cause) {
+    const auto [index, inserted] = store_.insert(key);
     if (inserted && store_.size() > options_.max_states) {
       diagnostics_.error(cause, "exploration passed the limit of " +
                                     std::to_string(options_.max_states) +
@@ -216,30 +223,55 @@ class Explorer {
   }
 
   void emit_choices(StateIndex s) {
+    all_outcomes();
     std::uint32_t unlabelled = 0;
     label_uses_.assign(program_.actions.size(), 0);
-    for (const Choice& choice : choices_) {
+    for (std::size_t c = 0; c < choices_.size(); ++c) {
+      const Choice& choice = choices_[c];
       const std::uint32_t position = choice.action ? label_uses_[*choice.action]++ : unlabelled++;
       begin_distribution(s, action_id(choice.action, position));
-      start_outcomes(choice);
-      for (auto& [target, probability] : row_)
-        collector_.add(target, probability);
+      for (std::size_t o = c == 0 ? 0 : choice_ends_[c - 1]; o < choice_ends_[c]; ++o)
+        collector_.add(row_[o].first, row_[o].second);
       record_action_rewards(choice.action, {});
+    }
+  }
+
+  // Every choice's outcomes into row_, choice c's ending at choice_ends_[c]. Successors are
+  // looked up in the store only once all are known: each lookup is likely a cache miss, and
+  // prefetching them together lets those misses overlap instead of following one another.
+  // They are interned in the order found, so states are numbered as one at a time would.
+  void all_outcomes() {
+    row_.clear();
+    pending_.clear();
+    pending_keys_.clear();
+    choice_ends_.clear();
+    for (const Choice& choice : choices_) {
+      start_outcomes(choice);
+      choice_ends_.push_back(row_.size());
+      if (row_.size() > kMaxOutcomesPerState) {
+        diagnostics_.error(program_.range, "state " + state_text() + " has more than " +
+                                               std::to_string(kMaxOutcomesPerState) +
+                                               " outcomes over all its choices");
+        throw ExplorationFailed{};
+      }
+    }
+    const std::size_t words = store_.words_per_state();
+    for (std::size_t p = 0; p < pending_.size(); ++p) {
+      const std::span<const std::uint64_t> key(pending_keys_.data() + p * words, words);
+      row_[pending_[p].position].first = intern_key(key, pending_[p].cause);
     }
   }
 
   // A dtmc's one distribution: the average of its enabled choices.
   void emit_mixture(StateIndex s) {
+    all_outcomes();
     begin_distribution(s, action_id(std::nullopt, 0));
     const Rational share(1, static_cast<unsigned long>(choices_.size()));
     mixture_.clear();
-    for (const Choice& choice : choices_) {
-      start_outcomes(choice);
-      for (auto& [target, probability] : row_) {
-        mixture_.emplace_back(target, choices_.size() == 1
-                                          ? probability
-                                          : values_.intern(values_[probability] * share));
-      }
+    for (auto& [target, probability] : row_) {
+      mixture_.emplace_back(target, choices_.size() == 1
+                                        ? probability
+                                        : values_.intern(values_[probability] * share));
     }
     for (auto& [target, probability] : mixture_)
       collector_.add(target, probability);
@@ -251,11 +283,21 @@ class Explorer {
   // source state, as in PRISM.
   void outcomes(const Choice& choice, std::size_t i, ValueId probability) {
     if (i == choice.count) {
-      // A self-loop (`true`, an update that changes nothing) needs no lookup in the store.
-      const StateIndex target = stack_[i] == valuation_
-                                    ? current_
-                                    : intern(stack_[i], choice_commands_[choice.first]->range);
-      row_.emplace_back(target, probability);
+      // A self-loop (`true`, an update that changes nothing) needs no lookup in the store;
+      // another successor is looked up later (all_outcomes()), its slot fetched now.
+      const std::size_t words = store_.words_per_state();
+      pending_keys_.resize(pending_keys_.size() + words);
+      const std::span<std::uint64_t> key(pending_keys_.data() + pending_keys_.size() - words,
+                                         words);
+      store_.pack(stack_[i], key);
+      if (std::equal(key.begin(), key.end(), store_.key_of(current_).begin())) {
+        pending_keys_.resize(pending_keys_.size() - words);
+        row_.emplace_back(current_, probability);
+        return;
+      }
+      store_.prefetch(key);
+      pending_.push_back({row_.size(), choice_commands_[choice.first]->range});
+      row_.emplace_back(0, probability);
       return;
     }
     const Command& command = *choice_commands_[choice.first + i];
@@ -283,7 +325,6 @@ class Explorer {
   }
 
   void start_outcomes(const Choice& choice) {
-    row_.clear();
     check_outcome_count(choice);
     if (stack_.size() < choice.count + 1) {
       stack_.resize(choice.count + 1);
@@ -533,14 +574,21 @@ class Explorer {
   std::vector<std::vector<ValueId>> action_rewards_;  // per structure, per distribution
   std::vector<std::string> action_names_;
   std::vector<model::ActionIndex> unlabelled_ids_;
-  std::unordered_map<std::uint32_t, std::vector<model::ActionIndex>> labelled_ids_;
+  std::vector<std::vector<model::ActionIndex>> labelled_ids_;  // per action label
   std::vector<std::uint32_t> label_uses_;
   // Per state scratch.
   std::vector<Choice> choices_;
   std::vector<const Command*> choice_commands_;
   std::vector<std::vector<const Command*>> participants_;
   std::vector<std::size_t> pick_;
-  std::vector<std::pair<StateIndex, ValueId>> row_;
+  std::vector<std::pair<StateIndex, ValueId>> row_;  // the outcomes of every choice
+  std::vector<std::size_t> choice_ends_;
+  struct Pending {
+    std::size_t position;  // in row_
+    SourceRange cause;     // the command, should the state limit be passed
+  };
+  std::vector<Pending> pending_;             // successors still to look up
+  std::vector<std::uint64_t> pending_keys_;  // their packed keys, words_per_state() each
   std::vector<std::pair<StateIndex, ValueId>> mixture_;
 };
 
