@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "support/double_range.hpp"
+#include "support/limits.hpp"
 #include "support/text.hpp"
 
 namespace oasis::frontend {
@@ -127,6 +128,20 @@ void check_switching_and_prior(const ast::CatalogDecl& catalog,
                            expressions)) {
     ir.switching.prior = std::move(prior);
   }
+}
+
+bool check_context_count(const ast::CatalogDecl& catalog, DiagnosticEngine& diagnostics) {
+  if (catalog.contexts.empty()) {
+    diagnostics.error(catalog.range, "catalog is empty: declare at least one 'context'");
+    return false;
+  }
+  if (catalog.contexts.size() > limits::kMaxContexts) {
+    diagnostics.error(catalog.contexts[limits::kMaxContexts].range,
+                      "catalog has more than " + std::to_string(limits::kMaxContexts) +
+                          " contexts (the switching model alone would need N^2 entries)");
+    return false;
+  }
+  return true;
 }
 
 }  // namespace oasis::frontend

@@ -11,6 +11,9 @@
 
 namespace oasis::frontend {
 
+// At least one context and at most limits::kMaxContexts; false after reporting otherwise.
+bool check_context_count(const ast::CatalogDecl& catalog, DiagnosticEngine& diagnostics);
+
 // Fills ir.switching from the catalog; `contexts` maps context names to their index in
 // ir.contexts. Reports rows that do not sum to 1, unknown or missing contexts, and so on.
 void check_switching_and_prior(const ast::CatalogDecl& catalog,

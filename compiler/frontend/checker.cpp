@@ -22,7 +22,6 @@ using model::ModelKind;
 using model::Type;
 
 // support/limits.hpp says why each is what it is.
-constexpr std::size_t kMaxContexts = limits::kMaxContexts;
 constexpr std::int64_t kMaxVariableRange = limits::kMaxVariableRange;
 
 class Checker {
@@ -379,16 +378,7 @@ class Checker {
       return;
     }
     const ast::CatalogDecl& catalog = spec_.catalogs.front();
-    if (catalog.contexts.empty()) {
-      diagnostics_.error(catalog.range, "catalog is empty: declare at least one 'context'");
-      return;
-    }
-    if (catalog.contexts.size() > kMaxContexts) {
-      diagnostics_.error(catalog.contexts[kMaxContexts].range,
-                         "catalog has more than " + std::to_string(kMaxContexts) +
-                             " contexts (the switching model alone would need N^2 entries)");
-      return;
-    }
+    if (!check_context_count(catalog, diagnostics_)) return;
     NameTable<std::uint32_t> names;
     for (const ast::ContextDecl& decl : catalog.contexts) {
       const auto index = static_cast<std::uint32_t>(ir_.contexts.size());

@@ -7,7 +7,6 @@
 #include "frontend/objective_checker.hpp"
 #include "frontend/observation_checker.hpp"
 #include "frontend/scope.hpp"
-#include "support/limits.hpp"
 #include "support/text.hpp"
 
 namespace oasis::frontend {
@@ -80,16 +79,7 @@ class ImportChecker {
       return;
     }
     const ast::CatalogDecl& catalog = spec_.catalogs.front();
-    if (catalog.contexts.empty()) {
-      diagnostics_.error(catalog.range, "catalog is empty: declare at least one 'context'");
-      return;
-    }
-    if (catalog.contexts.size() > limits::kMaxContexts) {
-      diagnostics_.error(catalog.contexts[limits::kMaxContexts].range,
-                         "catalog has more than " + std::to_string(limits::kMaxContexts) +
-                             " contexts (the switching model alone would need N^2 entries)");
-      return;
-    }
+    if (!check_context_count(catalog, diagnostics_)) return;
     NameTable<std::uint32_t> names;
     for (const ast::ContextDecl& decl : catalog.contexts) {
       const auto index = static_cast<std::uint32_t>(ir_.contexts.size());

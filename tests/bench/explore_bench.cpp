@@ -8,6 +8,7 @@
 // The counter states_per_second is what issue 25's goal is stated in (10^6 on one core).
 //   build/default/tests/oasis-explore-benchmark --benchmark_filter=/1000
 #include <cstdint>
+#include <optional>
 #include <sstream>
 #include <string>
 
@@ -42,43 +43,39 @@ std::string prism_grid(std::int64_t side) {
          "endmodule\n";
 }
 
-void report(benchmark::State& state, std::uint32_t states) {
+// Runs `load` (text in `sources` -> explicit model) once per iteration, fresh each time.
+template <typename Load>
+void time_exploration(benchmark::State& state, const std::string& name, const std::string& text,
+                      Load&& load) {
+  std::uint32_t states = 0;
+  for (auto _ : state) {
+    oasis::SourceManager sources;
+    std::ostringstream messages;
+    oasis::DiagnosticEngine diagnostics(sources, messages);
+    const oasis::FileId file = sources.add(name, text);
+    const std::optional<oasis::model::ExplicitModel> model = load(file, diagnostics);
+    if (!model) state.SkipWithError(messages.str().c_str());
+    if (model) states = model->num_states();
+    benchmark::DoNotOptimize(model);
+  }
   state.counters["states"] = states;
   state.counters["states_per_second"] = benchmark::Counter(
       static_cast<double>(states), benchmark::Counter::kIsIterationInvariantRate);
 }
 
 void BM_ExploreSpec(benchmark::State& state) {
-  const std::string text = spec_grid(state.range(0));
-  std::uint32_t states = 0;
-  for (auto _ : state) {
-    oasis::SourceManager sources;
-    std::ostringstream messages;
-    oasis::DiagnosticEngine diagnostics(sources, messages);
-    const oasis::FileId file = sources.add("grid.oasis", text);
-    const auto ir = oasis::frontend::check_spec_text(file, diagnostics);
-    const auto model = ir ? oasis::model::explore(*ir, diagnostics) : std::nullopt;
-    if (!model) state.SkipWithError(messages.str().c_str());
-    if (model) states = model->num_states();
-    benchmark::DoNotOptimize(model);
-  }
-  report(state, states);
+  time_exploration(state, "grid.oasis", spec_grid(state.range(0)),
+                   [](oasis::FileId file, oasis::DiagnosticEngine& diagnostics) {
+                     const auto ir = oasis::frontend::check_spec_text(file, diagnostics);
+                     return ir ? oasis::model::explore(*ir, diagnostics) : std::nullopt;
+                   });
 }
 
 void BM_ExplorePrism(benchmark::State& state) {
-  const std::string text = prism_grid(state.range(0));
-  std::uint32_t states = 0;
-  for (auto _ : state) {
-    oasis::SourceManager sources;
-    std::ostringstream messages;
-    oasis::DiagnosticEngine diagnostics(sources, messages);
-    const oasis::FileId file = sources.add("grid.nm", text);
-    const auto model = oasis::prism::load_program_text(file, "grid", diagnostics, {});
-    if (!model) state.SkipWithError(messages.str().c_str());
-    if (model) states = model->num_states();
-    benchmark::DoNotOptimize(model);
-  }
-  report(state, states);
+  time_exploration(state, "grid.nm", prism_grid(state.range(0)),
+                   [](oasis::FileId file, oasis::DiagnosticEngine& diagnostics) {
+                     return oasis::prism::load_program_text(file, "grid", diagnostics, {});
+                   });
 }
 
 BENCHMARK(BM_ExploreSpec)->Arg(100)->Arg(316)->Arg(1000)->Unit(benchmark::kMillisecond);
