@@ -40,9 +40,10 @@ class ImportChecker {
   void refuse_second_models() {
     for (std::size_t i = 1; i < spec_.imports.size(); ++i)
       diagnostics_.error(spec_.imports[i].path.range, "a spec imports at most one program");
-    for (const ast::MdpDecl& mdp : spec_.mdps)
+    for (const ast::MdpDecl& mdp : spec_.mdps) {
       diagnostics_.error(mdp.name.range,
                          "a spec imports its model or declares it in an 'mdp' block, not both");
+    }
     for (std::size_t i = 1; i < spec_.catalogs.size(); ++i)
       diagnostics_.error(spec_.catalogs[i].range, "a spec holds at most one 'catalog'");
   }

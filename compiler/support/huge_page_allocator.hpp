@@ -15,7 +15,7 @@ namespace oasis {
 template <typename T>
 class HugePageAllocator {
  public:
-  using value_type = T;
+  using value_type = T;  // NOLINT(readability-identifier-naming): the allocator interface
   static constexpr std::size_t kHugePage = std::size_t{2} << 20;
 
   HugePageAllocator() = default;
