@@ -9,8 +9,8 @@
 #   target_link_libraries(robot PRIVATE treat_catalog)
 #
 # and then `#include "go1_treat_catalog.hpp"` and `go1_treat::catalog()`. The files are
-# generated in the build tree (never the source tree) and regenerated when the spec or
-# oasisc changes. BASENAME names the files (default: the spec's file name + "_catalog").
+# generated in the build tree (never the source tree) and regenerated when the spec, a PRISM
+# program it imports (`import "robot.nm";`, found when CMake configures) or oasisc changes. BASENAME names the files (default: the spec's file name + "_catalog").
 # WITH_BINARY also writes the binary catalog from the same compile, as
 # ${CMAKE_CURRENT_BINARY_DIR}/TARGET.catalog/MODEL.bin (MODEL: the spec's `mdp` name, by
 # convention its file name), for a program that links the tables and also loads or ships the
@@ -42,11 +42,22 @@ function(oasis_add_catalog target spec)
     set(formats cpp,bin)
     list(APPEND outputs "${out_dir}/${stem}.bin")
   endif()
+  # A spec may import a PRISM program: the catalog depends on it too. The spec is read here, so
+  # an edit to it configures again, to find a new import.
+  get_filename_component(spec_dir "${spec_path}" DIRECTORY)
+  set(imported_files "")
+  file(STRINGS "${spec_path}" import_lines REGEX "^[ \t]*import[ \t]+\"[^\"]+\"")
+  foreach(line IN LISTS import_lines)
+    string(REGEX REPLACE "^[ \t]*import[ \t]+\"([^\"]+)\".*" "\\1" imported "${line}")
+    get_filename_component(imported "${imported}" ABSOLUTE BASE_DIR "${spec_dir}")
+    list(APPEND imported_files "${imported}")
+  endforeach()
+  set_property(DIRECTORY APPEND PROPERTY CMAKE_CONFIGURE_DEPENDS "${spec_path}")
   add_custom_command(
     OUTPUT ${outputs}
     COMMAND "$<TARGET_FILE:${compiler}>" compile "${spec_path}" -o "${out_dir}" --format ${formats}
             --basename "${ARG_BASENAME}" --progress never
-    DEPENDS ${compiler} "${spec_path}"
+    DEPENDS ${compiler} "${spec_path}" ${imported_files}
     COMMENT "oasisc: compiling the catalog of ${spec}"
     VERBATIM)
   add_library(${target} STATIC "${out_dir}/${ARG_BASENAME}.hpp" "${out_dir}/${ARG_BASENAME}.cpp")
