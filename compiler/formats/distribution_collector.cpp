@@ -7,8 +7,10 @@ namespace oasis::formats {
 void DistributionCollector::reserve(std::size_t distributions, std::size_t edges) {
   sources_.reserve(distributions);
   actions_.reserve(distributions);
-  offsets_.reserve(distributions);
-  payloads_.reserve(distributions);
+  if (keep_locations_) {
+    offsets_.reserve(distributions);
+    payloads_.reserve(distributions);
+  }
   edge_begin_.reserve(distributions);
   targets_.reserve(edges);
   probabilities_.reserve(edges);
@@ -16,10 +18,16 @@ void DistributionCollector::reserve(std::size_t distributions, std::size_t edges
 
 void DistributionCollector::begin(model::StateIndex source, model::ActionIndex action,
                                   std::uint32_t offset, std::uint32_t payload) {
+  begin(source, action);
+  if (keep_locations_) {
+    offsets_.push_back(offset);
+    payloads_.push_back(payload);
+  }
+}
+
+void DistributionCollector::begin(model::StateIndex source, model::ActionIndex action) {
   sources_.push_back(source);
   actions_.push_back(action);
-  offsets_.push_back(offset);
-  payloads_.push_back(payload);
   edge_begin_.push_back(static_cast<model::EdgeIndex>(targets_.size()));
 }
 

@@ -23,12 +23,19 @@ class DistributionCollector {
     std::uint32_t second;  // a later one for the same (source, action)
   };
 
+  DistributionCollector() = default;
+  // A caller that never reads offset() or payload() (an explorer, whose distributions come
+  // from no file) passes false and saves their 8 bytes per distribution.
+  explicit DistributionCollector(bool keep_locations) : keep_locations_(keep_locations) {}
+
   void reserve(std::size_t distributions, std::size_t edges);
 
   // Starts distribution number size(). `offset` locates it in its file for diagnostics;
   // `payload` is the reader's (a reward id, a choice index).
   void begin(model::StateIndex source, model::ActionIndex action, std::uint32_t offset,
              std::uint32_t payload);
+  // The same, for a collector that keeps no locations.
+  void begin(model::StateIndex source, model::ActionIndex action);
   void add(model::StateIndex target, ValueId probability) {
     // Within one distribution targets should strictly increase; otherwise finish() sorts.
     if (targets_.size() > edge_begin_.back() && targets_.back() >= target) sorted_ = false;
@@ -41,8 +48,9 @@ class DistributionCollector {
   [[nodiscard]] bool full() const { return targets_.size() >= UINT32_MAX - 1; }
   [[nodiscard]] model::StateIndex source(std::uint32_t d) const { return sources_[d]; }
   [[nodiscard]] model::ActionIndex action(std::uint32_t d) const { return actions_[d]; }
-  [[nodiscard]] std::uint32_t offset(std::uint32_t d) const { return offsets_[d]; }
-  [[nodiscard]] std::uint32_t payload(std::uint32_t d) const { return payloads_[d]; }
+  // Only where locations are kept (the default).
+  [[nodiscard]] std::uint32_t offset(std::uint32_t d) const { return offsets_.at(d); }
+  [[nodiscard]] std::uint32_t payload(std::uint32_t d) const { return payloads_.at(d); }
 
   // Builds the matrix; `num_states * num_actions` must be below 2^32. Repeated
   // (source, action) pairs are listed in `duplicates` in file order and yield nullopt.
@@ -58,6 +66,7 @@ class DistributionCollector {
   void build_copying(model::TransitionMatrix& matrix, RationalPool& values);
   void build_in_place(model::TransitionMatrix& matrix);
 
+  bool keep_locations_ = true;
   std::vector<model::StateIndex> sources_;
   std::vector<model::ActionIndex> actions_;
   std::vector<std::uint32_t> offsets_;

@@ -408,7 +408,7 @@ class Explorer {
       diagnostics_.error(program_.range, "the model has more than 2^32 transitions");
       throw ExplorationFailed{};
     }
-    collector_.begin(s, action, 0, 0);
+    collector_.begin(s, action);
   }
 
   // --- Rewards -------------------------------------------------------------------------------
@@ -570,7 +570,7 @@ class Explorer {
   std::vector<ValueId> probability_ids_;     // per update; kStateDependent when not constant
   std::vector<StateIndex> initial_;
   std::vector<StateIndex> deadlocks_;
-  formats::DistributionCollector collector_;
+  formats::DistributionCollector collector_{/*keep_locations=*/false};
   std::vector<std::vector<ValueId>> action_rewards_;  // per structure, per distribution
   std::vector<std::string> action_names_;
   std::vector<model::ActionIndex> unlabelled_ids_;
