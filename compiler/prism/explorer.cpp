@@ -285,17 +285,16 @@ class Explorer {
     if (i == choice.count) {
       // A self-loop (`true`, an update that changes nothing) needs no lookup in the store;
       // another successor is looked up later (all_outcomes()), its slot fetched now.
-      const std::size_t words = store_.words_per_state();
-      pending_keys_.resize(pending_keys_.size() + words);
-      const std::span<std::uint64_t> key(pending_keys_.data() + pending_keys_.size() - words,
-                                         words);
-      store_.pack(stack_[i], key);
-      if (std::equal(key.begin(), key.end(), store_.key_of(current_).begin())) {
-        pending_keys_.resize(pending_keys_.size() - words);
+      store_.pack(stack_[i], key_);
+      const std::span<const std::uint64_t> current = store_.key_of(current_);
+      const bool same = key_.size() == 1 ? key_[0] == current[0]
+                                         : std::equal(key_.begin(), key_.end(), current.begin());
+      if (same) {
         row_.emplace_back(current_, probability);
         return;
       }
-      store_.prefetch(key);
+      store_.prefetch(key_);
+      pending_keys_.insert(pending_keys_.end(), key_.begin(), key_.end());
       pending_.push_back({row_.size(), choice_commands_[choice.first]->range});
       row_.emplace_back(0, probability);
       return;
