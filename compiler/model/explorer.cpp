@@ -1,6 +1,8 @@
 #include "model/explorer.hpp"
 
+#include <algorithm>
 #include <memory>
+#include <span>
 #include <string>
 #include <utility>
 #include <vector>
@@ -52,6 +54,22 @@ class Explorer {
     std::vector<std::vector<const Command*>> by_state;  // [action][state]; explicit only
     std::unique_ptr<TransitionBuilder> builder;         // the state count is set at the end
     bool used = false;                                  // by some context: only these are explored
+    // [action][command][outcome]: a constant probability's id, interned once rather than per
+    // state; kStateDependent where it depends on the state.
+    std::vector<std::vector<std::vector<ValueId>>> probability_ids;
+  };
+  static constexpr ValueId kStateDependent = UINT32_MAX;
+
+  // A transition of the state being explored, kept until its successors are looked up.
+  struct Edge {
+    std::uint32_t table;
+    ActionIndex action;
+    StateIndex target;  // for a pending one: its index in pending_
+    ValueId probability;
+    bool pending;
+  };
+  struct Pending {
+    SourceRange cause;  // the outcome, should the state limit be passed
   };
 
   void prepare_tables() {
@@ -69,12 +87,28 @@ class Explorer {
         }
       }
       table.builder = std::make_unique<TransitionBuilder>(0, num_actions);
+      table.probability_ids = constant_probability_ids(commands);
       tables_.push_back(std::move(table));
     }
     // When every context replaces the model's commands of some action, the model's own table
     // (0) is no context's: the states only it reaches must not join the state space.
     for (const ContextIR& context : ir_.contexts)
       tables_.at(context.command_table).used = true;
+  }
+
+  std::vector<std::vector<std::vector<ValueId>>> constant_probability_ids(
+      const CommandTable& commands) {
+    std::vector<std::vector<std::vector<ValueId>>> ids(commands.by_action.size());
+    for (std::size_t a = 0; a < commands.by_action.size(); ++a) {
+      for (const Command& command : commands.by_action[a]) {
+        std::vector<ValueId>& per_outcome = ids[a].emplace_back();
+        for (const Outcome& outcome : command.outcomes) {
+          const Expression& p = outcome.probability;
+          per_outcome.push_back(p.is_constant() ? values_.intern(p.constant) : kStateDependent);
+        }
+      }
+    }
+    return ids;
   }
 
   void check_explicit_size(std::size_t states, std::size_t actions) {
@@ -104,7 +138,11 @@ class Explorer {
 
   std::uint32_t intern(Valuation valuation, SourceRange cause) {
     store_.pack(valuation, key_);
-    const auto [index, inserted] = store_.insert(key_);
+    return intern_key(key_, cause);
+  }
+
+  std::uint32_t intern_key(std::span<const std::uint64_t> key, SourceRange cause) {
+    const auto [index, inserted] = store_.insert(key);
     if (inserted && store_.size() > options_.max_states) {
       diagnostics_.error(cause, "exploration passed the limit of " +
                                     std::to_string(options_.max_states) +
@@ -121,17 +159,51 @@ class Explorer {
     return index;
   }
 
+  // Each state's transitions are worked out first and its successors looked up after, all
+  // together: each lookup is likely a cache miss, and prefetching them at once lets those
+  // misses overlap. They are interned in the order found, so the numbering is unchanged.
   void explore_states() {
     const auto num_actions = static_cast<std::uint32_t>(ir_.actions.size());
     for (std::uint32_t s = 0; s < store_.size(); ++s) {
       store_.unpack(s, valuation_);
+      edges_.clear();
+      pending_.clear();
+      pending_keys_.clear();
       for (std::size_t t = 0; t < tables_.size(); ++t) {
         if (!tables_[t].used) continue;
         for (std::uint32_t a = 0; a < num_actions; ++a)
           step(t, s, a);
       }
+      add_edges(s);
       if (options_.progress && (s & 0xFFFFU) == 0xFFFFU) options_.progress(store_.size(), s + 1);
     }
+  }
+
+  void add_edges(StateIndex s) {
+    const std::size_t words = store_.words_per_state();
+    for (Edge& edge : edges_) {
+      if (edge.pending) {
+        const std::span<const std::uint64_t> key(pending_keys_.data() + edge.target * words, words);
+        edge.target = intern_key(key, pending_[edge.target].cause);
+      }
+      tables_[edge.table].builder->add(s, edge.action, edge.target, edge.probability);
+    }
+  }
+
+  // A successor of the state being explored: itself, or one to look up in add_edges().
+  void add_successor(std::size_t t, std::uint32_t s, std::uint32_t a, ValueId p,
+                     SourceRange cause) {
+    store_.pack(successor_, key_);
+    const std::span<const std::uint64_t> current = store_.key_of(s);
+    if (std::equal(key_.begin(), key_.end(), current.begin())) {
+      edges_.push_back({static_cast<std::uint32_t>(t), a, s, p, false});
+      return;
+    }
+    store_.prefetch(key_);
+    edges_.push_back(
+        {static_cast<std::uint32_t>(t), a, static_cast<StateIndex>(pending_.size()), p, true});
+    pending_.push_back({cause});
+    pending_keys_.insert(pending_keys_.end(), key_.begin(), key_.end());
   }
 
   const Command* enabled_command(std::size_t t, std::uint32_t s, std::uint32_t a) {
@@ -160,9 +232,13 @@ class Explorer {
     }
     Rational sum = 0;  // of the state-dependent probabilities
     bool state_dependent = false;
-    for (const Outcome& outcome : command->outcomes) {
-      const ValueId p = probability(outcome);
-      if (!outcome.probability.is_constant()) {
+    const Table& table = tables_[t];
+    const std::vector<ValueId>& ids = table.probability_ids[a][static_cast<std::size_t>(
+        command - table.commands->by_action[a].data())];
+    for (std::size_t o = 0; o < command->outcomes.size(); ++o) {
+      const Outcome& outcome = command->outcomes[o];
+      const ValueId p = ids[o] != kStateDependent ? ids[o] : probability(outcome);
+      if (ids[o] == kStateDependent) {
         state_dependent = true;
         sum += values_[p];
       }
@@ -170,8 +246,7 @@ class Explorer {
       successor_ = valuation_;
       for (const Update& update : outcome.updates)
         apply(update);
-      const std::uint32_t target = intern(successor_, outcome.range);
-      tables_[t].builder->add(s, a, target, p);
+      add_successor(t, s, a, p, outcome.range);
     }
     // The checker has summed the commands whose probabilities are all constant. A single
     // state-dependent one, wherever it is (not only first), leaves the sum to each state.
@@ -181,7 +256,7 @@ class Explorer {
   void missing(std::size_t t, std::uint32_t s, std::uint32_t a) {
     switch (ir_.missing) {
       case MissingPolicy::SelfLoop:
-        tables_[t].builder->add(s, a, s, RationalPool::kOne);
+        edges_.push_back({static_cast<std::uint32_t>(t), a, s, RationalPool::kOne, false});
         return;
       case MissingPolicy::Disabled:
         return;
@@ -340,6 +415,9 @@ class Explorer {
   std::vector<std::int64_t> successor_;
   std::vector<std::uint64_t> key_;
   std::vector<Table> tables_;
+  std::vector<Edge> edges_;                  // of the state being explored
+  std::vector<Pending> pending_;             // its successors still to look up
+  std::vector<std::uint64_t> pending_keys_;  // their packed keys, words_per_state() each
   std::vector<std::uint32_t> initial_;
   RationalPool values_;
 };
