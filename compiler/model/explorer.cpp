@@ -237,7 +237,7 @@ class Explorer {
         command - table.commands->by_action[a].data())];
     for (std::size_t o = 0; o < command->outcomes.size(); ++o) {
       const Outcome& outcome = command->outcomes[o];
-      const ValueId p = ids[o] != kStateDependent ? ids[o] : probability(outcome);
+      const ValueId p = ids[o] != kStateDependent ? ids[o] : state_probability(outcome);
       if (ids[o] == kStateDependent) {
         state_dependent = true;
         sum += values_[p];
@@ -269,9 +269,9 @@ class Explorer {
     }
   }
 
-  ValueId probability(const Outcome& outcome) {
+  // A probability that depends on the state (constant ones are interned once, in the tables).
+  ValueId state_probability(const Outcome& outcome) {
     const Expression& p = outcome.probability;
-    if (p.is_constant()) return values_.intern(p.constant);
     const Rational value = evaluate([&] { return evaluate_number(p, valuation_); });
     if (value < 0 || value > 1) {
       diagnostics_.error(p.range, "probability " + describe(value) + " in state " + state_text() +
