@@ -34,15 +34,20 @@
 // times: O(m log n) edge visits. Grouping reads each touched state's |A| choice records and
 // hashes its signature: O(|A|) per touched state, charged to the edge that touched it, so
 // O(|A| m log n) in all (|A| is a small constant for the models this tool is for).
-// Memory: compact arrays only, 32-bit indices; about 25 bytes per edge and 24 per choice.
+// Memory: compact arrays only, 32-bit indices. Beyond the model, 4 bytes per edge (the
+// reverse edges, packed: incoming_edges.hpp; 8 when a record does not fit in 32 bits), 8 per
+// choice (choice_weight_) and 20 per state; docs/PERFORMANCE.md has the budget.
 
 #include "bisim/refinement.hpp"
 
 #include <algorithm>
+#include <bit>
 #include <chrono>
 #include <limits>
+#include <optional>
 #include <stdexcept>
 
+#include "bisim/incoming_edges.hpp"
 #include "bisim/initial_partition.hpp"
 #include "bisim/unlabelled_refinement.hpp"
 #include "bisim/weights.hpp"
@@ -144,14 +149,6 @@ class Refiner {
     double real = 0;  // batch passes in Rounded mode: the unrounded sum
   };
 
-  // Per choice, scratch for one splitter: the summed weight and whether an edge reached
-  // it. The choices of a state are adjacent (s * |A| + a), so a state's signature is one
-  // short scan, usually within one cache line.
-  struct ChoiceScratch {
-    std::uint64_t sum = 0;
-    std::uint32_t touched = 0;
-  };
-
   // Per state: its block and position (kept), whether the splitter touched it and its next
   // state in its group (scratch). One record, so that a state costs one cache miss.
   struct StateScratch {
@@ -161,29 +158,9 @@ class Refiner {
     StateIndex next_in_group = kNone;
   };
 
-  struct IncomingEdge {
-    ChoiceIndex choice;
-    ValueId probability;
-  };
-
   // ---- set-up -----------------------------------------------------------------------------
 
-  // For every state t, the (choice, probability) of each edge into t.
-  void build_reverse_edges() {
-    in_begin_.assign(std::size_t{num_states_} + 1, 0);
-    for (StateIndex t : matrix_.edge_target)
-      ++in_begin_[t + 1];
-    for (std::size_t t = 0; t < num_states_; ++t)
-      in_begin_[t + 1] += in_begin_[t];
-    incoming_.resize(matrix_.num_edges());
-    std::vector<EdgeIndex> cursor(in_begin_.begin(), in_begin_.end() - 1);
-    const std::size_t num_choices = std::size_t{num_states_} * num_actions_;
-    for (ChoiceIndex c = 0; c < num_choices; ++c) {
-      for (EdgeIndex e = matrix_.choice_begin[c]; e < matrix_.choice_begin[c + 1]; ++e) {
-        incoming_[cursor[matrix_.edge_target[e]]++] = {c, matrix_.edge_probability[e]};
-      }
-    }
-  }
+  void build_reverse_edges() { incoming_.emplace(matrix_); }
 
   void initial_partition() {
     const InitialBlocks initial =
@@ -220,9 +197,7 @@ class Refiner {
 
   void allocate_scratch() {
     const std::size_t num_choices = std::size_t{num_states_} * num_actions_;
-    if (weights_.mode == WeightMode::Rounded) real_sum_.assign(num_choices, 0.0);
-    if (weights_.mode == WeightMode::Rational) rational_slot_.assign(num_choices, kNone);
-    choice_scratch_.assign(num_choices, ChoiceScratch{});
+    choice_weight_.assign(num_choices, 0);
     block_first_group_.assign(num_states_, kNone);
   }
 
@@ -243,7 +218,7 @@ class Refiner {
     std::uint64_t count = 0;
     for (std::uint32_t i = blocks_[block].begin; i < blocks_[block].end; ++i) {
       const StateIndex t = elements_[i];
-      count += in_begin_[t + 1] - in_begin_[t];
+      count += incoming_->end(t) - incoming_->begin(t);
     }
     return count;
   }
@@ -261,7 +236,7 @@ class Refiner {
   // one-splitter path.
 
   [[nodiscard]] bool batch_pays_off() const {
-    return weights_.mode != WeightMode::Rational && queued_edges_ * 4 >= incoming_.size() &&
+    return weights_.mode != WeightMode::Rational && queued_edges_ * 4 >= incoming_->size() &&
            queue_.size() > 1;
   }
 
@@ -275,7 +250,7 @@ class Refiner {
     queue_.clear();
     queued_edges_ = 0;
     statistics_.splitters += batch.size();
-    statistics_.edge_visits += incoming_.size();
+    statistics_.edge_visits += incoming_->size();
     ++statistics_.batch_passes;
 
     groups_.clear();
@@ -353,45 +328,45 @@ class Refiner {
     constexpr std::uint32_t kAhead = 16;
     const Block block = blocks_[splitter];
     for (std::uint32_t i = block.begin; i < block.end; ++i) {
-      if (i + kAhead < block.end) __builtin_prefetch(&in_begin_[elements_[i + kAhead]]);
+      if (i + kAhead < block.end) incoming_->prefetch(elements_[i + kAhead]);
       const StateIndex t = elements_[i];
-      const EdgeIndex end = in_begin_[t + 1];
-      statistics_.edge_visits += end - in_begin_[t];
-      for (EdgeIndex e = in_begin_[t]; e < end; ++e) {
-        if (e + kAhead < incoming_.size()) {
-          const ChoiceIndex ahead = incoming_[e + kAhead].choice;
-          __builtin_prefetch(&choice_scratch_[ahead], 1);
+      const EdgeIndex end = incoming_->end(t);
+      statistics_.edge_visits += end - incoming_->begin(t);
+      for (EdgeIndex e = incoming_->begin(t); e < end; ++e) {
+        if (e + kAhead < incoming_->size()) {
+          const ChoiceIndex ahead = incoming_->choice(e + kAhead);
+          __builtin_prefetch(&choice_weight_[ahead], 1);
           __builtin_prefetch(&state_scratch_[ahead / num_actions_], 1);
         }
-        add_weight(incoming_[e].choice, incoming_[e].probability);
+        add_weight(incoming_->choice(e), incoming_->probability(e));
       }
     }
   }
 
   void add_weight(ChoiceIndex c, ValueId probability) {
-    ChoiceScratch& choice = choice_scratch_[c];
-    if (choice.touched == 0) {
-      choice.touched = 1;
+    std::uint64_t& weight = choice_weight_[c];
+    if (weight == 0) {
       const StateIndex s = c / num_actions_;
       std::uint32_t& state_touched = state_scratch_[s].touched;
       if (state_touched == 0) touched_states_.push_back(s);
       state_touched = 1;
       if (weights_.mode == WeightMode::Rational) {
-        rational_slot_[c] = static_cast<std::uint32_t>(touched_choices_.size());
-        touched_choices_.push_back(c);
-        if (rational_sum_.size() < touched_choices_.size()) rational_sum_.emplace_back();
-        rational_sum_[rational_slot_[c]] = 0;
+        if (rational_sum_.size() == rational_sums_used_) rational_sum_.emplace_back();
+        rational_sum_[rational_sums_used_] = 0;
+        weight = ++rational_sums_used_;
       }
     }
     switch (weights_.mode) {
       case WeightMode::Integer:
-        choice.sum += weights_.integer[probability];
+        weight += weights_.integer[probability];
         break;
-      case WeightMode::Rounded:
-        real_sum_[c] += weights_.real[probability];
+      case WeightMode::Rounded: {
+        const double sum = std::bit_cast<double>(weight) + weights_.real[probability];
+        weight = sum == 0 ? kReachedZero : std::bit_cast<std::uint64_t>(sum);
         break;
+      }
       case WeightMode::Rational:
-        rational_sum_[rational_slot_[c]] += model_.values[probability];
+        rational_sum_[weight - 1] += model_.values[probability];
         break;
     }
   }
@@ -403,22 +378,22 @@ class Refiner {
     out.clear();
     const ChoiceIndex first = s * num_actions_;
     for (ActionIndex a = 0; a < num_actions_; ++a) {
-      ChoiceScratch& choice = choice_scratch_[first + a];
-      if (choice.touched == 0) continue;
+      std::uint64_t& weight = choice_weight_[first + a];
+      if (weight == 0) continue;
       switch (weights_.mode) {
         case WeightMode::Integer:
-          out.push_back({a, 0, choice.sum});
+          out.push_back({a, 0, weight});
           break;
         case WeightMode::Rounded:
           out.push_back(
-              {a, 0, static_cast<std::uint64_t>(weights_.rounded_key(real_sum_[first + a]))});
-          real_sum_[first + a] = 0;
+              {a, 0,
+               static_cast<std::uint64_t>(weights_.rounded_key(std::bit_cast<double>(weight)))});
           break;
         case WeightMode::Rational:
-          out.push_back({a, 0, rational_slot_[first + a]});
+          out.push_back({a, 0, weight - 1});
           break;
       }
-      choice = ChoiceScratch{};
+      weight = 0;
     }
   }
 
@@ -467,7 +442,7 @@ class Refiner {
       if (i + kAhead < touched_states_.size()) {
         const StateIndex ahead = touched_states_[i + kAhead];
         __builtin_prefetch(&state_scratch_[ahead]);
-        __builtin_prefetch(&choice_scratch_[std::size_t{ahead} * num_actions_]);
+        __builtin_prefetch(&choice_weight_[std::size_t{ahead} * num_actions_]);
       }
       const StateIndex s = touched_states_[i];
       collect_signature(s, signature_);
@@ -593,11 +568,9 @@ class Refiner {
   // Choice and state records were cleared while grouping and splitting; what is left is
   // the bookkeeping of this splitter.
   void reset_scratch() {
-    for (ChoiceIndex c : touched_choices_)
-      rational_slot_[c] = kNone;  // Rational mode only
     for (BlockIndex b : touched_blocks_)
       block_first_group_[b] = kNone;
-    touched_choices_.clear();
+    rational_sums_used_ = 0;
     touched_states_.clear();
     touched_blocks_.clear();
   }
@@ -611,8 +584,7 @@ class Refiner {
   WeightTable weights_;
   RefinementStatistics statistics_;
 
-  std::vector<EdgeIndex> in_begin_;
-  std::vector<IncomingEdge> incoming_;
+  std::optional<IncomingEdges> incoming_;  // built by build_reverse_edges()
 
   std::vector<StateIndex> elements_;
   std::vector<StateScratch> state_scratch_;
@@ -623,11 +595,19 @@ class Refiner {
   std::vector<std::uint32_t> batch_slot_;  // per block: its index in the batch, or kNone
 
   // Scratch for one splitter, reset after it.
-  std::vector<ChoiceScratch> choice_scratch_;
-  std::vector<double> real_sum_;
-  std::vector<std::uint32_t> rational_slot_;
+  // Per choice, the weight an edge into the current splitter gave it, in 64 bits whose 0
+  // means "no edge reached the choice". The choices of a state are adjacent (s * |A| + a),
+  // so a state's signature is one short scan, usually within one cache line. By mode:
+  //   Integer:  the integer sum; every probability is at least 1 / D, so a reached choice
+  //             sums to at least 1.
+  //   Rounded:  the bits of the double sum; a reached choice whose sum is 0 (a weight too
+  //             small for a double) holds kReachedZero, the bits of -0.0, so it reads as 0.
+  //   Rational: one more than the index of its exact sum in rational_sum_.
+  // 8 bytes per choice in every mode: one array, instead of a flag beside each sum.
+  std::vector<std::uint64_t> choice_weight_;
+  static constexpr std::uint64_t kReachedZero = std::uint64_t{1} << 63U;
   std::vector<Rational> rational_sum_;
-  std::vector<ChoiceIndex> touched_choices_;  // Rational mode: the choices holding a slot
+  std::size_t rational_sums_used_ = 0;  // for the current splitter
   std::vector<StateIndex> touched_states_;
   std::vector<std::uint32_t> block_first_group_;  // indexed by block; blocks never exceed states
   std::vector<BlockIndex> touched_blocks_;

@@ -21,8 +21,8 @@ void add_common_options(CLI::App& command, CommonOptions& options) {
       ->transform(CLI::AsSizeValue(false));
   command
       .add_option("--max-input-size", options.load.max_input_bytes,
-                  "Refuse .aut, .tra, CSV and JSON inputs larger than this (bytes, or 2G; never "
-                  "more than 2^32 - 1)")
+                  "Refuse .aut, .tra, CSV and JSON inputs larger than this (bytes, or with a "
+                  "unit: 8G)")
       ->capture_default_str()
       ->transform(CLI::AsSizeValue(false));
   command

@@ -1,5 +1,6 @@
 #include "cli/model_loader.hpp"
 
+#include <algorithm>
 #include <cstdio>
 #include <iostream>
 
@@ -13,6 +14,20 @@
 
 namespace oasis::cli {
 namespace {
+
+// rt::spec_hash of a file's text, in steps that hand the pages read back to the kernel, so
+// that hashing a large model file does not make it resident again after its reader let it go.
+std::uint64_t hash_text(const SourceFile& file) {
+  constexpr std::size_t kStep = std::size_t{16} << 20;
+  const std::string_view text = file.text();
+  std::uint64_t hash = rt::kFnv1a64Basis;
+  for (std::size_t done = 0; done < text.size(); done += kStep) {
+    const std::size_t size = std::min(kStep, text.size() - done);
+    hash = rt::fnv1a64(reinterpret_cast<const unsigned char*>(text.data() + done), size, hash);
+    file.release_pages_before(done + size);
+  }
+  return hash;
+}
 
 void print_progress(std::uint64_t found, std::uint64_t explored) {
   std::cerr << "\rexploring: " << explored << " of " << found << " states found so far"
@@ -71,7 +86,9 @@ std::optional<LoadedModel> load_model(const std::string& path, SourceManager& so
   loaded.path = path;
   // The input is the first file the front end or the reader adds; hash the bytes it parsed.
   const FileId input = sources.num_files();
-  const auto hash_input = [&] { loaded.source_hash = rt::spec_hash(sources.file(input).text()); };
+  const auto hash_input = [&] {
+    if (options.hash_source) loaded.source_hash = hash_text(sources.file(input));
+  };
   if (prism::is_program_path(path)) {
     loaded.prism_program = true;
     loaded.model = load_prism_program(path, sources, diagnostics, options);

@@ -23,6 +23,7 @@ struct LoadOptions {
   bool progress = false;  // report exploration progress on stderr
   std::string constants;  // PRISM programs: values of undefined constants (--const N=4,p=0.1)
   std::string rewards = "none";  // PRISM programs: reward structures as contexts (--rewards)
+  bool hash_source = true;       // false: leave source_hash 0 (a command that writes no catalog)
 };
 
 struct LoadedModel {
@@ -31,7 +32,7 @@ struct LoadedModel {
   std::optional<model::ExplicitModel> model;  // discrete specs, PRISM programs and imports
   bool prism_program = false;                 // a PRISM program, given or imported by the spec
   // rt::spec_hash of the bytes the front end or the reader parsed, read once: a catalog
-  // remembers which spec it was compiled from by it.
+  // remembers which spec it was compiled from by it. 0 when LoadOptions::hash_source is false.
   std::uint64_t source_hash = 0;
 };
 

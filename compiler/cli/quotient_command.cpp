@@ -174,7 +174,8 @@ int run_quotient(const QuotientOptions& options) {
   SourceManager sources;
   DiagnosticEngine diagnostics(sources, std::cerr, options.common.max_errors);
   const auto start = std::chrono::steady_clock::now();
-  const LoadOptions load_options = effective_load_options(options.common);
+  LoadOptions load_options = effective_load_options(options.common);
+  load_options.hash_source = false;  // a quotient is not a catalog: no spec hash to record
   auto loaded = load_model(options.file, sources, diagnostics, load_options);
   if (!loaded || diagnostics.has_errors()) return 1;
   if (!loaded->model) {

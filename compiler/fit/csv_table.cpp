@@ -63,7 +63,7 @@ class CsvParser {
 
  private:
   SourceLocation at(std::size_t offset) const {
-    return {file_, static_cast<std::uint32_t>(offset)};
+    return {file_, offset};
   }
 
   // Splits text_[begin, end) into cells. false after reporting an unterminated quote.
@@ -162,7 +162,7 @@ std::optional<CsvTable> read_csv(const std::string& path, SourceManager& sources
   MappedFile contents;
   std::string reason;
   // Cells are located by 32-bit offsets, whatever the option says.
-  if (!contents.open(path, std::min(options.max_bytes, limits::kMaxAddressableBytes), reason)) {
+  if (!contents.open(path, options.max_bytes, reason)) {
     diagnostics.file_error(path, "cannot read: " + reason);
     return std::nullopt;
   }

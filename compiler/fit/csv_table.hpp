@@ -38,7 +38,7 @@ struct CsvTable {
 };
 
 struct CsvReadOptions {
-  std::size_t max_bytes = limits::kDefaultMaxInputBytes;  // never more than 2^32 - 1
+  std::size_t max_bytes = limits::kDefaultMaxInputBytes;
 };
 
 // Reads `path` (added to `sources`). Every record must have as many cells as the header.

@@ -171,11 +171,22 @@ class AutReader {
       read_transition();  // reports its own errors; the next line is read either way
       scan_.skip_line();
       if (diagnostics_.should_stop()) return;
+      release_read_pages();
       if (collector_.full()) {
         error_here("the file has more than 2^32 edges");
         return;
       }
     }
+  }
+
+  // The file is read once, front to back: what is behind the scanner need not stay resident
+  // (a 10^7-transition file is 470 MB, more than the model it describes). Diagnostics about
+  // earlier lines still read it, from the page cache.
+  void release_read_pages() {
+    const std::size_t offset = scan_.offset();
+    if (offset - released_ < kReleaseStep) return;
+    source_.release_pages_before(offset);
+    released_ = offset;
   }
 
   bool read_transition() {
@@ -451,6 +462,8 @@ class AutReader {
   std::uint64_t declared_transitions_ = 0;
   std::uint32_t num_states_ = 0;
   std::uint64_t transitions_seen_ = 0;
+  static constexpr std::size_t kReleaseStep = std::size_t{16} << 20;
+  std::size_t released_ = 0;  // bytes of the file handed back by release_read_pages()
 
   std::unordered_map<std::string_view, LabelInfo> labels_;  // keys view the file or owned_labels_
   std::deque<std::string> owned_labels_;

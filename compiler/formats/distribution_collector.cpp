@@ -17,7 +17,7 @@ void DistributionCollector::reserve(std::size_t distributions, std::size_t edges
 }
 
 void DistributionCollector::begin(model::StateIndex source, model::ActionIndex action,
-                                  std::uint32_t offset, std::uint32_t payload) {
+                                  SourceOffset offset, std::uint32_t payload) {
   begin(source, action);
   if (keep_locations_) {
     offsets_.push_back(offset);

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "model/explicit_model.hpp"
+#include "support/source_manager.hpp"
 
 namespace oasis::formats {
 
@@ -32,7 +33,7 @@ class DistributionCollector {
 
   // Starts distribution number size(). `offset` locates it in its file for diagnostics;
   // `payload` is the reader's (a reward id, a choice index).
-  void begin(model::StateIndex source, model::ActionIndex action, std::uint32_t offset,
+  void begin(model::StateIndex source, model::ActionIndex action, SourceOffset offset,
              std::uint32_t payload);
   // The same, for a collector that keeps no locations.
   void begin(model::StateIndex source, model::ActionIndex action);
@@ -49,7 +50,7 @@ class DistributionCollector {
   [[nodiscard]] model::StateIndex source(std::uint32_t d) const { return sources_[d]; }
   [[nodiscard]] model::ActionIndex action(std::uint32_t d) const { return actions_[d]; }
   // Only where locations are kept (the default).
-  [[nodiscard]] std::uint32_t offset(std::uint32_t d) const { return offsets_.at(d); }
+  [[nodiscard]] SourceOffset offset(std::uint32_t d) const { return offsets_.at(d); }
   [[nodiscard]] std::uint32_t payload(std::uint32_t d) const { return payloads_.at(d); }
 
   // Builds the matrix; `num_states * num_actions` must be below 2^32. Repeated
@@ -69,7 +70,7 @@ class DistributionCollector {
   bool keep_locations_ = true;
   std::vector<model::StateIndex> sources_;
   std::vector<model::ActionIndex> actions_;
-  std::vector<std::uint32_t> offsets_;
+  std::vector<SourceOffset> offsets_;
   std::vector<std::uint32_t> payloads_;
   std::vector<model::EdgeIndex> edge_begin_;  // where each distribution's edges start
   std::vector<model::StateIndex> targets_;

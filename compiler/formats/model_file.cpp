@@ -16,7 +16,7 @@ std::optional<FileId> open_file(const std::string& path, SourceManager& sources,
   MappedFile file;
   std::string error;
   // Diagnostics locate bytes with 32-bit offsets; a larger file could not be reported on.
-  if (!file.open(path, std::min(options.max_bytes, limits::kMaxAddressableBytes), error)) {
+  if (!file.open(path, options.max_bytes, error)) {
     diagnostics.file_error(path, error);
     return std::nullopt;
   }

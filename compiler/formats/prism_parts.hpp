@@ -44,7 +44,7 @@ class PrismScanner : public TextScanner {
   [[nodiscard]] SourceLocation location(const char* position) const {
     return {file_, offset_of(position)};
   }
-  [[nodiscard]] std::uint32_t line_of(std::uint32_t offset) const {
+  [[nodiscard]] std::uint64_t line_of(SourceOffset offset) const {
     return diagnostics_.sources().file(file_).line_column(offset).line;
   }
   [[nodiscard]] FileId file() const { return file_; }

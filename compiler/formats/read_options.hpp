@@ -11,8 +11,7 @@
 namespace oasis::formats {
 
 struct ReadOptions {
-  // Larger files are refused before they are read. Source offsets are 32-bit, so the
-  // readers never accept more than 2^32 - 1 bytes whatever this says.
+  // Larger files are refused before they are read.
   std::size_t max_bytes = limits::kDefaultMaxInputBytes;
   // A file declaring more states is refused before anything is allocated for them.
   std::uint32_t max_states = limits::kDefaultMaxStates;

@@ -6,6 +6,8 @@
 #include <cstdint>
 #include <string_view>
 
+#include "support/source_manager.hpp"
+
 namespace oasis::formats {
 
 // A run of digits read as an unsigned number. More than 19 digits may not fit 64 bits:
@@ -25,14 +27,14 @@ class TextScanner {
 
   [[nodiscard]] bool at_end() const { return cursor_ == end_; }
   [[nodiscard]] char peek() const { return cursor_ < end_ ? *cursor_ : '\0'; }
-  [[nodiscard]] std::uint32_t offset() const {
-    return static_cast<std::uint32_t>(cursor_ - begin_);
+  [[nodiscard]] SourceOffset offset() const {
+    return static_cast<SourceOffset>(cursor_ - begin_);
   }
   [[nodiscard]] const char* position() const { return cursor_; }
   [[nodiscard]] const char* end() const { return end_; }
   void seek(const char* position) { cursor_ = position; }
-  [[nodiscard]] std::uint32_t offset_of(const char* position) const {
-    return static_cast<std::uint32_t>(position - begin_);
+  [[nodiscard]] SourceOffset offset_of(const char* position) const {
+    return static_cast<SourceOffset>(position - begin_);
   }
 
   static bool is_blank(char c) { return c == ' ' || c == '\t'; }

@@ -26,7 +26,7 @@ std::optional<model::ModelIR> load_spec(const std::string& path, SourceManager& 
   MappedFile contents;
   std::string reason;
   // Source positions are 32-bit offsets, whatever the option says.
-  if (!contents.open(path, std::min(options.max_bytes, limits::kMaxAddressableBytes), reason)) {
+  if (!contents.open(path, options.max_bytes, reason)) {
     diagnostics.file_error(path, "cannot read spec: " + reason);
     return std::nullopt;
   }

@@ -18,11 +18,6 @@ SourceRange range_of(const Token& token) {
   return SourceRange{token.location, token.length() == 0 ? 1 : token.length()};
 }
 
-// The span from the start of `first` to the end of `last` (same file).
-SourceRange span(SourceRange first, SourceRange last) {
-  const std::uint32_t end = last.begin.offset + last.length;
-  return SourceRange{first.begin, end > first.begin.offset ? end - first.begin.offset : 1};
-}
 
 class Parser {
  public:

@@ -37,7 +37,7 @@ std::optional<model::ExplicitModel> load_program(const std::string& path, Source
   MappedFile contents;
   std::string reason;
   // Source positions are 32-bit offsets, whatever the option says.
-  if (!contents.open(path, std::min(options.max_bytes, limits::kMaxAddressableBytes), reason)) {
+  if (!contents.open(path, options.max_bytes, reason)) {
     if (options.imported_at)
       diagnostics.error(*options.imported_at, "cannot read the imported program: " + reason);
     else

@@ -33,10 +33,6 @@ bool is_keyword(std::string_view word) {
   return std::find(kKeywords.begin(), kKeywords.end(), word) != kKeywords.end();
 }
 
-SourceRange span(SourceRange first, SourceRange last) {
-  if (last.begin.offset < first.begin.offset) return first;
-  return {first.begin, last.begin.offset + last.length - first.begin.offset};
-}
 
 class Parser {
  public:

@@ -9,6 +9,7 @@
 // reported, so a long run shows problems early; after `max_errors` the engine asks callers to
 // stop (`should_stop()`), which keeps a badly broken file from flooding the terminal.
 
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <iosfwd>
@@ -26,6 +27,16 @@ struct SourceRange {
   SourceLocation begin;
   std::uint32_t length = 1;
 };
+
+// The span from the start of `first` to the end of `last` (same file); `first` alone when
+// `last` starts before it. A span longer than 2^32 - 1 bytes is cut there: it is underlined
+// on one line, which is far shorter.
+inline SourceRange span(SourceRange first, SourceRange last) {
+  if (last.begin.offset < first.begin.offset) return first;
+  const SourceOffset end = last.begin.offset + last.length;
+  const SourceOffset length = end > first.begin.offset ? end - first.begin.offset : 1;
+  return {first.begin, static_cast<std::uint32_t>(std::min<SourceOffset>(length, UINT32_MAX))};
+}
 
 class DiagnosticEngine {
  public:

@@ -1,5 +1,6 @@
 #include "support/mapped_file.hpp"
 
+#include <algorithm>
 #include <cerrno>
 #include <cstring>
 #include <string>
@@ -88,6 +89,14 @@ void MappedFile::release() {
   data_ = "";
   size_ = 0;
   owned_.clear();
+}
+
+void MappedFile::release_pages_before(std::size_t bytes) const {
+  if (!mapped_) return;
+  const auto page = static_cast<std::size_t>(::sysconf(_SC_PAGESIZE));
+  const std::size_t whole_pages = std::min(bytes, size_) / page * page;
+  // A hint: when it fails the pages simply stay resident.
+  if (whole_pages > 0) ::madvise(const_cast<char*>(data_), whole_pages, MADV_DONTNEED);
 }
 
 bool MappedFile::open(const std::string& path, std::size_t max_bytes, std::string& error) {

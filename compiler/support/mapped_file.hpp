@@ -23,6 +23,13 @@ class MappedFile {
 
   [[nodiscard]] std::string_view text() const { return {data_, size_}; }
 
+  // Tells the kernel that the first `bytes` of a mapped file are read: their pages leave this
+  // process's resident memory (they stay in the page cache, which may keep or evict them).
+  // text() is unchanged and still valid; a later read of those bytes faults them back in from
+  // the file. A reader that scans a large file once calls this as it goes, so the file never
+  // counts whole in the peak. Nothing happens for a file read into memory.
+  void release_pages_before(std::size_t bytes) const;
+
  private:
   void release();
 

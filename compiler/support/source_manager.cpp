@@ -15,29 +15,29 @@ void SourceFile::index_lines() const {
   if (!line_starts_.empty()) return;
   line_starts_.push_back(0);
   for (std::size_t i = 0; i < text_.size(); ++i) {
-    if (text_[i] == '\n') line_starts_.push_back(static_cast<std::uint32_t>(i + 1));
+    if (text_[i] == '\n') line_starts_.push_back(i + 1);
   }
 }
 
-std::size_t SourceFile::line_index(std::uint32_t offset) const {
+std::size_t SourceFile::line_index(SourceOffset offset) const {
   index_lines();
   const auto next = std::upper_bound(line_starts_.begin(), line_starts_.end(), offset);
   return static_cast<std::size_t>(next - line_starts_.begin()) - 1;
 }
 
-LineColumn SourceFile::line_column(std::uint32_t offset) const {
-  offset = std::min<std::uint32_t>(offset, static_cast<std::uint32_t>(text_.size()));
+LineColumn SourceFile::line_column(SourceOffset offset) const {
+  offset = std::min<SourceOffset>(offset, text_.size());
   const std::size_t line = line_index(offset);
   std::uint32_t column = 1;
-  for (std::uint32_t i = line_starts_[line]; i < offset; ++i) {
+  for (SourceOffset i = line_starts_[line]; i < offset; ++i) {
     // Count code points: skip UTF-8 continuation bytes (10xxxxxx).
     if ((static_cast<unsigned char>(text_[i]) & 0xC0U) != 0x80U) ++column;
   }
-  return {static_cast<std::uint32_t>(line + 1), column};
+  return {line + 1, column};
 }
 
-std::string_view SourceFile::line_text(std::uint32_t offset) const {
-  offset = std::min<std::uint32_t>(offset, static_cast<std::uint32_t>(text_.size()));
+std::string_view SourceFile::line_text(SourceOffset offset) const {
+  offset = std::min<SourceOffset>(offset, text_.size());
   const std::size_t line = line_index(offset);
   const std::size_t begin = line_starts_[line];
   std::size_t end = text_.find('\n', begin);

@@ -13,17 +13,20 @@
 namespace oasis {
 
 using FileId = std::uint32_t;
+// A byte offset into an input file: 64-bit, since machine-written models pass 4 GiB (a
+// 10^8-transition .aut file is 5.3 GB).
+using SourceOffset = std::uint64_t;
 
 // A point in an input file. Offsets are bytes; `file` indexes the SourceManager.
 struct SourceLocation {
   FileId file = 0;
-  std::uint32_t offset = 0;
+  SourceOffset offset = 0;
 };
 
 // 1-based line and column. Columns count Unicode code points, so a caret lines up under
 // non-ASCII text the way an editor shows it.
 struct LineColumn {
-  std::uint32_t line = 1;
+  std::uint64_t line = 1;
   std::uint32_t column = 1;
 };
 
@@ -34,21 +37,24 @@ class SourceFile {
 
   [[nodiscard]] const std::string& path() const { return path_; }
   [[nodiscard]] std::string_view text() const { return text_; }
+  // The text before `offset` is read: its mapped pages may leave resident memory
+  // (MappedFile::release_pages_before). Diagnostics may still read it.
+  void release_pages_before(std::size_t offset) const { mapped_.release_pages_before(offset); }
 
-  [[nodiscard]] LineColumn line_column(std::uint32_t offset) const;
+  [[nodiscard]] LineColumn line_column(SourceOffset offset) const;
   // The line that holds `offset`, without its line terminator.
-  [[nodiscard]] std::string_view line_text(std::uint32_t offset) const;
+  [[nodiscard]] std::string_view line_text(SourceOffset offset) const;
 
  private:
   void index_lines() const;
-  [[nodiscard]] std::size_t line_index(std::uint32_t offset) const;
+  [[nodiscard]] std::size_t line_index(SourceOffset offset) const;
 
   std::string path_;
   MappedFile mapped_;
   std::string owned_;
   std::string_view text_;
   // Computed on the first diagnostic only: a clean run over a large mapped file never pays.
-  mutable std::vector<std::uint32_t> line_starts_;
+  mutable std::vector<SourceOffset> line_starts_;
 };
 
 class SourceManager {

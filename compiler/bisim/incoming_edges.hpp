@@ -1,0 +1,56 @@
+#pragma once
+// The reverse of a TransitionMatrix, for refinement: for every state t, the (choice,
+// probability) of each edge into t, grouped by t.
+//
+// It is the largest structure refinement builds (one record per edge), so a record is packed
+// into 32 bits whenever the choice index and the probability id fit there together: 10^7
+// choices take 24 bits and leave 8 for up to 256 distinct probabilities, which covers the
+// models this tool meets. Otherwise a record takes 64 bits. The choice in this packing costs
+// one shift; the refinement that reads the records is bound by cache misses, not by that.
+
+#include <cstdint>
+#include <vector>
+
+#include "model/explicit_model.hpp"
+
+namespace oasis::bisim {
+
+class IncomingEdges {
+ public:
+  // `allow_packed` false keeps 64-bit records even where 32 would do (for tests).
+  explicit IncomingEdges(const model::TransitionMatrix& matrix, bool allow_packed = true);
+
+  // The edges into t are [begin(t), end(t)).
+  [[nodiscard]] model::EdgeIndex begin(model::StateIndex t) const { return begin_[t]; }
+  [[nodiscard]] model::EdgeIndex end(model::StateIndex t) const { return begin_[t + 1]; }
+  // Asks for t's range to be brought into the cache, for a walk about to reach t.
+  void prefetch(model::StateIndex t) const { __builtin_prefetch(&begin_[t]); }
+  [[nodiscard]] std::size_t size() const { return size_; }
+  [[nodiscard]] bool packed() const { return packed_; }
+
+  [[nodiscard]] model::ChoiceIndex choice(model::EdgeIndex e) const {
+    return packed_ ? packed_records_[e] >> value_bits_ : wide_records_[e].choice;
+  }
+  [[nodiscard]] ValueId probability(model::EdgeIndex e) const {
+    return packed_ ? packed_records_[e] & value_mask_ : wide_records_[e].probability;
+  }
+
+ private:
+  struct WideRecord {
+    model::ChoiceIndex choice;
+    ValueId probability;
+  };
+
+  template <typename Store>
+  void fill(const model::TransitionMatrix& matrix, Store store);
+
+  std::vector<model::EdgeIndex> begin_;  // num_states + 1 offsets
+  std::size_t size_ = 0;
+  bool packed_ = false;
+  std::uint32_t value_bits_ = 0;
+  std::uint32_t value_mask_ = 0;
+  std::vector<std::uint32_t> packed_records_;  // choice << value_bits_ | probability
+  std::vector<WideRecord> wide_records_;
+};
+
+}  // namespace oasis::bisim
