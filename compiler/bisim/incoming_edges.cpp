@@ -41,7 +41,7 @@ IncomingEdges::IncomingEdges(const model::TransitionMatrix& matrix, bool allow_p
 // Places every edge of `matrix` at the next free slot of its target, in choice order.
 template <typename Store>
 void IncomingEdges::fill(const model::TransitionMatrix& matrix, Store store) {
-  std::vector<EdgeIndex> cursor(begin_.begin(), begin_.end() - 1);
+  HugeArray<EdgeIndex> cursor(begin_.begin(), begin_.end() - 1);
   const std::size_t num_choices = std::size_t{matrix.num_states} * matrix.num_actions;
   for (ChoiceIndex c = 0; c < num_choices; ++c) {
     for (EdgeIndex e = matrix.choice_begin[c]; e < matrix.choice_begin[c + 1]; ++e) {

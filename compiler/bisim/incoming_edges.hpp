@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "model/explicit_model.hpp"
+#include "support/huge_page_allocator.hpp"
 
 namespace oasis::bisim {
 
@@ -44,13 +45,18 @@ class IncomingEdges {
   template <typename Store>
   void fill(const model::TransitionMatrix& matrix, Store store);
 
-  std::vector<model::EdgeIndex> begin_;  // num_states + 1 offsets
+  // On huge pages: building the records scatters every edge over all of them, and refinement
+  // reads them at random; with 4 KiB pages most of those accesses also miss the TLB.
+  template <typename T>
+  using HugeArray = std::vector<T, HugePageAllocator<T>>;
+
+  HugeArray<model::EdgeIndex> begin_;  // num_states + 1 offsets
   std::size_t size_ = 0;
   bool packed_ = false;
   std::uint32_t value_bits_ = 0;
   std::uint32_t value_mask_ = 0;
-  std::vector<std::uint32_t> packed_records_;  // choice << value_bits_ | probability
-  std::vector<WideRecord> wide_records_;
+  HugeArray<std::uint32_t> packed_records_;  // choice << value_bits_ | probability
+  HugeArray<WideRecord> wide_records_;
 };
 
 }  // namespace oasis::bisim

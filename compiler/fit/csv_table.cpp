@@ -62,9 +62,7 @@ class CsvParser {
   }
 
  private:
-  SourceLocation at(std::size_t offset) const {
-    return {file_, offset};
-  }
+  SourceLocation at(std::size_t offset) const { return {file_, offset}; }
 
   // Splits text_[begin, end) into cells. false after reporting an unterminated quote.
   bool split(std::size_t begin, std::size_t end, CsvRow& row) {

@@ -162,7 +162,7 @@ class AutReader {
   void read_transitions() {
     const std::size_t expected =
         std::min<std::uint64_t>(declared_transitions_, source_.text().size() / 8);
-    collector_.reserve(expected, expected);
+    collector_.reserve(expected, std::min<std::size_t>(expected, kSampleTransitions * 16));
     for (;;) {
       scan_.skip_blank_lines();
       scan_.skip_blanks();
@@ -170,6 +170,7 @@ class AutReader {
       ++transitions_seen_;
       read_transition();  // reports its own errors; the next line is read either way
       scan_.skip_line();
+      if (transitions_seen_ == kSampleTransitions) reserve_edges_for_the_rest();
       if (diagnostics_.should_stop()) return;
       release_read_pages();
       if (collector_.full()) {
@@ -177,6 +178,22 @@ class AutReader {
         return;
       }
     }
+  }
+
+  // The header gives the number of distributions but not of edges. Growing the edge arrays
+  // by doubling would, at the last doubling, hold the old and the new array at once: the
+  // reader's peak. So once the first lines have shown how many bytes an edge takes, the
+  // arrays are reserved for the rest of the file at that rate, with a margin; capacity never
+  // touched costs address space, not memory.
+  void reserve_edges_for_the_rest() {
+    const std::size_t edges = collector_.num_edges();
+    if (edges == 0) return;
+    const double bytes_per_edge =
+        static_cast<double>(scan_.offset_of(scan_.position()) - scan_.offset_of(header_)) /
+        static_cast<double>(edges);
+    const auto rest = static_cast<double>(scan_.end() - scan_.position());
+    const auto expected = static_cast<std::size_t>(rest / bytes_per_edge * 1.05) + edges;
+    collector_.reserve_edges(std::min<std::size_t>(expected, UINT32_MAX));
   }
 
   // The file is read once, front to back: what is behind the scanner need not stay resident
@@ -462,6 +479,7 @@ class AutReader {
   std::uint64_t declared_transitions_ = 0;
   std::uint32_t num_states_ = 0;
   std::uint64_t transitions_seen_ = 0;
+  static constexpr std::uint64_t kSampleTransitions = 4096;
   static constexpr std::size_t kReleaseStep = std::size_t{16} << 20;
   std::size_t released_ = 0;  // bytes of the file handed back by release_read_pages()
 

@@ -41,7 +41,7 @@ std::optional<model::TransitionMatrix> DistributionCollector::finish(
   // First the distribution of each choice, in the array that becomes choice_begin.
   std::vector<model::EdgeIndex>& owner = matrix.choice_begin;
   owner.assign(num_choices + 1, kNone);
-  bool in_order = sorted_;
+  bool in_order = true;  // distributions in choice order
   std::size_t previous = 0;
   for (std::uint32_t d = 0; d < size(); ++d) {
     const std::size_t c = std::size_t{sources_[d]} * num_actions + actions_[d];
@@ -55,6 +55,7 @@ std::optional<model::TransitionMatrix> DistributionCollector::finish(
   }
   if (!duplicates.empty()) return std::nullopt;
   if (in_order) {
+    if (!sorted_) normalize_in_place(values);
     build_in_place(matrix);
   } else {
     build_copying(matrix, values);
@@ -76,6 +77,32 @@ void DistributionCollector::build_in_place(model::TransitionMatrix& matrix) {
   matrix.edge_probability = std::move(probabilities_);
   targets_.clear();
   probabilities_.clear();
+}
+
+// Distributions in choice order, some with unsorted or repeated targets: each is sorted and
+// merged where it lies. Merging only shrinks a distribution, so edges move towards the front
+// and the arrays become the CSR arrays without a second copy of them (which, for a large
+// file, would be the reader's peak).
+void DistributionCollector::normalize_in_place(RationalPool& values) {
+  std::vector<std::pair<model::StateIndex, ValueId>> row;
+  std::size_t kept = 0;
+  for (std::uint32_t d = 0; d < size(); ++d) {
+    const std::size_t first = edge_begin_[d];
+    const std::size_t last = d + 1 < size() ? edge_begin_[d + 1] : targets_.size();
+    row.clear();
+    for (std::size_t e = first; e < last; ++e)
+      row.emplace_back(targets_[e], probabilities_[e]);
+    model::normalize_distribution(row, values);
+    edge_begin_[d] = static_cast<model::EdgeIndex>(kept);
+    for (const auto& [target, probability] : row) {
+      targets_[kept] = target;
+      probabilities_[kept] = probability;
+      ++kept;
+    }
+  }
+  targets_.resize(kept);
+  probabilities_.resize(kept);
+  sorted_ = true;
 }
 
 void DistributionCollector::build_copying(model::TransitionMatrix& matrix, RationalPool& values) {

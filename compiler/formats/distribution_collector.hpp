@@ -5,8 +5,9 @@
 // the same action (not an MDP) and point at both places. The action set may still grow
 // while distributions are added: choice indices are only formed in finish().
 //
-// Files written in (state, action) order with sorted targets, which is what our writers and
-// most tools produce, are finished without copying a single edge.
+// Files written in (state, action) order, which is what our writers and most tools produce,
+// are finished without a second copy of their edges: a distribution whose targets are not
+// sorted is sorted where it lies.
 
 #include <cstdint>
 #include <optional>
@@ -30,6 +31,11 @@ class DistributionCollector {
   explicit DistributionCollector(bool keep_locations) : keep_locations_(keep_locations) {}
 
   void reserve(std::size_t distributions, std::size_t edges);
+  // Room for `edges` edges in all, for a reader that learns their number while reading.
+  void reserve_edges(std::size_t edges) {
+    targets_.reserve(edges);
+    probabilities_.reserve(edges);
+  }
 
   // Starts distribution number size(). `offset` locates it in its file for diagnostics;
   // `payload` is the reader's (a reward id, a choice index).
@@ -65,6 +71,7 @@ class DistributionCollector {
   static constexpr std::uint32_t kNone = UINT32_MAX;
 
   void build_copying(model::TransitionMatrix& matrix, RationalPool& values);
+  void normalize_in_place(RationalPool& values);
   void build_in_place(model::TransitionMatrix& matrix);
 
   bool keep_locations_ = true;

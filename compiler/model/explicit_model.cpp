@@ -101,12 +101,13 @@ TransitionMatrix TransitionBuilder::finish(RationalPool& values) {
   return matrix;
 }
 
-void append_distribution(std::vector<std::pair<StateIndex, ValueId>>& row, RationalPool& values,
-                         TransitionMatrix& matrix) {
+void normalize_distribution(std::vector<std::pair<StateIndex, ValueId>>& row,
+                            RationalPool& values) {
   const auto by_target = [](const auto& x, const auto& y) { return x.first < y.first; };
   if (!std::is_sorted(row.begin(), row.end(), by_target)) {
     std::stable_sort(row.begin(), row.end(), by_target);
   }
+  std::size_t kept = 0;
   for (std::size_t i = 0; i < row.size();) {
     std::size_t j = i + 1;
     ValueId probability = row[i].second;
@@ -116,9 +117,18 @@ void append_distribution(std::vector<std::pair<StateIndex, ValueId>>& row, Ratio
         sum += values[row[j].second];
       probability = values.intern(sum);
     }
-    matrix.edge_target.push_back(row[i].first);
-    matrix.edge_probability.push_back(probability);
+    row[kept++] = {row[i].first, probability};
     i = j;
+  }
+  row.resize(kept);
+}
+
+void append_distribution(std::vector<std::pair<StateIndex, ValueId>>& row, RationalPool& values,
+                         TransitionMatrix& matrix) {
+  normalize_distribution(row, values);
+  for (const auto& [target, probability] : row) {
+    matrix.edge_target.push_back(target);
+    matrix.edge_probability.push_back(probability);
   }
 }
 

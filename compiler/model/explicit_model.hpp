@@ -156,9 +156,13 @@ class TransitionBuilder {
   std::vector<ValueId> probabilities_;
 };
 
-// Appends one distribution to the end of `matrix`'s edge arrays: sorts `row` by target
-// (stably) and merges repeated targets by adding their probabilities exactly. The caller
-// sets choice_begin.
+// Sorts `row` by target (stably) and merges repeated targets by adding their probabilities
+// exactly: one distribution in the form a TransitionMatrix keeps.
+void normalize_distribution(std::vector<std::pair<StateIndex, ValueId>>& row,
+                            RationalPool& values);
+
+// Appends one distribution to the end of `matrix`'s edge arrays, normalized as above. The
+// caller sets choice_begin.
 void append_distribution(std::vector<std::pair<StateIndex, ValueId>>& row, RationalPool& values,
                          TransitionMatrix& matrix);
 
