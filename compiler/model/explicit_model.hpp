@@ -158,8 +158,7 @@ class TransitionBuilder {
 
 // Sorts `row` by target (stably) and merges repeated targets by adding their probabilities
 // exactly: one distribution in the form a TransitionMatrix keeps.
-void normalize_distribution(std::vector<std::pair<StateIndex, ValueId>>& row,
-                            RationalPool& values);
+void normalize_distribution(std::vector<std::pair<StateIndex, ValueId>>& row, RationalPool& values);
 
 // Appends one distribution to the end of `matrix`'s edge arrays, normalized as above. The
 // caller sets choice_begin.
