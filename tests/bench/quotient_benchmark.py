@@ -13,6 +13,9 @@ Prints seconds, peak RSS, blocks and time / (m log2 n) so growth can be compared
 fails when a block count differs from the known answer.
 
     tests/bench/quotient_benchmark.py --build build/default [--family all] [--sizes 4,5,6,7]
+
+`--family planted --sizes 8` is the 10^8-transition run: a 5.3 GB file in the temporary
+directory, about 6 GiB of memory and 5 minutes on one core.
 """
 import argparse
 import math
