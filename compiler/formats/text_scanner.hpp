@@ -27,9 +27,7 @@ class TextScanner {
 
   [[nodiscard]] bool at_end() const { return cursor_ == end_; }
   [[nodiscard]] char peek() const { return cursor_ < end_ ? *cursor_ : '\0'; }
-  [[nodiscard]] SourceOffset offset() const {
-    return static_cast<SourceOffset>(cursor_ - begin_);
-  }
+  [[nodiscard]] SourceOffset offset() const { return static_cast<SourceOffset>(cursor_ - begin_); }
   [[nodiscard]] const char* position() const { return cursor_; }
   [[nodiscard]] const char* end() const { return end_; }
   void seek(const char* position) { cursor_ = position; }

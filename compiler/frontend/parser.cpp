@@ -18,7 +18,6 @@ SourceRange range_of(const Token& token) {
   return SourceRange{token.location, token.length() == 0 ? 1 : token.length()};
 }
 
-
 class Parser {
  public:
   Parser(FileId file, const std::vector<Token>& tokens, DiagnosticEngine& diagnostics)

@@ -33,7 +33,6 @@ bool is_keyword(std::string_view word) {
   return std::find(kKeywords.begin(), kKeywords.end(), word) != kKeywords.end();
 }
 
-
 class Parser {
  public:
   Parser(const std::vector<Token>& tokens, DiagnosticEngine& diagnostics)
