@@ -79,6 +79,15 @@ void DistributionCollector::build_in_place(model::TransitionMatrix& matrix) {
   probabilities_.clear();
 }
 
+// The (target, probability) edges of distribution d, as collected.
+void DistributionCollector::copy_distribution(
+    std::uint32_t d, std::vector<std::pair<model::StateIndex, ValueId>>& row) const {
+  const std::size_t last = d + 1 < size() ? edge_begin_[d + 1] : targets_.size();
+  row.clear();
+  for (std::size_t e = edge_begin_[d]; e < last; ++e)
+    row.emplace_back(targets_[e], probabilities_[e]);
+}
+
 // Distributions in choice order, some with unsorted or repeated targets: each is sorted and
 // merged where it lies. Merging only shrinks a distribution, so edges move towards the front
 // and the arrays become the CSR arrays without a second copy of them (which, for a large
@@ -87,11 +96,7 @@ void DistributionCollector::normalize_in_place(RationalPool& values) {
   std::vector<std::pair<model::StateIndex, ValueId>> row;
   std::size_t kept = 0;
   for (std::uint32_t d = 0; d < size(); ++d) {
-    const std::size_t first = edge_begin_[d];
-    const std::size_t last = d + 1 < size() ? edge_begin_[d + 1] : targets_.size();
-    row.clear();
-    for (std::size_t e = first; e < last; ++e)
-      row.emplace_back(targets_[e], probabilities_[e]);
+    copy_distribution(d, row);
     model::normalize_distribution(row, values);
     edge_begin_[d] = static_cast<model::EdgeIndex>(kept);
     for (const auto& [target, probability] : row) {
@@ -114,11 +119,7 @@ void DistributionCollector::build_copying(model::TransitionMatrix& matrix, Ratio
     const std::uint32_t d = begin[c];
     begin[c] = static_cast<model::EdgeIndex>(matrix.edge_target.size());
     if (d == kNone) continue;
-    const std::size_t first = edge_begin_[d];
-    const std::size_t last = d + 1 < size() ? edge_begin_[d + 1] : targets_.size();
-    row.clear();
-    for (std::size_t e = first; e < last; ++e)
-      row.emplace_back(targets_[e], probabilities_[e]);
+    copy_distribution(d, row);
     model::append_distribution(row, values, matrix);
   }
   begin.back() = static_cast<model::EdgeIndex>(matrix.edge_target.size());

@@ -11,6 +11,7 @@
 
 #include <cstdint>
 #include <optional>
+#include <utility>
 #include <vector>
 
 #include "model/explicit_model.hpp"
@@ -72,6 +73,8 @@ class DistributionCollector {
 
   void build_copying(model::TransitionMatrix& matrix, RationalPool& values);
   void normalize_in_place(RationalPool& values);
+  void copy_distribution(std::uint32_t d,
+                         std::vector<std::pair<model::StateIndex, ValueId>>& row) const;
   void build_in_place(model::TransitionMatrix& matrix);
 
   bool keep_locations_ = true;
