@@ -1,6 +1,7 @@
 #include "formats/aut_reader.hpp"
 
 #include <algorithm>
+#include <cstring>
 #include <deque>
 #include <filesystem>
 #include <string>
@@ -41,10 +42,19 @@ std::string state_range_message(std::uint64_t state, std::string_view digits,
          (num_states == 1 ? " state" : " states");
 }
 
+// Which part of the body a distributed reader reads, and where its lines go.
+struct PartReading {
+  std::uint32_t index = 0;
+  std::uint32_t count = 1;
+  const AutLineSink* sink = nullptr;
+};
+
 class AutReader {
  public:
-  AutReader(FileId file, DiagnosticEngine& diagnostics, const ReadOptions& options)
-      : file_(file),
+  AutReader(FileId file, DiagnosticEngine& diagnostics, const ReadOptions& options,
+            std::optional<PartReading> part = std::nullopt)
+      : part_(part),
+        file_(file),
         source_(diagnostics.sources().file(file)),
         diagnostics_(diagnostics),
         options_(options),
@@ -59,6 +69,23 @@ class AutReader {
     if (diagnostics_.should_stop() || !assemble_model()) return std::nullopt;
     if (diagnostics_.error_count() != errors_before_) return std::nullopt;
     return std::move(model_);
+  }
+
+  std::optional<AutPart> read_part(bool& header_read) {
+    header_read = read_header();
+    if (!header_read) return std::nullopt;
+    seek_to_part();
+    read_transitions();
+    if (diagnostics_.error_count() != errors_before_) return std::nullopt;
+    AutPart part;
+    part.num_states = num_states_;
+    part.initial = model_.states.initial;
+    part.declared_transitions = declared_transitions_;
+    part.declared_transitions_offset = scan_.offset_of(transitions_token_);
+    part.lines = transitions_seen_;
+    part.actions = std::move(model_.actions);
+    part.values = std::move(model_.values);
+    return part;
   }
 
  private:
@@ -158,19 +185,47 @@ class AutReader {
     return ok;
   }
 
+  // --- parts of the body, for a distributed reader --------------------------------------
+  // Byte `part * size / count` of the body, computed without overflowing 64 bits.
+  [[nodiscard]] static std::uint64_t part_boundary(std::uint64_t size, std::uint32_t part,
+                                                   std::uint32_t count) {
+    return size / count * part + size % count * part / count;
+  }
+
+  // The first line start at or after `position` (lines start after a newline).
+  [[nodiscard]] const char* line_start_at_or_after(const char* position, const char* body) const {
+    if (position == body || position[-1] == '\n') return position;
+    const void* newline =
+        std::memchr(position, '\n', static_cast<std::size_t>(scan_.end() - position));
+    return newline ? static_cast<const char*>(newline) + 1 : scan_.end();
+  }
+
+  void seek_to_part() {
+    const char* body = scan_.position();
+    const auto size = static_cast<std::uint64_t>(scan_.end() - body);
+    const auto at = [&](std::uint32_t part) {
+      return line_start_at_or_after(body + part_boundary(size, part, part_->count), body);
+    };
+    part_end_ = at(part_->index + 1);
+    scan_.seek(at(part_->index));
+  }
+
   // --- transitions: (FROM, LABEL, TARGETS) ---------------------------------------------
   void read_transitions() {
-    const std::size_t expected =
-        std::min<std::uint64_t>(declared_transitions_, source_.text().size() / 8);
-    collector_.reserve(expected, std::min<std::size_t>(expected, kSampleTransitions * 16));
+    if (!part_) {
+      const std::size_t expected =
+          std::min<std::uint64_t>(declared_transitions_, source_.text().size() / 8);
+      collector_.reserve(expected, std::min<std::size_t>(expected, kSampleTransitions * 16));
+    }
     for (;;) {
       scan_.skip_blank_lines();
+      if (part_ && scan_.position() >= part_end_) return;  // the next part's line
       scan_.skip_blanks();
       if (scan_.at_end() || scan_.peek() == '\x04') return;  // EOT ends the file, as in mCRL2
       ++transitions_seen_;
       read_transition();  // reports its own errors; the next line is read either way
       scan_.skip_line();
-      if (transitions_seen_ == kSampleTransitions) reserve_edges_for_the_rest();
+      if (!part_ && transitions_seen_ == kSampleTransitions) reserve_edges_for_the_rest();
       if (diagnostics_.should_stop()) return;
       release_read_pages();
       if (collector_.full()) {
@@ -245,12 +300,24 @@ class AutReader {
     }
     // Only a fully checked line reaches the collector, so errors never leave half a
     // distribution behind.
+    if (part_) {
+      hand_over(static_cast<StateIndex>(source.value), *label, scan_.offset_of(label_token));
+      return true;
+    }
     collector_.begin(static_cast<StateIndex>(source.value), label->action,
                      scan_.offset_of(label_token), label->reward);
     for (const Target& target : targets_) {
       collector_.add(static_cast<StateIndex>(target.state), target.probability);
     }
     return true;
+  }
+
+  void hand_over(StateIndex source, const LabelInfo& label, SourceOffset offset) {
+    row_.clear();
+    for (const Target& target : targets_)
+      row_.emplace_back(static_cast<StateIndex>(target.state), target.probability);
+    model::normalize_distribution(row_, model_.values);
+    (*part_->sink)(AutLine{offset, source, label.action, label.reward, row_});
   }
 
   bool expect(char c, const char* message) {
@@ -462,6 +529,9 @@ class AutReader {
                                  " for action '" + action + "' is here");
   }
 
+  std::optional<PartReading> part_;
+  const char* part_end_ = nullptr;
+  std::vector<std::pair<StateIndex, ValueId>> row_;  // the line handed to a part's sink
   FileId file_;
   const SourceFile& source_;
   DiagnosticEngine& diagnostics_;
@@ -496,6 +566,14 @@ class AutReader {
 std::optional<model::ExplicitModel> read_aut(FileId file, DiagnosticEngine& diagnostics,
                                              const ReadOptions& options) {
   return AutReader(file, diagnostics, options).read();
+}
+
+std::optional<AutPart> read_aut_part(FileId file, DiagnosticEngine& diagnostics,
+                                     const ReadOptions& options, std::uint32_t index,
+                                     std::uint32_t count, const AutLineSink& sink,
+                                     bool& header_read) {
+  return AutReader(file, diagnostics, options, PartReading{index, count, &sink})
+      .read_part(header_read);
 }
 
 }  // namespace oasis::formats

@@ -1,0 +1,288 @@
+#include "distributed/distributed_reader.hpp"
+
+#include <algorithm>
+#include <filesystem>
+#include <iostream>
+#include <map>
+#include <sstream>
+
+#include "formats/aut_reader.hpp"
+#include "support/diagnostics.hpp"
+#include "support/mapped_file.hpp"
+#include "support/source_manager.hpp"
+
+namespace oasis::distributed {
+namespace {
+
+using model::StateIndex;
+
+// A rank sends what it has read once this much is waiting: the reading's memory beyond the
+// rank's share of the model is two such batches (one leaving, one arriving) per rank.
+constexpr std::size_t kBatchBytes = std::size_t{16} << 20;
+
+// The lines that reached their owner, in arrival order. Action and value ids are the
+// sender's until the tables are known.
+struct Arrivals {
+  std::vector<std::uint32_t> state;  // local
+  std::vector<std::uint32_t> sender;
+  std::vector<std::uint32_t> action;
+  std::vector<ValueId> reward;
+  std::vector<std::uint32_t> edge_begin;
+  std::vector<std::uint32_t> edge_count;
+  std::vector<StateIndex> edge_target;
+  std::vector<ValueId> edge_probability;
+  bool too_many_edges = false;
+
+  void take(std::uint32_t from, const Bytes& bytes, const Ownership& ownership) {
+    ByteReader reader(bytes);
+    while (!reader.at_end()) {
+      state.push_back(ownership.local(reader.get<StateIndex>()));
+      sender.push_back(from);
+      action.push_back(reader.get<std::uint32_t>());
+      reward.push_back(reader.get<ValueId>());
+      const auto count = reader.get<std::uint32_t>();
+      if (edge_target.size() + count >= UINT32_MAX) too_many_edges = true;
+      edge_begin.push_back(static_cast<std::uint32_t>(edge_target.size()));
+      edge_count.push_back(count);
+      for (std::uint32_t i = 0; i < count; ++i) {
+        edge_target.push_back(reader.get<StateIndex>());
+        edge_probability.push_back(reader.get<ValueId>());
+      }
+    }
+  }
+};
+
+// Sends lines to their owners in batches. Every flush is collective: a rank whose part is
+// read keeps flushing (with nothing to send) until every rank's part is read.
+class LineSender {
+ public:
+  LineSender(const Communicator& communicator, Arrivals& arrivals, const Ownership& ownership)
+      : communicator_(communicator),
+        arrivals_(arrivals),
+        ownership_(ownership),
+        outgoing_(communicator.size()) {}
+
+  void send(const formats::AutLine& line) {
+    Bytes& bytes = outgoing_[ownership_.owner(line.source)];
+    const std::size_t before = bytes.size();
+    ByteWriter writer(bytes);
+    writer.put(line.source);
+    writer.put(line.action);
+    writer.put(line.reward);
+    writer.put(static_cast<std::uint32_t>(line.row.size()));
+    for (const auto& [target, probability] : line.row) {
+      writer.put(target);
+      writer.put(probability);
+    }
+    waiting_ += bytes.size() - before;
+    if (waiting_ >= kBatchBytes) flush(false);
+  }
+
+  // Returns whether every rank has finished reading.
+  bool flush(bool finished) {
+    waiting_ = 0;
+    const std::vector<Bytes> incoming = communicator_.exchange(outgoing_);
+    outgoing_.assign(communicator_.size(), Bytes());
+    for (std::uint32_t q = 0; q < incoming.size(); ++q)
+      arrivals_.take(q, incoming[q], ownership_);
+    return !communicator_.any(!finished);
+  }
+
+ private:
+  const Communicator& communicator_;
+  Arrivals& arrivals_;
+  const Ownership& ownership_;
+  std::vector<Bytes> outgoing_;
+  std::size_t waiting_ = 0;
+};
+
+std::string serialize_tables(const formats::AutPart& part) {
+  Bytes bytes;
+  ByteWriter writer(bytes);
+  writer.put(static_cast<std::uint32_t>(part.actions.size()));
+  for (const std::string& action : part.actions)
+    writer.put_text(action);
+  writer.put(static_cast<std::uint32_t>(part.values.size()));
+  for (std::size_t id = 0; id < part.values.size(); ++id)
+    writer.put_text(to_string(part.values[static_cast<ValueId>(id)]));
+  return {bytes.begin(), bytes.end()};
+}
+
+// The global action list and value pool from every rank's tables, and per rank the map
+// from its ids to the global ones. Built in rank order, so identical on every rank.
+struct GlobalTables {
+  std::vector<std::string> actions;
+  RationalPool values;
+  std::vector<std::vector<std::uint32_t>> action_of;  // [rank][rank's action id]
+  std::vector<std::vector<ValueId>> value_of;         // [rank][rank's value id]
+};
+
+GlobalTables merge_tables(const std::vector<std::string>& tables) {
+  GlobalTables global;
+  global.action_of.resize(tables.size());
+  global.value_of.resize(tables.size());
+  std::vector<std::vector<std::string>> names(tables.size());
+  for (std::size_t q = 0; q < tables.size(); ++q) {
+    ByteReader reader(std::span<const char>(tables[q].data(), tables[q].size()));
+    const auto num_actions = reader.get<std::uint32_t>();
+    for (std::uint32_t a = 0; a < num_actions; ++a)
+      names[q].emplace_back(reader.get_text());
+    const auto num_values = reader.get<std::uint32_t>();
+    for (std::uint32_t v = 0; v < num_values; ++v) {
+      // Written by to_string on a rank of this job: always parses.
+      const std::optional<Rational> value = parse_rational(reader.get_text());
+      global.value_of[q].push_back(global.values.intern(value.value_or(0)));
+    }
+  }
+  std::map<std::string, std::uint32_t> sorted;
+  for (const auto& list : names)
+    for (const std::string& name : list)
+      sorted.emplace(name, 0);
+  for (auto& [name, id] : sorted) {
+    id = static_cast<std::uint32_t>(global.actions.size());
+    global.actions.push_back(name);
+  }
+  for (std::size_t q = 0; q < names.size(); ++q)
+    for (const std::string& name : names[q])
+      global.action_of[q].push_back(sorted.at(name));
+  return global;
+}
+
+template <typename T>
+void permute(std::vector<T>& values, const std::vector<std::uint32_t>& order) {
+  std::vector<T> permuted(order.size());
+  for (std::size_t i = 0; i < order.size(); ++i)
+    permuted[i] = values[order[i]];
+  values = std::move(permuted);
+}
+
+// Translates the arrivals' ids to the global tables and groups them by owned state, sorted
+// by action. Returns the first (state, action) given twice, if any.
+std::optional<std::pair<StateIndex, std::uint32_t>> assemble(Arrivals& arrivals,
+                                                             const GlobalTables& tables,
+                                                             OwnedModel& owned) {
+  for (std::size_t c = 0; c < arrivals.action.size(); ++c) {
+    const std::uint32_t q = arrivals.sender[c];
+    arrivals.action[c] = tables.action_of[q][arrivals.action[c]];
+    arrivals.reward[c] = tables.value_of[q][arrivals.reward[c]];
+    const std::uint32_t end = arrivals.edge_begin[c] + arrivals.edge_count[c];
+    for (std::uint32_t e = arrivals.edge_begin[c]; e < end; ++e)
+      arrivals.edge_probability[e] = tables.value_of[q][arrivals.edge_probability[e]];
+  }
+  arrivals.sender = {};
+  // A counting sort by state, then each state's few choices by action.
+  const std::uint32_t num_owned = owned.ownership.share(owned.num_states, owned.ownership.rank);
+  std::vector<std::uint32_t>& begin = owned.state_choice_begin;
+  begin.assign(std::size_t{num_owned} + 1, 0);
+  for (std::uint32_t s : arrivals.state)
+    ++begin[s + 1];
+  for (std::uint32_t i = 0; i < num_owned; ++i)
+    begin[i + 1] += begin[i];
+  std::vector<std::uint32_t> order(arrivals.state.size());
+  {
+    std::vector<std::uint32_t> next(begin.begin(), begin.end() - 1);
+    for (std::uint32_t c = 0; c < arrivals.state.size(); ++c)
+      order[next[arrivals.state[c]]++] = c;
+  }
+  arrivals.state = {};
+  std::optional<std::pair<StateIndex, std::uint32_t>> repeated;
+  for (std::uint32_t i = 0; i < num_owned; ++i) {
+    const auto first = order.begin() + begin[i];
+    const auto last = order.begin() + begin[i + 1];
+    std::sort(first, last, [&](std::uint32_t x, std::uint32_t y) {
+      return arrivals.action[x] < arrivals.action[y];
+    });
+    const auto same = std::adjacent_find(first, last, [&](std::uint32_t x, std::uint32_t y) {
+      return arrivals.action[x] == arrivals.action[y];
+    });
+    if (same != last && !repeated)
+      repeated.emplace(owned.ownership.global(i, owned.ownership.rank), arrivals.action[*same]);
+  }
+  permute(arrivals.action, order);
+  permute(arrivals.reward, order);
+  permute(arrivals.edge_begin, order);
+  permute(arrivals.edge_count, order);
+  owned.choice_action = std::move(arrivals.action);
+  owned.choice_reward = std::move(arrivals.reward);
+  owned.edge_begin = std::move(arrivals.edge_begin);
+  owned.edge_count = std::move(arrivals.edge_count);
+  owned.edge_target = std::move(arrivals.edge_target);
+  owned.edge_probability = std::move(arrivals.edge_probability);
+  return repeated;
+}
+
+// Reads this rank's part and sends its lines on. Returns the part, or nullopt after
+// reporting errors (rank 0 reports the header's; the others only their part's).
+std::optional<formats::AutPart> read_own_part(const std::string& path,
+                                              const formats::ReadOptions& options,
+                                              const Communicator& communicator, LineSender& sender,
+                                              SourceManager& sources) {
+  std::ostringstream buffered;
+  DiagnosticEngine diagnostics(sources, communicator.is_root() ? std::cerr : buffered);
+  MappedFile file;
+  std::string error;
+  if (!file.open(path, options.max_bytes, error)) {
+    if (communicator.is_root()) diagnostics.file_error(path, error);
+    return std::nullopt;
+  }
+  const FileId id = sources.add(path, std::move(file));
+  bool header_read = false;
+  std::optional<formats::AutPart> part = formats::read_aut_part(
+      id, diagnostics, options, communicator.rank(), communicator.size(),
+      [&](const formats::AutLine& line) { sender.send(line); }, header_read);
+  if (header_read && !communicator.is_root()) std::cerr << buffered.str() << std::flush;
+  return part;
+}
+
+}  // namespace
+
+std::optional<OwnedModel> read_aut_distributed(const std::string& path,
+                                               const formats::ReadOptions& options,
+                                               const Communicator& communicator) {
+  OwnedModel owned;
+  owned.ownership = Ownership{communicator.rank(), communicator.size()};
+  owned.name = std::filesystem::path(path).stem().string();
+  Arrivals arrivals;
+  LineSender sender(communicator, arrivals, owned.ownership);
+  SourceManager sources;
+  std::optional<formats::AutPart> part =
+      read_own_part(path, options, communicator, sender, sources);
+  while (!sender.flush(true)) {
+  }
+  if (communicator.any(!part.has_value() || arrivals.too_many_edges)) {
+    if (arrivals.too_many_edges)
+      std::cerr << path << ": error: more than 2^32 edges start at the states of rank "
+                << communicator.rank() << "; run with more ranks\n";
+    return std::nullopt;
+  }
+  owned.num_states = part->num_states;
+  const std::uint64_t lines = communicator.sum(part->lines);
+  if (lines != part->declared_transitions) {
+    if (communicator.is_root()) {
+      DiagnosticEngine diagnostics(sources, std::cerr);
+      diagnostics.error(SourceRange{{FileId{0}, part->declared_transitions_offset},
+                                    static_cast<std::uint32_t>(
+                                        std::to_string(part->declared_transitions).size())},
+                        "the header declares " + std::to_string(part->declared_transitions) +
+                            " transitions but the file has " + std::to_string(lines));
+    }
+    return std::nullopt;
+  }
+  GlobalTables tables = merge_tables(communicator.all_gather(serialize_tables(*part)));
+  part.reset();
+  sources = SourceManager();
+  const auto repeated = assemble(arrivals, tables, owned);
+  if (repeated) {
+    std::cerr << path << ": error: state " << repeated->first
+              << " has more than one distribution for action '" << tables.actions[repeated->second]
+              << "'; an MDP allows one per action ('oasisc check " << path
+              << "' shows the lines)\n";
+  }
+  if (communicator.any(repeated.has_value())) return std::nullopt;
+  owned.actions = std::move(tables.actions);
+  owned.values = std::move(tables.values);
+  owned.num_edges = communicator.sum(owned.edge_target.size());
+  return owned;
+}
+
+}  // namespace oasis::distributed

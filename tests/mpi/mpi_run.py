@@ -1,0 +1,41 @@
+"""Running oasisc-mpi under mpirun from the tests: the environment OpenMPI 4.1 needs on a CI
+machine (root, fewer cores than ranks) and a bounded wait."""
+
+import os
+import shutil
+import subprocess
+from pathlib import Path
+
+_session_root = None
+
+
+def start_work(path):
+    """Empties the test's work folder and keeps OpenMPI's session files in it, not in TMPDIR
+    (which the suite checks is left empty)."""
+    global _session_root
+    work = Path(path)
+    shutil.rmtree(work, ignore_errors=True)
+    work.mkdir(parents=True)
+    _session_root = work / "mpi-session"
+    _session_root.mkdir()
+    return work
+
+
+def mpi_environment():
+    env = dict(os.environ)
+    if _session_root is not None:
+        env["TMPDIR"] = str(_session_root)
+    # CI runs as root; OpenMPI refuses that unless told twice.
+    env["OMPI_ALLOW_RUN_AS_ROOT"] = "1"
+    env["OMPI_ALLOW_RUN_AS_ROOT_CONFIRM"] = "1"
+    # More ranks than cores: let ranks that wait give the core away instead of spinning.
+    env["OMPI_MCA_mpi_yield_when_idle"] = "1"
+    env["OMPI_MCA_rmaps_base_oversubscribe"] = "1"
+    return env
+
+
+def mpirun(ranks, command, timeout=600, extra_env=None):
+    env = mpi_environment()
+    env.update(extra_env or {})
+    return subprocess.run(["mpirun", "-np", str(ranks), "--oversubscribe"] + command,
+                          capture_output=True, text=True, env=env, timeout=timeout)
