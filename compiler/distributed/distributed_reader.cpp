@@ -20,36 +20,51 @@ using model::StateIndex;
 // rank's share of the model is two such batches (one leaving, one arriving) per rank.
 constexpr std::size_t kBatchBytes = std::size_t{16} << 20;
 
-// The lines that reached their owner, in arrival order. Action and value ids are the
-// sender's until the tables are known.
+// The lines that reached their owner, in arrival order: a choice's edges follow the previous
+// choice's. Action and value ids are the sender's until the tables are known; which sender a
+// choice came from is kept per message, not per choice.
 struct Arrivals {
+  struct Message {
+    std::uint32_t sender;
+    std::uint32_t first_choice;
+  };
+  std::vector<Message> messages;
   std::vector<std::uint32_t> state;  // local
-  std::vector<std::uint32_t> sender;
   std::vector<std::uint32_t> action;
   std::vector<ValueId> reward;
-  std::vector<std::uint32_t> edge_begin;
-  std::vector<std::uint32_t> edge_count;
+  std::vector<std::uint32_t> edge_begin;  // one more than choices once finished
   std::vector<StateIndex> edge_target;
   std::vector<ValueId> edge_probability;
   bool too_many_edges = false;
 
+  void reserve(std::size_t choices, std::size_t edges) {
+    state.reserve(choices);
+    action.reserve(choices);
+    reward.reserve(choices);
+    edge_begin.reserve(choices + 1);
+    edge_target.reserve(edges);
+    edge_probability.reserve(edges);
+  }
+
   void take(std::uint32_t from, const Bytes& bytes, const Ownership& ownership) {
+    if (bytes.empty()) return;
+    messages.push_back({from, static_cast<std::uint32_t>(state.size())});
     ByteReader reader(bytes);
     while (!reader.at_end()) {
       state.push_back(ownership.local(reader.get<StateIndex>()));
-      sender.push_back(from);
       action.push_back(reader.get<std::uint32_t>());
       reward.push_back(reader.get<ValueId>());
       const auto count = reader.get<std::uint32_t>();
       if (edge_target.size() + count >= UINT32_MAX) too_many_edges = true;
       edge_begin.push_back(static_cast<std::uint32_t>(edge_target.size()));
-      edge_count.push_back(count);
       for (std::uint32_t i = 0; i < count; ++i) {
         edge_target.push_back(reader.get<StateIndex>());
         edge_probability.push_back(reader.get<ValueId>());
       }
     }
   }
+
+  void finish() { edge_begin.push_back(static_cast<std::uint32_t>(edge_target.size())); }
 };
 
 // Sends lines to their owners in batches. Every flush is collective: a rank whose part is
@@ -62,7 +77,13 @@ class LineSender {
         ownership_(ownership),
         outgoing_(communicator.size()) {}
 
+  // The file's size, for reserve_arrivals().
+  void set_file_bytes(std::size_t bytes) { file_bytes_ = bytes; }
+
   void send(const formats::AutLine& line) {
+    if (lines_ == 0) first_offset_ = line.offset;
+    edges_ += line.row.size();
+    if (++lines_ == kSampleLines) reserve_arrivals(line.offset);
     Bytes& bytes = outgoing_[ownership_.owner(line.source)];
     const std::size_t before = bytes.size();
     ByteWriter writer(bytes);
@@ -89,11 +110,31 @@ class LineSender {
   }
 
  private:
+  // Growing the arrival arrays by doubling would make their last doubling the reading's peak
+  // (old and new array at once, and up to twice the room needed). Once the part's first
+  // lines show the bytes per line and edges per line, every rank expects about
+  // (file bytes / bytes per line) / P lines, the states being spread evenly over the ranks.
+  void reserve_arrivals(SourceOffset offset) {
+    if (offset <= first_offset_) return;
+    const double bytes_per_line =
+        static_cast<double>(offset - first_offset_) / static_cast<double>(lines_ - 1);
+    const double lines =
+        static_cast<double>(file_bytes_) / bytes_per_line / communicator_.size() * 1.05 + 1024;
+    const double edges = lines * static_cast<double>(edges_) / static_cast<double>(lines_);
+    if (edges >= UINT32_MAX) return;
+    arrivals_.reserve(static_cast<std::size_t>(lines), static_cast<std::size_t>(edges));
+  }
+
+  static constexpr std::uint64_t kSampleLines = 4096;
   const Communicator& communicator_;
   Arrivals& arrivals_;
   const Ownership& ownership_;
   std::vector<Bytes> outgoing_;
   std::size_t waiting_ = 0;
+  std::size_t file_bytes_ = 0;
+  std::uint64_t lines_ = 0;
+  std::uint64_t edges_ = 0;
+  SourceOffset first_offset_ = 0;
 };
 
 std::string serialize_tables(const formats::AutPart& part) {
@@ -161,15 +202,19 @@ void permute(std::vector<T>& values, const std::vector<std::uint32_t>& order) {
 std::optional<std::pair<StateIndex, std::uint32_t>> assemble(Arrivals& arrivals,
                                                              const GlobalTables& tables,
                                                              OwnedModel& owned) {
-  for (std::size_t c = 0; c < arrivals.action.size(); ++c) {
-    const std::uint32_t q = arrivals.sender[c];
-    arrivals.action[c] = tables.action_of[q][arrivals.action[c]];
-    arrivals.reward[c] = tables.value_of[q][arrivals.reward[c]];
-    const std::uint32_t end = arrivals.edge_begin[c] + arrivals.edge_count[c];
-    for (std::uint32_t e = arrivals.edge_begin[c]; e < end; ++e)
-      arrivals.edge_probability[e] = tables.value_of[q][arrivals.edge_probability[e]];
+  const auto num_choices = static_cast<std::uint32_t>(arrivals.state.size());
+  for (std::size_t m = 0; m < arrivals.messages.size(); ++m) {
+    const std::uint32_t q = arrivals.messages[m].sender;
+    const std::uint32_t end =
+        m + 1 < arrivals.messages.size() ? arrivals.messages[m + 1].first_choice : num_choices;
+    for (std::uint32_t c = arrivals.messages[m].first_choice; c < end; ++c) {
+      arrivals.action[c] = tables.action_of[q][arrivals.action[c]];
+      arrivals.reward[c] = tables.value_of[q][arrivals.reward[c]];
+      for (std::uint32_t e = arrivals.edge_begin[c]; e < arrivals.edge_begin[c + 1]; ++e)
+        arrivals.edge_probability[e] = tables.value_of[q][arrivals.edge_probability[e]];
+    }
   }
-  arrivals.sender = {};
+  arrivals.messages = {};
   // A counting sort by state, then each state's few choices by action.
   const std::uint32_t num_owned = owned.ownership.share(owned.num_states, owned.ownership.rank);
   std::vector<std::uint32_t>& begin = owned.state_choice_begin;
@@ -198,14 +243,16 @@ std::optional<std::pair<StateIndex, std::uint32_t>> assemble(Arrivals& arrivals,
     if (same != last && !repeated)
       repeated.emplace(owned.ownership.global(i, owned.ownership.rank), arrivals.action[*same]);
   }
+  owned.edge_count.resize(num_choices);
+  for (std::uint32_t i = 0; i < num_choices; ++i)
+    owned.edge_count[i] = arrivals.edge_begin[order[i] + 1] - arrivals.edge_begin[order[i]];
+  arrivals.edge_begin.pop_back();
   permute(arrivals.action, order);
   permute(arrivals.reward, order);
   permute(arrivals.edge_begin, order);
-  permute(arrivals.edge_count, order);
   owned.choice_action = std::move(arrivals.action);
   owned.choice_reward = std::move(arrivals.reward);
   owned.edge_begin = std::move(arrivals.edge_begin);
-  owned.edge_count = std::move(arrivals.edge_count);
   owned.edge_target = std::move(arrivals.edge_target);
   owned.edge_probability = std::move(arrivals.edge_probability);
   return repeated;
@@ -225,6 +272,7 @@ std::optional<formats::AutPart> read_own_part(const std::string& path,
     if (communicator.is_root()) diagnostics.file_error(path, error);
     return std::nullopt;
   }
+  sender.set_file_bytes(file.text().size());
   const FileId id = sources.add(path, std::move(file));
   bool header_read = false;
   std::optional<formats::AutPart> part = formats::read_aut_part(
@@ -249,6 +297,7 @@ std::optional<OwnedModel> read_aut_distributed(const std::string& path,
       read_own_part(path, options, communicator, sender, sources);
   while (!sender.flush(true)) {
   }
+  arrivals.finish();
   if (communicator.any(!part.has_value() || arrivals.too_many_edges)) {
     if (arrivals.too_many_edges)
       std::cerr << path << ": error: more than 2^32 edges start at the states of rank "

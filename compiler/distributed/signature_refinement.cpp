@@ -1,6 +1,7 @@
 #include "distributed/signature_refinement.hpp"
 
 #include <algorithm>
+#include <bit>
 #include <deque>
 #include <string>
 #include <string_view>
@@ -62,34 +63,45 @@ class Masses {
 };
 
 // The blocks of the states that this rank's edges lead to. Set up once: each rank asks each
-// owner for the list of its states it needs (sorted), and every round each owner answers with
-// their blocks in that order. Edge targets are renumbered to slots of the answers.
+// owner for the list of its states it needs (ascending), and every round each owner answers
+// with their blocks in that order. Edge targets are renumbered to slots of the answers: the
+// slot of a target is its rank among the needed states, ordered by owner then local index.
+// Found with one bit per state of the model and a running count per 64 states (0.19 bytes
+// per state), without sorting the targets.
 class GhostBlocks {
  public:
   GhostBlocks(OwnedModel& owned, const Communicator& communicator)
       : communicator_(communicator), ownership_(owned.ownership) {
     const std::uint32_t ranks = communicator.size();
-    std::vector<std::vector<std::uint32_t>> wanted(ranks);
+    std::vector<std::uint64_t> first(ranks + 1, 0);  // position of each owner's first state
+    for (std::uint32_t q = 0; q < ranks; ++q)
+      first[q + 1] = first[q] + ownership_.share(owned.num_states, q);
+    const auto position = [&](StateIndex t) {
+      return first[ownership_.owner(t)] + ownership_.local(t);
+    };
+    std::vector<std::uint64_t> needed((owned.num_states + 63) / 64, 0);
     for (StateIndex t : owned.edge_target)
-      wanted[ownership_.owner(t)].push_back(ownership_.local(t));
-    offset_.assign(ranks + 1, 0);
-    for (std::uint32_t q = 0; q < ranks; ++q) {
-      std::sort(wanted[q].begin(), wanted[q].end());
-      wanted[q].erase(std::unique(wanted[q].begin(), wanted[q].end()), wanted[q].end());
-      offset_[q + 1] = offset_[q] + static_cast<std::uint32_t>(wanted[q].size());
-    }
+      needed[position(t) / 64] |= std::uint64_t{1} << (position(t) % 64);
+    std::vector<std::uint32_t> before(needed.size() + 1, 0);  // needed states before word w
+    for (std::size_t w = 0; w < needed.size(); ++w)
+      before[w + 1] = before[w] + static_cast<std::uint32_t>(std::popcount(needed[w]));
     for (StateIndex& t : owned.edge_target) {
-      const std::vector<std::uint32_t>& list = wanted[ownership_.owner(t)];
-      const auto at = std::lower_bound(list.begin(), list.end(), ownership_.local(t));
-      t = offset_[ownership_.owner(t)] + static_cast<std::uint32_t>(at - list.begin());
+      const std::uint64_t at = position(t);
+      const std::uint64_t lower = needed[at / 64] & ((std::uint64_t{1} << (at % 64)) - 1);
+      t = before[at / 64] + static_cast<std::uint32_t>(std::popcount(lower));
     }
     std::vector<Bytes> requests(ranks);
+    offset_.assign(ranks + 1, 0);
     for (std::uint32_t q = 0; q < ranks; ++q) {
-      requests[q].resize(wanted[q].size() * sizeof(std::uint32_t));
-      std::copy_n(reinterpret_cast<const char*>(wanted[q].data()), requests[q].size(),
-                  requests[q].data());
-      wanted[q] = {};
+      ByteWriter writer(requests[q]);
+      for (std::uint64_t at = first[q]; at < first[q + 1]; ++at) {
+        if (needed[at / 64] >> (at % 64) & 1U)
+          writer.put(static_cast<std::uint32_t>(at - first[q]));
+      }
+      offset_[q + 1] = offset_[q] + static_cast<std::uint32_t>(requests[q].size() / 4);
     }
+    needed = {};
+    before = {};
     const std::vector<Bytes> asked = communicator.exchange(requests);
     served_.resize(ranks);
     for (std::uint32_t q = 0; q < ranks; ++q) {
