@@ -141,8 +141,10 @@ std::string serialize_tables(const formats::AutPart& part) {
   Bytes bytes;
   ByteWriter writer(bytes);
   writer.put(static_cast<std::uint32_t>(part.actions.size()));
-  for (const std::string& action : part.actions)
-    writer.put_text(action);
+  for (std::size_t a = 0; a < part.actions.size(); ++a) {
+    writer.put_text(part.actions[a]);
+    writer.put(part.action_offsets[a]);
+  }
   writer.put(static_cast<std::uint32_t>(part.values.size()));
   for (std::size_t id = 0; id < part.values.size(); ++id)
     writer.put_text(to_string(part.values[static_cast<ValueId>(id)]));
@@ -150,7 +152,9 @@ std::string serialize_tables(const formats::AutPart& part) {
 }
 
 // The global action list and value pool from every rank's tables, and per rank the map
-// from its ids to the global ones. Built in rank order, so identical on every rank.
+// from its ids to the global ones; identical on every rank. Actions are numbered in order of
+// first appearance in the file, as read_aut numbers them, so that a quotient written from
+// them lists a state's lines in the sequential engine's order.
 struct GlobalTables {
   std::vector<std::string> actions;
   RationalPool values;
@@ -163,11 +167,16 @@ GlobalTables merge_tables(const std::vector<std::string>& tables) {
   global.action_of.resize(tables.size());
   global.value_of.resize(tables.size());
   std::vector<std::vector<std::string>> names(tables.size());
+  std::map<std::string, SourceOffset> first_offset;
   for (std::size_t q = 0; q < tables.size(); ++q) {
     ByteReader reader(std::span<const char>(tables[q].data(), tables[q].size()));
     const auto num_actions = reader.get<std::uint32_t>();
-    for (std::uint32_t a = 0; a < num_actions; ++a)
-      names[q].emplace_back(reader.get_text());
+    for (std::uint32_t a = 0; a < num_actions; ++a) {
+      const std::string& name = names[q].emplace_back(reader.get_text());
+      const auto offset = reader.get<SourceOffset>();
+      const auto [it, inserted] = first_offset.try_emplace(name, offset);
+      if (!inserted) it->second = std::min(it->second, offset);
+    }
     const auto num_values = reader.get<std::uint32_t>();
     for (std::uint32_t v = 0; v < num_values; ++v) {
       // Written by to_string on a rank of this job: always parses.
@@ -175,17 +184,17 @@ GlobalTables merge_tables(const std::vector<std::string>& tables) {
       global.value_of[q].push_back(global.values.intern(value.value_or(0)));
     }
   }
-  std::map<std::string, std::uint32_t> sorted;
-  for (const auto& list : names)
-    for (const std::string& name : list)
-      sorted.emplace(name, 0);
-  for (auto& [name, id] : sorted) {
-    id = static_cast<std::uint32_t>(global.actions.size());
+  std::map<SourceOffset, std::string> by_offset;
+  for (const auto& [name, offset] : first_offset)
+    by_offset.emplace(offset, name);
+  std::map<std::string, std::uint32_t> index;
+  for (const auto& [offset, name] : by_offset) {
+    index.emplace(name, static_cast<std::uint32_t>(global.actions.size()));
     global.actions.push_back(name);
   }
   for (std::size_t q = 0; q < names.size(); ++q)
     for (const std::string& name : names[q])
-      global.action_of[q].push_back(sorted.at(name));
+      global.action_of[q].push_back(index.at(name));
   return global;
 }
 
@@ -305,6 +314,7 @@ std::optional<OwnedModel> read_aut_distributed(const std::string& path,
     return std::nullopt;
   }
   owned.num_states = part->num_states;
+  owned.initial = part->initial;
   const std::uint64_t lines = communicator.sum(part->lines);
   if (lines != part->declared_transitions) {
     if (communicator.is_root()) {

@@ -31,10 +31,12 @@ struct Ownership {
 struct OwnedModel {
   std::string name;  // the file's stem, as the sequential reader names the model
   Ownership ownership;
-  std::uint32_t num_states = 0;      // of the whole model
-  std::uint64_t num_edges = 0;       // of the whole model
-  std::vector<std::string> actions;  // sorted: the same numbering on every rank
-  RationalPool values;               // the same ids on every rank
+  std::uint32_t num_states = 0;  // of the whole model
+  std::uint64_t num_edges = 0;   // of the whole model
+  std::vector<model::StateIndex> initial;
+  std::vector<std::string> actions;  // in order of first appearance in the file
+
+  RationalPool values;  // the same ids on every rank
 
   // The owned states' choices: local state i has choices [state_choice_begin[i],
   // state_choice_begin[i + 1]), sorted by action; choice c has the edges
@@ -44,7 +46,9 @@ struct OwnedModel {
   std::vector<ValueId> choice_reward;
   std::vector<std::uint32_t> edge_begin;
   std::vector<std::uint32_t> edge_count;
-  std::vector<model::StateIndex> edge_target;  // global state ids
+  // Global state ids; refine_distributed renumbers them (to its own slots, and at the end to
+  // the blocks of the targets).
+  std::vector<model::StateIndex> edge_target;
   std::vector<ValueId> edge_probability;
 
   [[nodiscard]] std::uint32_t num_owned() const {

@@ -8,9 +8,9 @@
 
 namespace oasis::distributed {
 
-std::optional<model::Partition> gather_partition(const OwnedModel& owned,
-                                                 const DistributedPartition& partition,
-                                                 const Communicator& communicator) {
+std::optional<GatheredPartition> gather_partition(const OwnedModel& owned,
+                                                  const DistributedPartition& partition,
+                                                  const Communicator& communicator) {
   std::vector<Bytes> outgoing(communicator.size());
   ByteWriter writer(outgoing[0]);
   for (std::uint32_t block : partition.block_of_owned)
@@ -23,7 +23,12 @@ std::optional<model::Partition> gather_partition(const OwnedModel& owned,
     for (std::uint32_t local = 0; !reader.at_end(); ++local)
       labels[owned.ownership.global(local, q)] = reader.get<std::uint32_t>();
   }
-  return model::canonical_partition(labels);
+  GatheredPartition gathered;
+  gathered.partition = model::canonical_partition(labels);
+  gathered.canonical.resize(partition.num_blocks);
+  for (std::size_t s = 0; s < labels.size(); ++s)
+    gathered.canonical[labels[s]] = gathered.partition.block_of[s];
+  return gathered;
 }
 
 namespace {

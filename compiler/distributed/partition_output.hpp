@@ -13,11 +13,17 @@
 
 namespace oasis::distributed {
 
-// Collective. Rank 0 gets the partition of the whole model with blocks numbered in order of
-// their smallest state (model::canonical_partition); the other ranks get nullopt.
-std::optional<model::Partition> gather_partition(const OwnedModel& owned,
-                                                 const DistributedPartition& partition,
-                                                 const Communicator& communicator);
+struct GatheredPartition {
+  // Blocks numbered in order of their smallest state (model::canonical_partition).
+  model::Partition partition;
+  // canonical[b]: the number in `partition` of block b of DistributedPartition.
+  std::vector<model::BlockIndex> canonical;
+};
+
+// Collective. Rank 0 gets the partition of the whole model; the other ranks get nullopt.
+std::optional<GatheredPartition> gather_partition(const OwnedModel& owned,
+                                                  const DistributedPartition& partition,
+                                                  const Communicator& communicator);
 
 // What the JSON says besides the partition.
 struct RunFacts {

@@ -318,6 +318,10 @@ DistributedPartition refine_distributed(OwnedModel& owned, const Communicator& c
     previous = blocks;
   }
   result.num_blocks = previous;
+  // The targets' final blocks, for writing the quotient.
+  ghosts.update(result.block_of_owned);
+  for (StateIndex& target : owned.edge_target)
+    target = ghosts.block(target);
   return result;
 }
 

@@ -34,7 +34,8 @@ struct DistributedPartition {
   bool exact_integer_sums = false;
 };
 
-// Collective. `owned` is consumed: its edge targets are renumbered for the rounds.
+// Collective. On return the edge targets of `owned` are the targets' blocks (ids of
+// block_of_owned), which is what a quotient needs of them.
 DistributedPartition refine_distributed(OwnedModel& owned, const Communicator& communicator,
                                         const DistributedOptions& options = {});
 

@@ -84,6 +84,7 @@ class AutReader {
     part.declared_transitions_offset = scan_.offset_of(transitions_token_);
     part.lines = transitions_seen_;
     part.actions = std::move(model_.actions);
+    part.action_offsets = std::move(action_offsets_);
     part.values = std::move(model_.values);
     return part;
   }
@@ -378,7 +379,8 @@ class AutReader {
         error_at(position, text.size() + 2, problem);
         return std::nullopt;
       }
-      LabelInfo info{action_index(parsed->action), cache_.intern(parsed->reward)};
+      LabelInfo info{action_index(parsed->action, scan_.offset_of(position)),
+                     cache_.intern(parsed->reward)};
       if (!cache_.check_carried(info.reward, "reward", range_at(position, text.size() + 2),
                                 diagnostics_)) {
         return std::nullopt;
@@ -391,10 +393,13 @@ class AutReader {
     return last_info_;
   }
 
-  ActionIndex action_index(const std::string& name) {
+  ActionIndex action_index(const std::string& name, SourceOffset offset) {
     const auto [it, inserted] =
         action_indices_.try_emplace(name, static_cast<ActionIndex>(model_.actions.size()));
-    if (inserted) model_.actions.push_back(name);
+    if (inserted) {
+      model_.actions.push_back(name);
+      action_offsets_.push_back(offset);
+    }
     return it->second;
   }
 
@@ -556,6 +561,7 @@ class AutReader {
   std::unordered_map<std::string_view, LabelInfo> labels_;  // keys view the file or owned_labels_
   std::deque<std::string> owned_labels_;
   std::unordered_map<std::string, ActionIndex> action_indices_;
+  std::vector<SourceOffset> action_offsets_;  // where each action first appears
   std::string_view last_label_;
   LabelInfo last_info_;
   bool any_reward_ = false;

@@ -48,6 +48,9 @@ struct AutPart {
   SourceOffset declared_transitions_offset = 0;  // where the header gives that number
   std::uint64_t lines = 0;
   std::vector<std::string> actions;
+  // Where each action first appears in the part: the whole file's order of first appearance
+  // (read_aut's action numbering) is the order of the smallest over all parts.
+  std::vector<SourceOffset> action_offsets;
   RationalPool values;
 };
 

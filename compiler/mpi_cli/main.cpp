@@ -19,7 +19,9 @@
 #include "distributed/communicator.hpp"
 #include "distributed/distributed_reader.hpp"
 #include "distributed/partition_output.hpp"
+#include "distributed/quotient_output.hpp"
 #include "distributed/signature_refinement.hpp"
+#include "formats/aut_writer.hpp"
 #include "support/limits.hpp"
 
 namespace {
@@ -30,6 +32,7 @@ using Clock = std::chrono::steady_clock;
 struct Options {
   std::vector<std::string> models;
   std::string output;
+  std::string format = "json";
   formats::ReadOptions read;
   bool rational_sums = false;
   bool progress = false;
@@ -44,12 +47,14 @@ constexpr const char* kDescription =
     "Each rank reads a part of the file and keeps the states s with s mod P equal to its rank.\n"
     "Rounds of signature refinement follow (docs/bisimulation.md); rank 0 writes the\n"
     "partition as 'oasisc quotient --format json --partition' does, so that\n"
-    "'oasisc verify MODEL PARTITION.json' checks it. Sums are exact: integers over a common\n"
-    "denominator when it fits in 62 bits, GMP rationals otherwise.\n"
+    "'oasisc verify MODEL PARTITION.json' checks it; or, with --format aut, the quotient MDP\n"
+    "as 'oasisc quotient --format aut' writes it, byte for byte. Sums are exact: integers\n"
+    "over a common denominator when it fits in 62 bits, GMP rationals otherwise.\n"
     "\n"
     "Examples:\n"
     "  mpirun -np 4 oasisc-mpi model.aut -o partition.json\n"
     "  oasisc verify model.aut partition.json\n"
+    "  mpirun -np 4 oasisc-mpi model.aut --format aut -o quotient.aut\n"
     "  mpirun -np 2 oasisc-mpi a.aut b.aut -o partitions/   (one JSON per model)\n"
     "\n"
     "Other formats: 'oasisc export MODEL --format aut -o MODEL.aut' first.";
@@ -82,7 +87,7 @@ void maybe_kill_self(std::uint32_t rank, std::uint32_t round) {
 std::string output_for(const Options& options, const std::string& model) {
   if (options.models.size() == 1) return options.output;
   return (std::filesystem::path(options.output) /
-          (std::filesystem::path(model).stem().string() + ".json"))
+          (std::filesystem::path(model).stem().string() + "." + options.format))
       .string();
 }
 
@@ -130,8 +135,10 @@ bool run_one(const std::string& path, const Options& options,
   facts.refinement_seconds = seconds_since(refining);
   facts.rounds = partition.rounds;
   facts.exact_integer_sums = partition.exact_integer_sums;
-  const std::optional<model::Partition> whole =
+  const std::optional<distributed::GatheredPartition> whole =
       distributed::gather_partition(*owned, partition, communicator);
+  std::optional<model::ExplicitModel> quotient;
+  if (options.format == "aut") quotient = distributed::gather_quotient(*owned, whole, communicator);
   owned.reset();
   for (const std::string& text : communicator.all_gather(std::to_string(peak_memory_mib())))
     facts.peak_memory_mib.push_back(std::stod(text));
@@ -140,7 +147,8 @@ bool run_one(const std::string& path, const Options& options,
   if (communicator.is_root()) {
     const std::string output = output_for(options, path);
     std::string error;
-    written = distributed::write_partition_json(output, *whole, facts, error);
+    written = quotient ? formats::write_aut_file(*quotient, 0, output, error)
+                       : distributed::write_partition_json(output, whole->partition, facts, error);
     if (!written)
       std::cerr << "oasisc-mpi: error: cannot write '" << output << "': " << error << '\n';
     else if (!options.quiet)
@@ -162,7 +170,7 @@ bool check_models(const Options& options, bool report) {
   if (options.models.size() > 1 && !std::filesystem::is_directory(options.output, code)) {
     if (report)
       std::cerr << "oasisc-mpi: error: with " << options.models.size()
-                << " models, -o must name an existing directory (one NAME.json per model)\n";
+                << " models, -o must name an existing directory (one output per model)\n";
     return false;
   }
   return true;
@@ -174,11 +182,17 @@ int main(int argc, char** argv) {
   distributed::Communicator communicator(argc, argv);
   Options options;
   CLI::App app(kDescription, "oasisc-mpi");
-  app.add_option("models", options.models, "mCRL2 .aut models (several: one JSON each in -o)")
+  app.add_option("models", options.models, "mCRL2 .aut models (several: one output each in -o)")
       ->required();
   app.add_option("-o,--output", options.output,
-                 "The partition JSON (a directory when several models are given)")
+                 "The output file (a directory when several models are given: NAME.json or "
+                 "NAME.aut in it)")
       ->required();
+  app.add_option("-f,--format", options.format,
+                 "json: the partition, as 'oasisc quotient --format json --partition' writes it; "
+                 "aut: the quotient MDP, as 'oasisc quotient --format aut' writes it")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"json", "aut"}));
   app.add_option("--max-input-size", options.read.max_bytes,
                  "Refuse files larger than this (bytes, or with a unit: 8G)")
       ->capture_default_str()

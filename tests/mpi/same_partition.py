@@ -6,8 +6,10 @@ in ten a chain, which needs as many rounds as states; some with probabilities wh
 bits, which forces exact rational sums), planted models, and every shipped model that can be
 written as .aut, runs `oasisc quotient --format json --partition` once and
 `mpirun -np P oasisc-mpi` at each P given, all models of one P in one mpirun, and requires
-the same partition (both are canonical: blocks in order of their smallest state). A few
-results also go through `oasisc verify`, which must accept the MPI engine's JSON unchanged.
+the same partition (both are canonical: blocks in order of their smallest state). At the
+largest P the quotient MDP written with `--format aut` must equal `oasisc quotient --format
+aut`'s byte for byte. A few results also go through `oasisc verify`, which must accept the MPI
+engine's JSON unchanged.
 """
 
 import argparse
@@ -171,6 +173,8 @@ def main():
         subprocess.run([args.oasisc, "quotient", str(model), "--format", "json", "--partition",
                         "-o", str(out)], check=True, capture_output=True)
         expected[model] = partition_of(out)
+        subprocess.run([args.oasisc, "quotient", str(model), "--format", "aut",
+                        "-o", str(model.with_suffix(".seq.quotient"))], check=True, capture_output=True)
 
     runs = [(int(p), []) for p in args.ranks.split(",")]
     if args.rational_sums:
@@ -191,6 +195,20 @@ def main():
                 print(f"P={ranks} {' '.join(flags)}: {model.name}: {len(got)} blocks, "
                       f"the sequential engine {len(expected[model])}")
         print(f"P={ranks} {' '.join(flags)}: {len(models)} models compared")
+
+    ranks = runs[-1][0]
+    out_dir = work / f"mpi{ranks}aut"
+    out_dir.mkdir()
+    result = mpirun(ranks, [args.oasisc_mpi, "-q", "--format", "aut", "-o", str(out_dir)] + [str(m) for m in models])
+    if result.returncode != 0:
+        print(f"P={ranks} --format aut: mpirun exited {result.returncode}\n{result.stderr}")
+        failures += 1
+    else:
+        for model in models:
+            if (out_dir / (model.stem + ".aut")).read_bytes() != model.with_suffix(".seq.quotient").read_bytes():
+                failures += 1
+                print(f"P={ranks} --format aut: {model.name}: the quotient differs from the sequential engine's")
+        print(f"P={ranks} --format aut: {len(models)} quotients compared")
 
     checked = [m for m in models if m in shipped] + models[:4]
     for model in checked:
