@@ -277,10 +277,18 @@ std::optional<formats::AutPart> read_own_part(const std::string& path,
   DiagnosticEngine diagnostics(sources, communicator.is_root() ? std::cerr : buffered);
   MappedFile file;
   std::string error;
-  if (!file.open(path, options.max_bytes, error)) {
-    if (communicator.is_root()) diagnostics.file_error(path, error);
-    return std::nullopt;
+  const bool opened = file.open(path, options.max_bytes, error);
+  // Usually every rank fails alike (no such file) and rank 0 says so once; a file that only
+  // some ranks cannot open (not on their machine) is reported by each of them.
+  const std::vector<std::uint64_t> opened_by = communicator.all_gather(opened ? 1 : 0);
+  if (!opened && (communicator.is_root() || opened_by[0] == 1)) {
+    const std::string where = communicator.is_root()
+                                  ? std::string()
+                                  : " (rank " + std::to_string(communicator.rank()) + ")";
+    diagnostics.file_error(path, error + where);
+    std::cerr << buffered.str() << std::flush;
   }
+  if (std::find(opened_by.begin(), opened_by.end(), 0) != opened_by.end()) return std::nullopt;
   sender.set_file_bytes(file.text().size());
   const FileId id = sources.add(path, std::move(file));
   bool header_read = false;

@@ -20,6 +20,7 @@ speed-up; memory per rank is what P divides.
 import argparse
 import json
 import os
+import shutil
 import subprocess
 import sys
 import tempfile
@@ -45,7 +46,8 @@ def planted(build, directory, exponent):
 
 def run_mpi(build, model, ranks, output):
     command = ["mpirun", "-np", str(ranks), "--oversubscribe",
-               os.path.join(build, "compiler", "oasisc-mpi"), model, "-q", "-o", output]
+               os.path.join(build, "compiler", "oasisc-mpi"), model, "-q", "--max-states", "40000000",
+               "-o", output]
     start = time.perf_counter()
     result = subprocess.run(command, capture_output=True, text=True, env=mpi_environment())
     wall = time.perf_counter() - start
@@ -86,6 +88,16 @@ def main():
     parser.add_argument("--predict-ranks", type=int, default=16)
     args = parser.parse_args()
     directory = tempfile.mkdtemp(prefix="oasis-mpi-scale-")
+    try:
+        ok, points = measure(args, directory)
+    finally:
+        shutil.rmtree(directory)  # a 10^8 model is 5.3 GB
+    if len(points) >= 3:
+        print_model(args, points)
+    sys.exit(0 if ok else 1)
+
+
+def measure(args, directory):
     points = []
     print(f"{'model':>10} {'engine':>10} {'P':>3} {'wall s':>8} {'read s':>8} {'refine s':>9} "
           f"{'rounds':>6} {'blocks':>7} {'peak MiB':>9} {'x seq':>6}")
@@ -112,20 +124,22 @@ def main():
                 print(f"  wrong: {context['blocks']} blocks, planted {expected}")
                 ok = False
         os.remove(model)
-    if len(points) >= 3:
-        fixed, per_edge, per_state = fit(points)
-        print(f"\nper-rank peak (MiB) = {fixed:.1f} + {per_edge * 2**20:.2f} B x edges/P "
-              f"+ {per_state * 2**20:.2f} B x states")
-        for edges_per_rank, states, measured in points:
-            model_value = fixed + per_edge * edges_per_rank + per_state * states
-            print(f"  edges/P {edges_per_rank:12.0f}  states {states:10d}: measured {measured:8.1f}, model {model_value:8.1f}")
-        # planted models: 3 edges per transition, 4 transitions per state
-        edges = 3 * args.predict_transitions
-        states = args.predict_transitions / 4
-        predicted = fixed + per_edge * edges / args.predict_ranks + per_state * states
-        print(f"predicted for {args.predict_transitions:.0e} transitions ({edges:.0e} edges, {states:.1e} states) "
-              f"on {args.predict_ranks} ranks: {predicted / 1024:.1f} GiB per rank")
-    sys.exit(0 if ok else 1)
+    return ok, points
+
+
+def print_model(args, points):
+    fixed, per_edge, per_state = fit(points)
+    print(f"\nper-rank peak (MiB) = {fixed:.1f} + {per_edge * 2**20:.2f} B x edges/P "
+          f"+ {per_state * 2**20:.2f} B x states")
+    for edges_per_rank, states, measured in points:
+        model_value = fixed + per_edge * edges_per_rank + per_state * states
+        print(f"  edges/P {edges_per_rank:12.0f}  states {states:10d}: measured {measured:8.1f}, model {model_value:8.1f}")
+    # planted models: 3 edges per transition, 4 transitions per state
+    edges = 3 * args.predict_transitions
+    states = args.predict_transitions / 4
+    predicted = fixed + per_edge * edges / args.predict_ranks + per_state * states
+    print(f"predicted for {args.predict_transitions:.0e} transitions ({edges:.0e} edges, {states:.1e} states) "
+          f"on {args.predict_ranks} ranks: {predicted / 1024:.1f} GiB per rank")
 
 
 if __name__ == "__main__":
