@@ -77,13 +77,18 @@ class LineSender {
         ownership_(ownership),
         outgoing_(communicator.size()) {}
 
-  // The file's size, for reserve_arrivals().
+  // The file's size, for reserve_arrivals() and the progress.
   void set_file_bytes(std::size_t bytes) { file_bytes_ = bytes; }
+  void set_progress(const ReadProgress& progress) { progress_ = progress; }
 
   void send(const formats::AutLine& line) {
     if (lines_ == 0) first_offset_ = line.offset;
     edges_ += line.row.size();
     if (++lines_ == kSampleLines) reserve_arrivals(line.offset);
+    if (progress_ && lines_ % kProgressLines == 0) {
+      const std::uint64_t part = file_bytes_ / communicator_.size();
+      progress_(std::min<std::uint64_t>(line.offset - first_offset_, part), part);
+    }
     Bytes& bytes = outgoing_[ownership_.owner(line.source)];
     const std::size_t before = bytes.size();
     ByteWriter writer(bytes);
@@ -126,6 +131,8 @@ class LineSender {
   }
 
   static constexpr std::uint64_t kSampleLines = 4096;
+  static constexpr std::uint64_t kProgressLines = std::uint64_t{1} << 20;
+  ReadProgress progress_;
   const Communicator& communicator_;
   Arrivals& arrivals_;
   const Ownership& ownership_;
@@ -303,12 +310,14 @@ std::optional<formats::AutPart> read_own_part(const std::string& path,
 
 std::optional<OwnedModel> read_aut_distributed(const std::string& path,
                                                const formats::ReadOptions& options,
-                                               const Communicator& communicator) {
+                                               const Communicator& communicator,
+                                               const ReadProgress& progress) {
   OwnedModel owned;
   owned.ownership = Ownership{communicator.rank(), communicator.size()};
   owned.name = std::filesystem::path(path).stem().string();
   Arrivals arrivals;
   LineSender sender(communicator, arrivals, owned.ownership);
+  sender.set_progress(progress);
   SourceManager sources;
   std::optional<formats::AutPart> part =
       read_own_part(path, options, communicator, sender, sources);

@@ -5,6 +5,7 @@
 
 #include <chrono>
 #include <csignal>
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <iomanip>
@@ -44,7 +45,8 @@ constexpr const char* kDescription =
     "every rank of an MPI job: the same partition as 'oasisc quotient', with the model spread\n"
     "over the ranks' memory.\n"
     "\n"
-    "Each rank reads a part of the file and keeps the states s with s mod P equal to its rank.\n"
+    "Each rank reads a part of the file and keeps the states s with s mod P equal to its rank\n"
+    "(on several machines the file must be at the same path on each: a shared file system).\n"
     "Rounds of signature refinement follow (docs/bisimulation.md); rank 0 writes the\n"
     "partition as 'oasisc quotient --format json --partition' does, so that\n"
     "'oasisc verify MODEL PARTITION.json' checks it; or, with --format aut, the quotient MDP\n"
@@ -56,6 +58,7 @@ constexpr const char* kDescription =
     "  oasisc verify model.aut partition.json\n"
     "  mpirun -np 4 oasisc-mpi model.aut --format aut -o quotient.aut\n"
     "  mpirun -np 2 oasisc-mpi a.aut b.aut -o partitions/   (one JSON per model)\n"
+    "  mpirun -np 16 --hostfile hosts oasisc-mpi big.aut -o p.json --progress\n"
     "\n"
     "Other formats: 'oasisc export MODEL --format aut -o MODEL.aut' first.";
 
@@ -107,12 +110,21 @@ void print_summary(const distributed::RunFacts& facts, std::uint32_t states, std
   std::cout << ")\n  wrote " << output << '\n' << std::defaultfloat;
 }
 
+// Rank 0's share of the file stands for all: the parts are of equal bytes.
+distributed::ReadProgress reading_progress(const Options& options,
+                                           const distributed::Communicator& communicator) {
+  if (!options.progress || !communicator.is_root()) return {};
+  return [](std::uint64_t read, std::uint64_t part) {
+    std::cerr << "reading: " << (part == 0 ? 100 : read * 100 / part) << "% of rank 0's part\n";
+  };
+}
+
 // Collective; returns whether the partition was written.
 bool run_one(const std::string& path, const Options& options,
              const distributed::Communicator& communicator) {
   const Clock::time_point start = Clock::now();
-  std::optional<distributed::OwnedModel> owned =
-      distributed::read_aut_distributed(path, options.read, communicator);
+  std::optional<distributed::OwnedModel> owned = distributed::read_aut_distributed(
+      path, options.read, communicator, reading_progress(options, communicator));
   if (!owned) return false;
   distributed::RunFacts facts;
   facts.file = path;
@@ -124,12 +136,18 @@ bool run_one(const std::string& path, const Options& options,
 
   distributed::DistributedOptions refinement;
   refinement.rational_sums = options.rational_sums;
+  const Clock::time_point refining = Clock::now();
+  if (options.progress && communicator.is_root()) {
+    std::fprintf(stderr, "read %s in %.2f s: %u states, %llu transitions\n", facts.model.c_str(),
+                 facts.load_seconds, states, static_cast<unsigned long long>(facts.transitions));
+  }
   refinement.on_round = [&](std::uint32_t round, std::uint64_t blocks) {
     maybe_kill_self(communicator.rank(), round);
-    if (options.progress && communicator.is_root() && round > 0)
-      std::cerr << "round " << round << ": " << blocks << " blocks\n";
+    if (options.progress && communicator.is_root() && round > 0) {  // round - 1 is done
+      std::fprintf(stderr, "round %u: %llu blocks, %.2f s\n", round - 1,
+                   static_cast<unsigned long long>(blocks), seconds_since(refining));
+    }
   };
-  const Clock::time_point refining = Clock::now();
   const distributed::DistributedPartition partition =
       distributed::refine_distributed(*owned, communicator, refinement);
   facts.refinement_seconds = seconds_since(refining);
@@ -203,7 +221,8 @@ int main(int argc, char** argv) {
       ->check(CLI::Range(1U, 4'000'000'000U));
   app.add_flag("--rational-sums", options.rational_sums,
                "Add probabilities with GMP even when integers would be exact (for tests)");
-  app.add_flag("--progress", options.progress, "Print the blocks after each round (stderr)");
+  app.add_flag("--progress", options.progress,
+               "Report on stderr how the reading goes, then the blocks after each round");
   app.add_flag("-q,--quiet", options.quiet, "Print nothing on success");
   std::ostringstream discarded;
   try {

@@ -62,8 +62,10 @@ def main():
     check("rank 2" in said and ("signal 9" in said or "Killed" in said),
           "mpirun names the lost rank and its signal", result)
 
-    result = mpirun(4, [args.oasisc_mpi, str(model), "-o", output])
+    result = mpirun(4, [args.oasisc_mpi, str(model), "-o", output, "--progress"])
     check(result.returncode == 0 and Path(output).exists(), "the same run without the kill writes the partition", result)
+    check("read planted in" in result.stderr and "round 0: " in result.stderr and "round 1: " in result.stderr,
+          "--progress reports the reading and each round", result)
     os.remove(output)
 
     n = 4000
