@@ -6,9 +6,13 @@
 
 #include <CLI/CLI.hpp>
 
-#include "cli/model_loader.hpp"
+#include "input/model_loader.hpp"
 
 namespace oasis::cli {
+
+using input::load_model;
+using input::LoadedModel;
+using input::LoadOptions;
 
 // Options every subcommand that reads models shares.
 struct CommonOptions {

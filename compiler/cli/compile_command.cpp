@@ -13,12 +13,7 @@
 
 #include "cli/commands.hpp"
 #include "cli/number_options.hpp"
-#include "codegen/abstraction_svg.hpp"
-#include "codegen/binary_catalog.hpp"
-#include "codegen/continuous_json.hpp"
-#include "codegen/cpp_catalog.hpp"
-#include "codegen/dot_catalog.hpp"
-#include "codegen/json_catalog.hpp"
+#include "codegen/catalog_files.hpp"
 #include "model/catalog_data.hpp"
 #include "oasis/rt/catalog_sections.hpp"
 #include "oasis/rt/spec_hash.hpp"
@@ -53,141 +48,17 @@ namespace fs = std::filesystem;
 // The error bound a continuous compile aims at when --epsilon is not given.
 constexpr double kDefaultEpsilon = 0.1;
 
-struct CompileOptions {
-  std::string spec;
+// The formats, the C++ files' basename, the spec and --with-transitions: what the writers
+// of codegen/catalog_files.hpp read.
+struct CompileOptions : codegen::CatalogFileOptions {
   std::string output;  // default: the spec's file name without its extension
-  std::vector<std::string> formats;
-  std::string basename;  // of the C++ files; default NAME_catalog
   std::optional<double> p_correct;
   std::optional<double> epsilon;         // continuous: default kDefaultEpsilon
   std::optional<std::size_t> max_cells;  // default: the pipeline's, per path
   bool no_attention = false;
-  bool with_transitions = false;
   unsigned jobs = 0;
   CommonOptions common;
 };
-
-// The files of one compile, written into the staging directory, named relative to it, or
-// the one file of a compile to standard output (an empty directory).
-class OutputSet {
- public:
-  explicit OutputSet(std::string directory) : directory_(std::move(directory)) {}
-
-  [[nodiscard]] bool to_standard_output() const { return directory_.empty(); }
-
-  bool write(const std::string& name, const std::string& bytes, std::string& error) {
-    return write_with(
-        name, [&bytes](AtomicFile& file) { file.append(bytes); }, error);
-  }
-  // `fill` appends the file's text piece by piece (large files never exist whole in memory).
-  bool write_with(const std::string& name, const std::function<void(AtomicFile&)>& fill,
-                  std::string& error) {
-    if (to_standard_output() && !names_.empty()) {
-      // Checked before anything is written (one_file_error), so this is a bug guard.
-      error = "-o - writes one file, and this compile makes more than " + *names_.begin();
-      return false;
-    }
-    AtomicFile file;
-    if (!file.open(to_standard_output() ? "-" : (fs::path(directory_) / name).string(), error))
-      return false;
-    fill(file);
-    if (!file.commit(error)) return false;
-    names_.insert(name);
-    return true;
-  }
-  [[nodiscard]] const std::set<std::string>& names() const { return names_; }
-
- private:
-  std::string directory_;
-  std::set<std::string> names_;
-};
-
-bool wants(const CompileOptions& options, const char* format) {
-  return std::find(options.formats.begin(), options.formats.end(), format) != options.formats.end();
-}
-
-// Why `-o -` cannot take this compile's files, or "" when they are one file: standard output
-// holds one file, and a second one would follow half a catalog already written.
-std::string one_file_error(const CompileOptions& options, std::size_t contexts) {
-  if (options.formats.size() != 1) {
-    return "-o - writes one file to standard output: choose one --format (bin, json, or dot or "
-           "svg for a single context)";
-  }
-  if (wants(options, "cpp")) return "-o - cannot take --format cpp, which writes two files";
-  if ((wants(options, "dot") || wants(options, "svg")) && contexts != 1) {
-    return "-o - writes one file to standard output, and --format " + options.formats.front() +
-           " writes one per context (" + std::to_string(contexts) + " here)";
-  }
-  return "";
-}
-
-// The binary file from `data`; the C++ tables from `linked`, which is `data` for discrete
-// catalogs and the catalog without its transition rows for continuous ones (a robot links
-// the partition, rewards and policies, not the analysis product).
-bool write_common(const CompileOptions& options, const model::CatalogData& data,
-                  const model::CatalogData& linked, OutputSet& out, std::string& error) {
-  if (wants(options, "bin")) {
-    const std::string bytes = codegen::binary_catalog(data);
-    // Never write a catalog the runtime's loader would refuse.
-    if (bytes.size() > rt::kMaxCatalogFileBytes) {
-      error = "the binary catalog would be " + std::to_string(bytes.size()) +
-              " bytes, more than the runtime loads (" + std::to_string(rt::kMaxCatalogFileBytes) +
-              "); compile without --with-transitions or with a coarser --epsilon";
-      return false;
-    }
-    if (!out.write(data.name + ".bin", bytes, error)) return false;
-  }
-  if (!wants(options, "cpp")) return true;
-  const std::string basename =
-      options.basename.empty() ? linked.name + "_catalog" : options.basename;
-  const std::string spec_name = fs::path(options.spec).filename().string();
-  const codegen::CppSources sources = codegen::cpp_catalog(linked, basename, spec_name);
-  return out.write(basename + ".hpp", sources.header, error) &&
-         out.write(basename + ".cpp", sources.source, error);
-}
-
-bool write_discrete(const CompileOptions& options, model::CatalogData& data, OutputSet& out,
-                    std::string& error) {
-  if (out.to_standard_output() &&
-      !(error = one_file_error(options, data.abstractions.size())).empty())
-    return false;
-  if (!write_common(options, data, data, out, error)) return false;
-  if (wants(options, "json") &&
-      !out.write(data.name + ".json", codegen::catalog_json(data).dump(2) + "\n", error))
-    return false;
-  for (std::size_t i = 0; wants(options, "dot") && i < data.abstractions.size(); ++i) {
-    if (!out.write(data.name + "." + data.abstractions[i].context + ".dot",
-                   codegen::abstraction_dot(data, i), error))
-      return false;
-  }
-  return true;
-}
-
-bool write_continuous(const CompileOptions& options, const pipeline::ContinuousCatalog& catalog,
-                      OutputSet& out, std::string& error) {
-  if (out.to_standard_output() &&
-      !(error = one_file_error(options, catalog.abstractions.size())).empty())
-    return false;
-  model::CatalogData data = pipeline::continuous_catalog_data(catalog, options.with_transitions);
-  model::CatalogData linked = options.with_transitions && wants(options, "cpp")
-                                  ? pipeline::continuous_catalog_data(catalog, false)
-                                  : model::CatalogData{};
-  if (!write_common(options, data, options.with_transitions ? linked : data, out, error))
-    return false;
-  const auto stream_json = [&](AtomicFile& file) {
-    codegen::JsonWriter writer([&file](std::string_view piece) { file.append(piece); });
-    codegen::write_continuous_catalog_json(writer, catalog, options.with_transitions);
-    writer.finish();
-  };
-  if (wants(options, "json") && !out.write_with(catalog.name + ".json", stream_json, error))
-    return false;
-  for (std::size_t i = 0; wants(options, "svg") && i < catalog.abstractions.size(); ++i) {
-    if (!out.write(catalog.name + "." + catalog.abstractions[i].context + ".svg",
-                   codegen::abstraction_svg(catalog, i), error))
-      return false;
-  }
-  return true;
-}
 
 // On `stream`: stdout, or stderr when the catalog itself goes to standard output.
 void print_continuous_summary(const pipeline::ContinuousCatalog& catalog, std::FILE* stream) {
@@ -207,17 +78,6 @@ void print_continuous_summary(const pipeline::ContinuousCatalog& catalog, std::F
                    "target epsilon\n");
     }
   }
-}
-
-// What goes in the marker file: enough to tell which spec and options made the set, and
-// nothing that changes between identical runs.
-std::string marker_text(const CompileOptions& options, std::uint64_t hash, const OutputSet& out) {
-  std::string text = "written by oasisc " + std::string(OASIS_VERSION) + " compile\n";
-  text += "spec " + fs::path(options.spec).filename().string() + " " + rt::spec_hash_text(hash) +
-          "\nfiles";
-  for (const std::string& name : out.names())
-    text += " " + name;
-  return text + "\n";
 }
 
 int run_compile(CompileOptions options) {
@@ -257,8 +117,8 @@ int run_compile(CompileOptions options) {
   if (options.output.empty()) options.output = fs::path(options.spec).stem().string();
   const bool to_standard_output = options.output == "-";
   // Refused before the build when the formats alone decide it (the context count may not).
-  if (to_standard_output && !one_file_error(options, 1).empty()) {
-    std::cerr << "oasisc: error: " << one_file_error(options, 1) << '\n';
+  if (to_standard_output && !codegen::one_file_error(options, 1).empty()) {
+    std::cerr << "oasisc: error: " << codegen::one_file_error(options, 1) << '\n';
     return 2;
   }
   StagedDirectory directory;
@@ -267,7 +127,7 @@ int run_compile(CompileOptions options) {
     std::cerr << options.output << ": error: " << error << '\n';
     return 1;
   }
-  OutputSet out(to_standard_output ? std::string() : directory.staging_path());
+  codegen::OutputSet out(to_standard_output ? std::string() : directory.staging_path());
   bool written = false;
   if (continuous) {
     pipeline::ContinuousCatalogOptions build;
@@ -300,7 +160,7 @@ int run_compile(CompileOptions options) {
       return 1;
     }
     print_continuous_summary(*catalog, to_standard_output ? stderr : stdout);
-    written = write_continuous(options, *catalog, out, error);
+    written = codegen::write_continuous_catalog(options, *catalog, out, error);
   } else {
     pipeline::BuildOptions build;
     build.catalog.p_correct = options.p_correct;
@@ -310,10 +170,10 @@ int run_compile(CompileOptions options) {
       std::cerr << options.spec << ": error: " << error << '\n';
       return 1;
     }
-    written = write_discrete(options, *catalog, out, error);
+    written = codegen::write_discrete_catalog(options, *catalog, out, error);
   }
   if (!written ||
-      (!to_standard_output && !directory.commit(marker_text(options, hash, out), error))) {
+      (!to_standard_output && !directory.commit(codegen::marker_text(options, hash, out), error))) {
     std::cerr << (to_standard_output ? "oasisc" : options.output) << ": error: " << error << '\n';
     return 1;
   }

@@ -42,7 +42,7 @@ void print_summary(std::ostream& out, const model::ExplicitModel& model,
   out << '\n' << std::defaultfloat;
 }
 
-nlohmann::json quotient_json(const LoadedModel& loaded,
+nlohmann::json quotient_json(const input::LoadedModel& loaded,
                              const std::vector<pipeline::DiscreteAbstraction>& results,
                              double load_seconds, double peak_mib, bool with_partition,
                              std::optional<double> epsilon) {

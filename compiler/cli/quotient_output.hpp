@@ -8,7 +8,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "cli/model_loader.hpp"
+#include "input/model_loader.hpp"
 #include "pipeline/discrete_catalog.hpp"
 
 namespace oasis::cli {
@@ -20,7 +20,7 @@ void print_summary(std::ostream& out, const model::ExplicitModel& model,
 // Keys: file, model, exact, epsilon, load_seconds, peak_memory_mib, contexts[] with name,
 // states, transitions, blocks, seconds, splitters, edge_visits (and partition when asked:
 // blocks as lists of state names, or of indices for unnamed imported states).
-nlohmann::json quotient_json(const LoadedModel& loaded,
+nlohmann::json quotient_json(const input::LoadedModel& loaded,
                              const std::vector<pipeline::DiscreteAbstraction>& results,
                              double load_seconds, double peak_mib, bool with_partition,
                              std::optional<double> epsilon);

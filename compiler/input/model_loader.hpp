@@ -12,7 +12,7 @@
 #include "support/diagnostics.hpp"
 #include "support/limits.hpp"
 
-namespace oasis::cli {
+namespace oasis::input {
 
 struct LoadOptions {
   std::uint32_t max_states = limits::kDefaultMaxStates;
@@ -40,4 +40,4 @@ struct LoadedModel {
 std::optional<LoadedModel> load_model(const std::string& path, SourceManager& sources,
                                       DiagnosticEngine& diagnostics, const LoadOptions& options);
 
-}  // namespace oasis::cli
+}  // namespace oasis::input

@@ -1,4 +1,4 @@
-#include "cli/model_loader.hpp"
+#include "input/model_loader.hpp"
 
 #include <algorithm>
 #include <cstdio>
@@ -12,7 +12,7 @@
 #include "prism/imported_catalog.hpp"
 #include "prism/load_program.hpp"
 
-namespace oasis::cli {
+namespace oasis::input {
 namespace {
 
 // rt::spec_hash of a file's text, in steps that hand the pages read back to the kernel, so
@@ -134,4 +134,4 @@ std::optional<LoadedModel> load_model(const std::string& path, SourceManager& so
   return loaded;
 }
 
-}  // namespace oasis::cli
+}  // namespace oasis::input
