@@ -46,7 +46,7 @@ def planted(build, directory, exponent):
 
 def run_mpi(build, model, ranks, output):
     command = ["mpirun", "-np", str(ranks), "--oversubscribe",
-               os.path.join(build, "compiler", "oasisc-mpi"), model, "-q", "--max-states", "40000000",
+               os.path.join(build, "compiler", "oasisc-mpi"), "quotient", model, "-q", "--max-states", "40000000",
                "-o", output]
     start = time.perf_counter()
     result = subprocess.run(command, capture_output=True, text=True, env=mpi_environment())

@@ -56,13 +56,13 @@ def main():
     model = work / "planted.aut"
     subprocess.run([args.planted, "--transitions", "100000", "--blocks", "100", "--seed", "3",
                     "-o", str(model)], check=True, capture_output=True)
-    result = mpirun(4, [args.oasisc_mpi, str(model), "-o", output], extra_env={"OASIS_MPI_KILL": "2:1"})
+    result = mpirun(4, [args.oasisc_mpi, "quotient", str(model), "-o", output], extra_env={"OASIS_MPI_KILL": "2:1"})
     expect_clean_failure(out_dir, result, "rank 2 killed in round 1")
     said = result.stdout + result.stderr
     check("rank 2" in said and ("signal 9" in said or "Killed" in said),
           "mpirun names the lost rank and its signal", result)
 
-    result = mpirun(4, [args.oasisc_mpi, str(model), "-o", output, "--progress"])
+    result = mpirun(4, [args.oasisc_mpi, "quotient", str(model), "-o", output, "--progress"])
     check(result.returncode == 0 and Path(output).exists(), "the same run without the kill writes the partition", result)
     check("read planted in" in result.stderr and "round 0: " in result.stderr and "round 1: " in result.stderr,
           "--progress reports the reading and each round", result)
@@ -71,7 +71,7 @@ def main():
     n = 4000
     bad = work / "bad_line.aut"
     bad.write_text(chain_text(n, bad_line=3 * n // 4))  # in the last rank's part
-    result = mpirun(4, [args.oasisc_mpi, str(bad), "-o", output])
+    result = mpirun(4, [args.oasisc_mpi, "quotient", str(bad), "-o", output])
     expect_clean_failure(out_dir, result, "a bad line in rank 3's part")
     line = 3 * n // 4 + 2
     check(result.stderr.count(f"bad_line.aut:{line}:") == 1 and "error:" in result.stderr,
@@ -79,25 +79,25 @@ def main():
 
     header = work / "bad_header.aut"
     header.write_text("des (0,1)\n(0,\"a\",0)\n")
-    result = mpirun(4, [args.oasisc_mpi, str(header), "-o", output])
+    result = mpirun(4, [args.oasisc_mpi, "quotient", str(header), "-o", output])
     expect_clean_failure(out_dir, result, "a bad header")
     check(result.stderr.count("bad_header.aut:1:") == 1, "the header's error is reported once, not per rank", result)
 
     repeated = work / "repeated.aut"
     repeated.write_text(chain_text(n, repeat=1))  # state 1's second line is in the last part
-    result = mpirun(4, [args.oasisc_mpi, str(repeated), "-o", output])
+    result = mpirun(4, [args.oasisc_mpi, "quotient", str(repeated), "-o", output])
     expect_clean_failure(out_dir, result, "a (state, action) given in two parts")
     check("state 1 has more than one distribution for action 'a'" in result.stderr,
           "the repeated distribution is named", result)
 
     count = work / "count.aut"
     count.write_text(chain_text(n, declared=n + 5))
-    result = mpirun(4, [args.oasisc_mpi, str(count), "-o", output])
+    result = mpirun(4, [args.oasisc_mpi, "quotient", str(count), "-o", output])
     expect_clean_failure(out_dir, result, "a wrong transition count")
     check(f"declares {n + 5} transitions but the file has {n}" in result.stderr,
           "the count is checked over all parts", result)
 
-    result = mpirun(2, [args.oasisc_mpi, str(work / "model.tra"), "-o", output])
+    result = mpirun(2, [args.oasisc_mpi, "quotient", str(work / "model.tra"), "-o", output])
     expect_clean_failure(out_dir, result, "a .tra file")
     check("reads mCRL2 .aut files" in result.stderr, "other formats are refused with a hint", result)
 

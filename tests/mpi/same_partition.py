@@ -183,7 +183,7 @@ def main():
     for ranks, flags in runs:
         out_dir = work / f"mpi{ranks}{'r' if flags else ''}"
         out_dir.mkdir(exist_ok=True)
-        result = mpirun(ranks, [args.oasisc_mpi, "-q", "-o", str(out_dir)] + flags + [str(m) for m in models])
+        result = mpirun(ranks, [args.oasisc_mpi, "quotient", "-q", "-o", str(out_dir)] + flags + [str(m) for m in models])
         if result.returncode != 0:
             print(f"P={ranks} {' '.join(flags)}: mpirun exited {result.returncode}\n{result.stderr}")
             failures += 1
@@ -199,7 +199,7 @@ def main():
     ranks = runs[-1][0]
     out_dir = work / f"mpi{ranks}aut"
     out_dir.mkdir()
-    result = mpirun(ranks, [args.oasisc_mpi, "-q", "--format", "aut", "-o", str(out_dir)] + [str(m) for m in models])
+    result = mpirun(ranks, [args.oasisc_mpi, "quotient", "-q", "--format", "aut", "-o", str(out_dir)] + [str(m) for m in models])
     if result.returncode != 0:
         print(f"P={ranks} --format aut: mpirun exited {result.returncode}\n{result.stderr}")
         failures += 1

@@ -1,0 +1,240 @@
+// `oasisc-mpi quotient MODEL.aut -o OUT`: the coarsest bisimulation of an .aut model with
+// the model spread over the ranks (docs/bisimulation.md, "Past one machine").
+
+#include <algorithm>
+#include <chrono>
+#include <csignal>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <iomanip>
+#include <iostream>
+#include <memory>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <sys/resource.h>
+
+#include "distributed/distributed_reader.hpp"
+#include "distributed/partition_output.hpp"
+#include "distributed/quotient_output.hpp"
+#include "distributed/signature_refinement.hpp"
+#include "formats/aut_writer.hpp"
+#include "mpi_cli/commands.hpp"
+
+namespace oasis::mpi_cli {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+struct Options {
+  std::vector<std::string> models;
+  std::string output;
+  std::string format = "json";
+  formats::ReadOptions read;
+  bool rational_sums = false;
+  bool progress = false;
+  bool quiet = false;
+};
+
+constexpr const char* kFooter =
+    "The coarsest probabilistic bisimulation of an MDP in mCRL2's .aut format, computed by\n"
+    "every rank of an MPI job: the same partition as 'oasisc quotient', with the model spread\n"
+    "over the ranks' memory.\n"
+    "\n"
+    "Each rank reads a part of the file and keeps the states s with s mod P equal to its rank\n"
+    "(on several machines the file must be at the same path on each: a shared file system).\n"
+    "Rounds of signature refinement follow (docs/bisimulation.md); rank 0 writes the\n"
+    "partition as 'oasisc quotient --format json --partition' does, so that\n"
+    "'oasisc verify MODEL PARTITION.json' checks it; or, with --format aut, the quotient MDP\n"
+    "as 'oasisc quotient --format aut' writes it, byte for byte. Sums are exact: integers\n"
+    "over a common denominator when it fits in 62 bits, GMP rationals otherwise.\n"
+    "\n"
+    "Examples:\n"
+    "  mpirun -np 4 oasisc-mpi quotient model.aut -o partition.json\n"
+    "  oasisc verify model.aut partition.json\n"
+    "  mpirun -np 4 oasisc-mpi quotient model.aut --format aut -o quotient.aut\n"
+    "  mpirun -np 2 oasisc-mpi quotient a.aut b.aut -o partitions/   (one JSON per model)\n"
+    "  mpirun -np 16 --hostfile hosts oasisc-mpi quotient big.aut -o p.json --progress\n"
+    "\n"
+    "Other formats: 'oasisc export MODEL --format aut -o MODEL.aut' first.";
+
+double peak_memory_mib() {
+  rusage usage{};
+  getrusage(RUSAGE_SELF, &usage);
+  return static_cast<double>(usage.ru_maxrss) / 1024.0;
+}
+
+double seconds_since(Clock::time_point start) {
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+// For the test of a rank lost mid-run: OASIS_MPI_KILL=RANK:ROUND makes that rank kill
+// itself (SIGKILL, as the out-of-memory killer would) when that round starts.
+void maybe_kill_self(std::uint32_t rank, std::uint32_t round) {
+  const char* spec = std::getenv("OASIS_MPI_KILL");
+  if (spec == nullptr) return;
+  unsigned wanted_rank = 0;
+  unsigned wanted_round = 0;
+  char colon = 0;
+  std::istringstream in(spec);
+  if (in >> wanted_rank >> colon >> wanted_round && colon == ':' && wanted_rank == rank &&
+      wanted_round == round) {
+    std::raise(SIGKILL);
+  }
+}
+
+std::string output_for(const Options& options, const std::string& model) {
+  if (options.models.size() == 1) return options.output;
+  return (std::filesystem::path(options.output) /
+          (std::filesystem::path(model).stem().string() + "." + options.format))
+      .string();
+}
+
+void print_summary(const distributed::RunFacts& facts, std::uint32_t states, std::uint64_t blocks,
+                   const std::string& output) {
+  const double peak = *std::max_element(facts.peak_memory_mib.begin(), facts.peak_memory_mib.end());
+  std::cout << std::fixed << std::setprecision(3) << facts.model << ": " << states << " states, "
+            << facts.transitions << " transitions, " << facts.ranks
+            << (facts.ranks == 1 ? " rank" : " ranks") << "; read in " << facts.load_seconds
+            << " s\n  " << blocks << (blocks == 1 ? " block" : " blocks") << " after "
+            << facts.rounds << " rounds ("
+            << (facts.exact_integer_sums ? "exact integer sums" : "exact rational sums") << ") in "
+            << facts.refinement_seconds << " s\n  peak memory per rank " << std::setprecision(1)
+            << peak << " MiB at most (";
+  for (std::size_t q = 0; q < facts.peak_memory_mib.size(); ++q)
+    std::cout << (q ? ", " : "") << facts.peak_memory_mib[q];
+  std::cout << ")\n  wrote " << output << '\n' << std::defaultfloat;
+}
+
+// Rank 0's share of the file stands for all: the parts are of equal bytes.
+distributed::ReadProgress reading_progress(const Options& options,
+                                           const distributed::Communicator& communicator) {
+  if (!options.progress || !communicator.is_root()) return {};
+  return [](std::uint64_t read, std::uint64_t part) {
+    std::cerr << "reading: " << (part == 0 ? 100 : read * 100 / part) << "% of rank 0's part\n";
+  };
+}
+
+// Collective; returns whether the partition was written.
+bool run_one(const std::string& path, const Options& options,
+             const distributed::Communicator& communicator) {
+  const Clock::time_point start = Clock::now();
+  std::optional<distributed::OwnedModel> owned = distributed::read_aut_distributed(
+      path, options.read, communicator, reading_progress(options, communicator));
+  if (!owned) return false;
+  distributed::RunFacts facts;
+  facts.file = path;
+  facts.model = owned->name;
+  facts.ranks = communicator.size();
+  facts.transitions = owned->num_edges;
+  facts.load_seconds = seconds_since(start);
+  const std::uint32_t states = owned->num_states;
+
+  distributed::DistributedOptions refinement;
+  refinement.rational_sums = options.rational_sums;
+  const Clock::time_point refining = Clock::now();
+  if (options.progress && communicator.is_root()) {
+    std::fprintf(stderr, "read %s in %.2f s: %u states, %llu transitions\n", facts.model.c_str(),
+                 facts.load_seconds, states, static_cast<unsigned long long>(facts.transitions));
+  }
+  refinement.on_round = [&](std::uint32_t round, std::uint64_t blocks) {
+    maybe_kill_self(communicator.rank(), round);
+    if (options.progress && communicator.is_root() && round > 0) {  // round - 1 is done
+      std::fprintf(stderr, "round %u: %llu blocks, %.2f s\n", round - 1,
+                   static_cast<unsigned long long>(blocks), seconds_since(refining));
+    }
+  };
+  const distributed::DistributedPartition partition =
+      distributed::refine_distributed(*owned, communicator, refinement);
+  facts.refinement_seconds = seconds_since(refining);
+  facts.rounds = partition.rounds;
+  facts.exact_integer_sums = partition.exact_integer_sums;
+  const std::optional<distributed::GatheredPartition> whole =
+      distributed::gather_partition(*owned, partition, communicator);
+  std::optional<model::ExplicitModel> quotient;
+  if (options.format == "aut") quotient = distributed::gather_quotient(*owned, whole, communicator);
+  owned.reset();
+  for (const std::string& text : communicator.all_gather(std::to_string(peak_memory_mib())))
+    facts.peak_memory_mib.push_back(std::stod(text));
+
+  bool written = true;
+  if (communicator.is_root()) {
+    const std::string output = output_for(options, path);
+    std::string error;
+    written = quotient ? formats::write_aut_file(*quotient, 0, output, error)
+                       : distributed::write_partition_json(output, whole->partition, facts, error);
+    if (!written)
+      std::cerr << "oasisc-mpi: error: cannot write '" << output << "': " << error << '\n';
+    else if (!options.quiet)
+      print_summary(facts, states, partition.num_blocks, output);
+  }
+  return !communicator.any(!written);
+}
+
+bool check_models(const Options& options, bool report) {
+  for (const std::string& model : options.models) {
+    if (std::filesystem::path(model).extension() != ".aut") {
+      if (report)
+        std::cerr << model << ": error: oasisc-mpi reads mCRL2 .aut files; convert others with "
+                  << "'oasisc export " << model << " --format aut -o MODEL.aut'\n";
+      return false;
+    }
+  }
+  std::error_code code;
+  if (options.models.size() > 1 && !std::filesystem::is_directory(options.output, code)) {
+    if (report)
+      std::cerr << "oasisc-mpi: error: with " << options.models.size()
+                << " models, -o must name an existing directory (one output per model)\n";
+    return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+CommandRunner add_quotient_command(CLI::App& app, const distributed::Communicator& communicator) {
+  auto options = std::make_shared<Options>();
+  CLI::App* command = app.add_subcommand(
+      "quotient", "The coarsest bisimulation of .aut models, spread over the ranks");
+  command->footer(kFooter);
+  command
+      ->add_option("models", options->models, "mCRL2 .aut models (several: one output each in -o)")
+      ->required();
+  command
+      ->add_option("-o,--output", options->output,
+                   "The output file (a directory when several models are given: NAME.json or "
+                   "NAME.aut in it)")
+      ->required();
+  command
+      ->add_option("-f,--format", options->format,
+                   "json: the partition, as 'oasisc quotient --format json --partition' writes it; "
+                   "aut: the quotient MDP, as 'oasisc quotient --format aut' writes it")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"json", "aut"}));
+  command
+      ->add_option("--max-input-size", options->read.max_bytes,
+                   "Refuse files larger than this (bytes, or with a unit: 8G)")
+      ->capture_default_str()
+      ->transform(CLI::AsSizeValue(false));
+  command
+      ->add_option("--max-states", options->read.max_states,
+                   "Refuse files whose header declares more states")
+      ->capture_default_str()
+      ->check(CLI::Range(1U, 4'000'000'000U));
+  command->add_flag("--rational-sums", options->rational_sums,
+                    "Add probabilities with GMP even when integers would be exact (for tests)");
+  command->add_flag("--progress", options->progress,
+                    "Report on stderr how the reading goes, then the blocks after each round");
+  command->add_flag("-q,--quiet", options->quiet, "Print nothing on success");
+  return [options, &communicator] {
+    if (!check_models(*options, communicator.is_root())) return 1;
+    bool ok = true;
+    for (const std::string& model : options->models)
+      ok = run_one(model, *options, communicator) && ok;
+    return ok ? 0 : 1;
+  };
+}
+
+}  // namespace oasis::mpi_cli
