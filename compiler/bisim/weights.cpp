@@ -2,6 +2,42 @@
 
 namespace oasis::bisim {
 
+std::vector<bool> used_values(std::size_t pool_size, std::span<const ValueId> ids) {
+  std::vector<bool> used(pool_size, false);
+  for (ValueId id : ids)
+    used[id] = true;
+  return used;
+}
+
+bool extend_common_denominator(mpz_class& denominator, const mpz_class& other) {
+  mpz_lcm(denominator.get_mpz_t(), denominator.get_mpz_t(), other.get_mpz_t());
+  return denominator <= mpz_class(1) << 62;
+}
+
+std::optional<mpz_class> common_denominator(const RationalPool& values,
+                                            const std::vector<bool>& used) {
+  mpz_class denominator = 1;
+  for (std::size_t id = 0; id < used.size(); ++id) {
+    if (used[id] &&
+        !extend_common_denominator(denominator, values[static_cast<ValueId>(id)].get_den()))
+      return std::nullopt;
+  }
+  return denominator;
+}
+
+std::vector<std::uint64_t> numerators_over(const RationalPool& values,
+                                           const std::vector<bool>& used,
+                                           const mpz_class& denominator) {
+  std::vector<std::uint64_t> numerators(values.size(), 0);
+  for (std::size_t id = 0; id < used.size(); ++id) {
+    if (!used[id]) continue;
+    const Rational& p = values[static_cast<ValueId>(id)];
+    const mpz_class numerator = p.get_num() * (denominator / p.get_den());
+    numerators[id] = numerator.get_ui();  // 0 < p <= 1, so 0 < numerator <= denominator
+  }
+  return numerators;
+}
+
 WeightTable WeightTable::choose(const model::ExplicitModel& model,
                                 const model::TransitionMatrix& matrix,
                                 std::optional<double> epsilon, bool rational) {
@@ -20,27 +56,14 @@ WeightTable WeightTable::choose(const model::ExplicitModel& model,
     return table;
   }
   // The common denominator of the probabilities this context uses (few distinct values).
-  std::vector<bool> used(num_values, false);
-  for (ValueId id : matrix.edge_probability)
-    used[id] = true;
-  mpz_class denominator = 1;
-  const mpz_class limit = mpz_class(1) << 62;
-  for (std::size_t id = 0; id < num_values; ++id) {
-    if (!used[id]) continue;
-    mpz_lcm(denominator.get_mpz_t(), denominator.get_mpz_t(), model.values[id].get_den_mpz_t());
-    if (denominator > limit) {
-      table.mode = WeightMode::Rational;
-      return table;
-    }
+  const std::vector<bool> used = used_values(num_values, matrix.edge_probability);
+  const std::optional<mpz_class> denominator = common_denominator(model.values, used);
+  if (!denominator) {
+    table.mode = WeightMode::Rational;
+    return table;
   }
   table.mode = WeightMode::Integer;
-  table.integer.assign(num_values, 0);
-  for (std::size_t id = 0; id < num_values; ++id) {
-    if (!used[id]) continue;
-    const mpz_class numerator =
-        model.values[id].get_num() * (denominator / model.values[id].get_den());
-    table.integer[id] = numerator.get_ui();  // 0 < p <= 1, so 0 < numerator <= denominator
-  }
+  table.integer = numerators_over(model.values, used, *denominator);
   return table;
 }
 

@@ -10,11 +10,29 @@
 #include <cmath>
 #include <cstdint>
 #include <optional>
+#include <span>
 #include <vector>
 
 #include "model/explicit_model.hpp"
 
 namespace oasis::bisim {
+
+// The pieces of the Integer representation, shared with the distributed engine, which finds
+// the common denominator over all ranks' probabilities.
+
+// Which ids of a pool of `pool_size` values `ids` uses.
+std::vector<bool> used_values(std::size_t pool_size, std::span<const ValueId> ids);
+// Makes `denominator` the least common multiple of itself and `other`; false when that passes
+// 2^62, past which a sum of probabilities over it could overflow.
+bool extend_common_denominator(mpz_class& denominator, const mpz_class& other);
+// The least common denominator of the values `used` marks, or nullopt past 2^62.
+std::optional<mpz_class> common_denominator(const RationalPool& values,
+                                            const std::vector<bool>& used);
+// Each used value (a probability) as its numerator over `denominator`, a multiple of its
+// denominator; 0 for the ids not used.
+std::vector<std::uint64_t> numerators_over(const RationalPool& values,
+                                           const std::vector<bool>& used,
+                                           const mpz_class& denominator);
 
 enum class WeightMode { Integer, Rational, Rounded };
 

@@ -7,7 +7,6 @@
 #include <mutex>
 
 #include <nlohmann/json.hpp>
-#include <sys/resource.h>
 #include <unistd.h>
 
 #include "bisim/quotient.hpp"
@@ -20,6 +19,7 @@
 #include "support/atomic_file.hpp"
 #include "support/atomic_file_set.hpp"
 #include "support/limits.hpp"
+#include "support/peak_memory.hpp"
 
 namespace oasis::cli {
 namespace {
@@ -36,12 +36,6 @@ struct QuotientOptions {
   unsigned jobs = 0;
   CommonOptions common;
 };
-
-double peak_memory_mib() {
-  rusage usage{};
-  ::getrusage(RUSAGE_SELF, &usage);
-  return static_cast<double>(usage.ru_maxrss) / 1024.0;
-}
 
 // The contexts to quotient: those named, or all.
 std::optional<std::vector<std::size_t>> select_contexts(const model::ExplicitModel& model,

@@ -6,6 +6,7 @@
 #include <map>
 #include <sstream>
 
+#include "distributed/grouping.hpp"
 #include "formats/aut_reader.hpp"
 #include "support/diagnostics.hpp"
 #include "support/mapped_file.hpp"
@@ -231,21 +232,13 @@ std::optional<std::pair<StateIndex, std::uint32_t>> assemble(Arrivals& arrivals,
     }
   }
   arrivals.messages = {};
-  // A counting sort by state, then each state's few choices by action.
+  // Grouped by state, then each state's few choices sorted by action.
   const std::uint32_t num_owned = owned.ownership.share(owned.num_states, owned.ownership.rank);
-  std::vector<std::uint32_t>& begin = owned.state_choice_begin;
-  begin.assign(std::size_t{num_owned} + 1, 0);
-  for (std::uint32_t s : arrivals.state)
-    ++begin[s + 1];
-  for (std::uint32_t i = 0; i < num_owned; ++i)
-    begin[i + 1] += begin[i];
-  std::vector<std::uint32_t> order(arrivals.state.size());
-  {
-    std::vector<std::uint32_t> next(begin.begin(), begin.end() - 1);
-    for (std::uint32_t c = 0; c < arrivals.state.size(); ++c)
-      order[next[arrivals.state[c]]++] = c;
-  }
+  Grouping by_state = group_by_key(arrivals.state, num_owned);
   arrivals.state = {};
+  owned.state_choice_begin = std::move(by_state.begin);
+  const std::vector<std::uint32_t>& begin = owned.state_choice_begin;
+  std::vector<std::uint32_t>& order = by_state.order;
   std::optional<std::pair<StateIndex, std::uint32_t>> repeated;
   for (std::uint32_t i = 0; i < num_owned; ++i) {
     const auto first = order.begin() + begin[i];

@@ -4,6 +4,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "distributed/grouping.hpp"
 #include "support/atomic_file.hpp"
 
 namespace oasis::distributed {
@@ -35,15 +36,9 @@ namespace {
 
 // The blocks as arrays of state indices, ascending, streamed: no per-block containers.
 void append_blocks(AtomicFile& out, const model::Partition& partition) {
-  std::vector<std::uint32_t> first(std::size_t{partition.num_blocks} + 1, 0);
-  for (std::uint32_t block : partition.block_of)
-    ++first[block + 1];
-  for (std::uint32_t b = 0; b < partition.num_blocks; ++b)
-    first[b + 1] += first[b];
-  std::vector<std::uint32_t> members(partition.block_of.size());
-  std::vector<std::uint32_t> next(first.begin(), first.end() - 1);
-  for (std::uint32_t s = 0; s < partition.block_of.size(); ++s)
-    members[next[partition.block_of[s]]++] = s;
+  const Grouping by_block = group_by_key(partition.block_of, partition.num_blocks);
+  const std::vector<std::uint32_t>& first = by_block.begin;
+  const std::vector<std::uint32_t>& members = by_block.order;  // ascending within a block
   out.append('[');
   for (std::uint32_t b = 0; b < partition.num_blocks; ++b) {
     out.append(b == 0 ? "[" : ",[");

@@ -9,56 +9,37 @@
 
 #include <gmpxx.h>
 
+#include "bisim/weights.hpp"
 namespace oasis::distributed {
 namespace {
 
 using model::StateIndex;
 
 // How masses are added: integers over a common denominator when it fits in 62 bits (a sum
-// of probabilities is at most that denominator), else exact GMP rationals.
+// of probabilities is at most that denominator), else exact GMP rationals. The denominator is
+// the least common multiple of every rank's own (bisim/weights.hpp), so it is the same on all.
 class Masses {
  public:
   Masses(const OwnedModel& owned, const Communicator& communicator, bool rational_sums) {
-    integer_ = !rational_sums && choose_denominator(owned, communicator);
-    if (!integer_) return;
-    numerator_.assign(owned.values.size(), 0);
-    for (std::size_t id = 0; id < owned.values.size(); ++id) {
-      const Rational& p = owned.values[static_cast<ValueId>(id)];
-      if (p <= 0 || p > 1 || denominator_ % p.get_den() != 0) continue;  // not a probability
-      const mpz_class numerator = p.get_num() * (denominator_ / p.get_den());
-      numerator_[id] = numerator.get_ui();
+    const std::vector<bool> used = bisim::used_values(owned.values.size(), owned.edge_probability);
+    const std::optional<mpz_class> local = bisim::common_denominator(owned.values, used);
+    // Collective whatever this rank found: "0" says its own denominator is already too large.
+    const std::vector<std::string> all = communicator.all_gather(local ? local->get_str() : "0");
+    if (rational_sums) return;
+    mpz_class denominator = 1;
+    for (const std::string& text : all) {
+      const mpz_class other(text);
+      if (other == 0 || !bisim::extend_common_denominator(denominator, other)) return;
     }
+    integer_ = true;
+    numerator_ = bisim::numerators_over(owned.values, used, denominator);
   }
 
   [[nodiscard]] bool integer() const { return integer_; }
   [[nodiscard]] std::uint64_t numerator(ValueId id) const { return numerator_[id]; }
 
  private:
-  // The lcm of the denominators of every probability on every rank.
-  bool choose_denominator(const OwnedModel& owned, const Communicator& communicator) {
-    std::vector<bool> used(owned.values.size(), false);
-    for (ValueId id : owned.edge_probability)
-      used[id] = true;
-    const mpz_class limit = mpz_class(1) << 62;
-    mpz_class local = 1;
-    for (std::size_t id = 0; id < used.size() && local <= limit; ++id) {
-      if (used[id])
-        mpz_lcm(local.get_mpz_t(), local.get_mpz_t(),
-                owned.values[static_cast<ValueId>(id)].get_den_mpz_t());
-    }
-    const std::string text = local <= limit ? local.get_str() : std::string("0");
-    denominator_ = 1;
-    for (const std::string& other : communicator.all_gather(text)) {
-      const mpz_class value(other);
-      if (value == 0) return false;
-      mpz_lcm(denominator_.get_mpz_t(), denominator_.get_mpz_t(), value.get_mpz_t());
-      if (denominator_ > limit) return false;
-    }
-    return true;
-  }
-
   bool integer_ = false;
-  mpz_class denominator_ = 1;
   std::vector<std::uint64_t> numerator_;
 };
 
@@ -311,7 +292,6 @@ DistributedPartition refine_distributed(OwnedModel& owned, const Communicator& c
         signatures.refined(local, result.block_of_owned[local], ghosts, signature);
       numbering.add(local, signature);
     }
-    result.block_of_owned.assign(num_owned, 0);
     const std::uint64_t blocks = numbering.number(result.block_of_owned);
     result.rounds = round + 1;
     if (round > 0 && blocks == previous) break;

@@ -14,14 +14,13 @@
 #include <string>
 #include <vector>
 
-#include <sys/resource.h>
-
 #include "distributed/distributed_reader.hpp"
 #include "distributed/partition_output.hpp"
 #include "distributed/quotient_output.hpp"
 #include "distributed/signature_refinement.hpp"
 #include "formats/aut_writer.hpp"
 #include "mpi_cli/commands.hpp"
+#include "support/peak_memory.hpp"
 
 namespace oasis::mpi_cli {
 namespace {
@@ -59,12 +58,6 @@ constexpr const char* kFooter =
     "  mpirun -np 16 --hostfile hosts oasisc-mpi quotient big.aut -o p.json --progress\n"
     "\n"
     "Other formats: 'oasisc export MODEL --format aut -o MODEL.aut' first.";
-
-double peak_memory_mib() {
-  rusage usage{};
-  getrusage(RUSAGE_SELF, &usage);
-  return static_cast<double>(usage.ru_maxrss) / 1024.0;
-}
 
 double seconds_since(Clock::time_point start) {
   return std::chrono::duration<double>(Clock::now() - start).count();
@@ -156,8 +149,8 @@ bool run_one(const std::string& path, const Options& options,
   std::optional<model::ExplicitModel> quotient;
   if (options.format == "aut") quotient = distributed::gather_quotient(*owned, whole, communicator);
   owned.reset();
-  for (const std::string& text : communicator.all_gather(std::to_string(peak_memory_mib())))
-    facts.peak_memory_mib.push_back(std::stod(text));
+  for (const std::uint64_t kib : communicator.all_gather(peak_memory_kib()))
+    facts.peak_memory_mib.push_back(static_cast<double>(kib) / 1024.0);
 
   bool written = true;
   if (communicator.is_root()) {
