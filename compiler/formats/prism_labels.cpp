@@ -6,6 +6,7 @@
 //   4: 1 2
 
 #include "formats/prism_parts.hpp"
+#include "support/text.hpp"
 
 namespace oasis::formats {
 namespace {
@@ -51,13 +52,42 @@ class LabelsReader {
         scan_.error_here("unterminated label name");
         return false;
       }
-      if (rest.substr(0, close) == "init") init_ = index;
-      names_.emplace_back(rest.substr(0, close));
+      const std::string_view name = rest.substr(0, close);
+      if (!acceptable_name(name, scan_.position())) return false;
+      if (name == "init") init_ = index;
+      names_.emplace_back(name);
       scan_.seek(scan_.position() + close + 1);
       ++count_;
       scan_.skip_blanks();
     }
     scan_.skip_line();
+    return true;
+  }
+
+  // A name is a model's atomic proposition: it must be one a user can name (not empty, no NUL
+  // or other control character, which no message or file could show as it is) and appear
+  // once, so that "init" gives the initial states once and --respect-labels picks one label.
+  bool acceptable_name(std::string_view name, const char* at) {
+    if (name.empty()) {
+      scan_.error_at(at, 1, "empty label name");
+      return false;
+    }
+    for (std::size_t i = 0; i < name.size(); ++i) {
+      const auto byte = static_cast<unsigned char>(name[i]);
+      if (byte >= 0x20 && byte != 0x7f) continue;
+      scan_.error_at(at + i, 1,
+                     byte == 0 ? std::string("a label name cannot hold a NUL character")
+                               : "a label name cannot hold a control character (" +
+                                     text::printable_excerpt(name.substr(i, 1)) + ")");
+      return false;
+    }
+    for (std::uint32_t k = 0; k < names_.size(); ++k) {
+      if (names_[k] != name) continue;
+      scan_.error_at(at, name.size(),
+                     "label " + quoted(name) + " is declared twice (as label " + std::to_string(k) +
+                         " and label " + std::to_string(count_) + ")");
+      return false;
+    }
     return true;
   }
 

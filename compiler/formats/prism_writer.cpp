@@ -10,6 +10,7 @@
 #include "formats/value_text.hpp"
 #include "support/atomic_file.hpp"
 #include "support/atomic_file_set.hpp"
+#include "support/text.hpp"
 
 namespace oasis::formats {
 namespace {
@@ -81,6 +82,18 @@ std::optional<std::string> action_problem(const std::string& name) {
   return std::nullopt;
 }
 
+// What read_prism's .lab reader refuses (formats/prism_labels.cpp), or what would end the
+// name early: a label is written as N="name" on the first line.
+std::optional<std::string> label_problem(const std::string& name) {
+  if (name.empty()) return std::string("a label name is empty");
+  const bool unwritable = std::any_of(name.begin(), name.end(), [](char c) {
+    const auto byte = static_cast<unsigned char>(c);
+    return byte < 0x20 || byte == 0x7f || c == '"';
+  });
+  if (unwritable) return "label name " + quoted(name) + " holds a '\"' or a control character";
+  return std::nullopt;
+}
+
 class PrismWriter {
  public:
   PrismWriter(const model::ExplicitModel& model, std::size_t context, std::string base)
@@ -94,6 +107,12 @@ class PrismWriter {
   bool write(std::string& error) {
     for (const std::string& name : model_.actions) {
       if (auto problem = action_problem(name)) {
+        error = "cannot write PRISM files: " + *problem;
+        return false;
+      }
+    }
+    for (const std::string& name : model_.labels.names) {
+      if (auto problem = label_problem(name)) {
         error = "cannot write PRISM files: " + *problem;
         return false;
       }
@@ -165,8 +184,30 @@ class PrismWriter {
     out.append(' ');
   }
 
-  // "init" and "deadlock", as PRISM writes them, then the model's own labels (its atomic
-  // propositions, model/state_labels.hpp), so that a model read from PRISM files keeps them.
+  // Where "deadlock" holds: the model's own label when it has one (a PRISM program's deadlocked
+  // states have a self-loop, so they are not deadlocked in the matrix), else PRISM's meaning,
+  // the states without an enabled choice.
+  [[nodiscard]] std::vector<bool> deadlocked() const {
+    std::vector<bool> result(model_.num_states(), false);
+    if (const auto label = model_.labels.find("deadlock")) {
+      for (StateIndex s = 0; s < model_.num_states(); ++s) {
+        const auto held = model_.labels.of(s);
+        result[s] = std::find(held.begin(), held.end(), *label) != held.end();
+      }
+      return result;
+    }
+    for (StateIndex s = 0; s < model_.num_states(); ++s) {
+      bool none = true;
+      for (ActionIndex a = 0; a < model_.num_actions() && none; ++a)
+        none = !matrix_.enabled(s, a);
+      result[s] = none;
+    }
+    return result;
+  }
+
+  // "init" and "deadlock", as PRISM writes them and the reader expects them, then the model's
+  // own labels (its atomic propositions, model/state_labels.hpp), so that the model read back
+  // has the labels this one has.
   void write_labels(AtomicFile& out) {
     std::vector<std::uint32_t> written_as(model_.labels.names.size(), kNotWritten);
     std::uint32_t next = 2;
@@ -183,11 +224,10 @@ class PrismWriter {
     std::vector<bool> initial(model_.num_states(), false);
     for (StateIndex s : model_.states.initial)
       initial[s] = true;
+    const std::vector<bool> deadlocks = deadlocked();
     std::vector<std::uint32_t> held;
     for (StateIndex s = 0; s < model_.num_states(); ++s) {
-      bool deadlock = true;
-      for (ActionIndex a = 0; a < model_.num_actions() && deadlock; ++a)
-        deadlock = !matrix_.enabled(s, a);
+      const bool deadlock = deadlocks[s];
       held.clear();
       for (std::uint32_t label : model_.labels.of(s))
         if (written_as[label] != kNotWritten) held.push_back(written_as[label]);

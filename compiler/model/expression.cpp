@@ -192,14 +192,19 @@ std::int64_t evaluate_int(const Expression& expr, Valuation state) {
       if (v == INT64_MIN) overflow(expr);
       return v < 0 ? -v : v;
     }
-    case Op::Mod: {
+    case Op::Mod:
+    case Op::ModPositive: {
       const std::int64_t a = evaluate_int(args[0], state);
       const std::int64_t b = evaluate_int(args[1], state);
+      if (expr.op == Op::ModPositive && b <= 0) {
+        throw EvaluationError(expr.range, "mod(" + std::to_string(a) + ", " + std::to_string(b) +
+                                              "): the divisor must be positive");
+      }
       if (b == 0) throw EvaluationError(expr.range, "mod by zero");
       if (b == -1) return 0;  // a % -1 would overflow for INT64_MIN
-      // The result has the sign of b, like Python and PRISM. Adjusting the truncated
-      // remainder cannot overflow (r and b have opposite signs); a - floor(a / b) * b did,
-      // e.g. for mod(1, INT64_MIN), where floor(a / b) * b is 2^63.
+      // The result has the sign of b, like Python (PRISM refuses b <= 0: ModPositive). Adjusting
+      // the truncated remainder cannot overflow (r and b have opposite signs); a - floor(a / b) * b
+      // did, e.g. for mod(1, INT64_MIN), where floor(a / b) * b is 2^63.
       const std::int64_t r = a % b;
       return r != 0 && ((r < 0) != (b < 0)) ? r + b : r;
     }

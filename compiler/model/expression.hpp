@@ -45,8 +45,9 @@ enum class Op {
   Ceil,
   Abs,
   Mod,
-  Power,       // int ^ non-negative int, or number ^ int (PRISM's pow)
-  IfThenElse,  // operands: condition, then, else (PRISM's c ? a : b)
+  ModPositive,  // Mod whose divisor must be positive, as PRISM's mod requires
+  Power,        // int ^ non-negative int, or number ^ int (PRISM's pow)
+  IfThenElse,   // operands: condition, then, else (PRISM's c ? a : b)
 };
 
 struct Expression {

@@ -46,8 +46,9 @@ class Checker {
 
   std::optional<Program> run() {
     const std::size_t errors_before = diagnostics_.error_count();
+    const bool has_modules = check_has_modules();
     check_model_type();
-    modules_ = expand_renamed_modules(tree_.modules, diagnostics_);
+    expand_modules();
     if (modules_.size() > kMaxModules) {
       diagnostics_.error(modules_[kMaxModules].range,
                          "more than " + std::to_string(kMaxModules) + " modules");
@@ -64,6 +65,7 @@ class Checker {
     apply_overrides();
     evaluate_constants();
     declare_variables();
+    if (has_modules) check_has_variables();
     collect_actions();
     lower_modules();
     lower_labels();
@@ -76,11 +78,56 @@ class Checker {
  private:
   // --- Names -------------------------------------------------------------------------------
 
+  // Renamed modules become copies; each copy's renaming is kept for the formulas it uses.
+  void expand_modules() {
+    renamings_.emplace_back();  // 0: names as written
+    for (ExpandedModule& expanded :
+         expand_renamed_modules(tree_.modules, tree_.formulas, diagnostics_)) {
+      module_renaming_.push_back(expanded.renaming.empty() ? 0 : renamings_.size());
+      if (!expanded.renaming.empty()) renamings_.push_back(std::move(expanded.renaming));
+      modules_.push_back(std::move(expanded.module));
+    }
+  }
+
+  [[nodiscard]] const std::string& renamed(const std::string& name, std::size_t renaming) const {
+    const auto it = renamings_[renaming].find(name);
+    return it == renamings_[renaming].end() ? name : it->second;
+  }
+
+  // PRISM refuses a program without a module ("There must be at least one module"), an empty
+  // or comment-only file among them; exploring it would give one state and no behaviour. The
+  // other checks still run, so that one run reports every error.
+  bool check_has_modules() {
+    if (!tree_.modules.empty()) return true;
+    diagnostics_.error(start_of_program(),
+                       std::string("the program declares no module: a PRISM program needs at "
+                                   "least one") +
+                           (tree_.type_given ? "" : ", after its model type (dtmc or mdp)"));
+    return false;
+  }
+
+  // As PRISM: "There must be at least one variable".
+  void check_has_variables() {
+    if (!tree_.globals.empty()) return;
+    for (const ast::Module& module : modules_)
+      if (!module.variables.empty()) return;
+    diagnostics_.error(start_of_program(),
+                       "the program declares no variable: a PRISM program needs at least one");
+  }
+
+  // The model type if given, else the start of the file (not the end a comment-only file's
+  // first token would be).
+  [[nodiscard]] SourceRange start_of_program() const {
+    if (tree_.type_given) return tree_.type_range;
+    return SourceRange{SourceLocation{tree_.type_range.begin.file, 0}, 1};
+  }
+
   void check_model_type() {
     program_.type = tree_.type == ast::ModelType::Dtmc ? ModelType::Dtmc : ModelType::Mdp;
     program_.range = tree_.type_range;
-    // PRISM reads a program without a type as an MDP; so do we, and say so.
-    if (!tree_.type_given) {
+    // PRISM reads a program without a type as an MDP; so do we, and say so (unless the
+    // program has no module, which is an error that says it).
+    if (!tree_.type_given && !tree_.modules.empty()) {
       diagnostics_.warning(tree_.type_range,
                            "the program does not give its model type: read as "
                            "an mdp (start it with 'dtmc' or 'mdp')");
@@ -106,7 +153,7 @@ class Checker {
       const ast::Formula& formula = tree_.formulas[i];
       declare(formula.name, {Symbol::Kind::Formula, i, formula.range});
     }
-    formulas_.resize(tree_.formulas.size());
+    formulas_.assign(renamings_.size(), std::vector<FormulaState>(tree_.formulas.size()));
   }
 
   // --- Constants -----------------------------------------------------------------------------
@@ -233,18 +280,24 @@ class Checker {
 
   // --- Resolving names in expressions ------------------------------------------------------
 
+  // Names in `expr` are read as written; the formulas it uses are read under the renaming of
+  // the module being checked (current_renaming_).
   std::optional<Expression> lower(const ast::Expr& expr, Scope scope, Type wanted,
                                   const std::string& what) {
-    ExpressionLowering lowering(
-        diagnostics_, options_.max_number_bits,
-        [this, scope](const ast::Expr& name) { return resolve(name, scope); });
+    ExpressionLowering lowering(diagnostics_, options_.max_number_bits,
+                                [this, scope, renaming = current_renaming_](const ast::Expr& name) {
+                                  return resolve(name, scope, renaming, /*in_formula=*/false);
+                                });
     return lowering.lower_as(expr, wanted, what);
   }
 
-  std::optional<Expression> resolve(const ast::Expr& name, Scope scope) {
-    const auto it = symbols_.find(name.text);
+  // `in_formula`: the name is inside a formula's definition, where the renaming applies.
+  std::optional<Expression> resolve(const ast::Expr& name, Scope scope, std::size_t renaming,
+                                    bool in_formula) {
+    const std::string& text = in_formula ? renamed(name.text, renaming) : name.text;
+    const auto it = symbols_.find(text);
     if (it == symbols_.end()) {
-      diagnostics_.error(name.range, "unknown name " + quoted(name.text));
+      diagnostics_.error(name.range, "unknown name " + quoted(text));
       return std::nullopt;
     }
     const Symbol& symbol = it->second;
@@ -252,12 +305,12 @@ class Checker {
       case Symbol::Kind::Constant:
         return constant_value(symbol.index);
       case Symbol::Kind::Formula:
-        return formula_value(symbol.index, name, scope);
+        return formula_value(symbol.index, name, scope, renaming);
       case Symbol::Kind::Variable:
         break;
     }
     if (scope == Scope::Constants) {
-      diagnostics_.error(name.range, "variable " + quoted(name.text) +
+      diagnostics_.error(name.range, "variable " + quoted(text) +
                                          " cannot appear here: the value must be constant");
       return std::nullopt;
     }
@@ -287,8 +340,11 @@ class Checker {
     int level = 0;                    // 1 + the deepest level of the formulas it uses
   };
 
-  std::optional<Expression> formula_value(std::size_t i, const ast::Expr& use, Scope scope) {
-    FormulaState& state = formulas_[i];
+  // Formula i with `renaming` applied to the names in its definition (PRISM expands formulas
+  // before renaming modules), lowered once per renaming.
+  std::optional<Expression> formula_value(std::size_t i, const ast::Expr& use, Scope scope,
+                                          std::size_t renaming) {
+    FormulaState& state = formulas_[renaming][i];
     const ast::Formula& formula = tree_.formulas[i];
     if (state.failed) return std::nullopt;
     if (state.expanding) {
@@ -297,38 +353,48 @@ class Checker {
       return std::nullopt;
     }
     const int outer_level = used_formula_level_;
-    if (!state.value && !expand_formula(i)) return std::nullopt;
+    // A renamed module's base uses the formula as written: its problems (a cycle, a bad
+    // name) are reported there, once, and not again for the copy.
+    if (renaming != 0 && !formula_as_written(i)) return std::nullopt;
+    if (!state.value && !expand_formula(i, renaming)) return std::nullopt;
     // The expression being lowered now reaches as deep as this formula does.
-    used_formula_level_ = std::max(outer_level, formulas_[i].level);
-    if (scope == Scope::Constants && formulas_[i].value->depends_on_state()) {
+    used_formula_level_ = std::max(outer_level, state.level);
+    if (scope == Scope::Constants && state.value->depends_on_state()) {
       diagnostics_.error(use.range, "formula " + quoted(formula.name) +
                                         " depends on the state; the value here must be constant");
       return std::nullopt;
     }
-    return formulas_[i].value;
+    return state.value;
+  }
+
+  bool formula_as_written(std::size_t i) {
+    FormulaState& state = formulas_[0][i];
+    if (state.failed) return false;
+    return state.value || expand_formula(i, 0);
   }
 
   // Lowers formula i once. Formulas expand into one another, so the depth of a lowered
   // expression grows with how deeply they nest: that is bounded (kMaxFormulaNesting), and so
   // is the depth of every later pass over the expression (evaluation recurses).
-  bool expand_formula(std::size_t i) {
+  bool expand_formula(std::size_t i, std::size_t renaming) {
     const ast::Formula& formula = tree_.formulas[i];
+    FormulaState& state = formulas_[renaming][i];
     if (++expanding_formulas_ > kMaxFormulaNesting) {
       diagnostics_.error(formula.range, "formulas nested more than " +
                                             std::to_string(kMaxFormulaNesting) +
                                             " deep, counted from formula " + quoted(formula.name));
       --expanding_formulas_;
-      formulas_[i].failed = true;
+      state.failed = true;
       return false;
     }
-    formulas_[i].expanding = true;
+    state.expanding = true;
     used_formula_level_ = 0;
-    ExpressionLowering lowering(
-        diagnostics_, options_.max_number_bits,
-        [this](const ast::Expr& name) { return resolve(name, Scope::State); });
+    ExpressionLowering lowering(diagnostics_, options_.max_number_bits,
+                                [this, renaming](const ast::Expr& name) {
+                                  return resolve(name, Scope::State, renaming, /*in_formula=*/true);
+                                });
     auto value = lowering.lower(formula.value);
     --expanding_formulas_;
-    FormulaState& state = formulas_[i];
     state.expanding = false;
     state.level = used_formula_level_ + 1;
     if (value && state.level > kMaxFormulaNesting) {
@@ -351,9 +417,11 @@ class Checker {
     for (const ast::Variable& var : tree_.globals)
       add_variable(var, kGlobal);
     for (std::size_t m = 0; m < modules_.size(); ++m) {
+      current_renaming_ = module_renaming_[m];
       for (const ast::Variable& var : modules_[m].variables)
         add_variable(var, static_cast<std::int64_t>(m));
     }
+    current_renaming_ = 0;
   }
 
   void add_variable(const ast::Variable& var, std::int64_t owner) {
@@ -426,6 +494,7 @@ class Checker {
 
   void lower_modules() {
     for (std::size_t m = 0; m < modules_.size(); ++m) {
+      current_renaming_ = module_renaming_[m];
       Module module;
       module.name = modules_[m].name;
       module.alphabet.assign(program_.actions.size(), false);
@@ -438,6 +507,7 @@ class Checker {
       }
       program_.modules.push_back(std::move(module));
     }
+    current_renaming_ = 0;
   }
 
   std::optional<Command> lower_command(const ast::Command& command, std::int64_t module) {
@@ -449,7 +519,7 @@ class Checker {
     if (guard) result.guard = std::move(*guard);
     Rational constant_sum = 0;
     for (const ast::Update& update : command.updates) {
-      auto lowered = lower_update(update, module);
+      auto lowered = lower_update(update, module, command);
       if (!lowered) {
         ok = false;
         continue;
@@ -470,7 +540,8 @@ class Checker {
     return result;
   }
 
-  std::optional<Update> lower_update(const ast::Update& update, std::int64_t module) {
+  std::optional<Update> lower_update(const ast::Update& update, std::int64_t module,
+                                     const ast::Command& command) {
     Update result;
     result.range = update.range;
     bool ok = true;
@@ -488,7 +559,7 @@ class Checker {
     }
     std::vector<bool> assigned(program_.variables.size(), false);
     for (const ast::Assignment& assignment : update.assignments) {
-      auto lowered = lower_assignment(assignment, module, assigned);
+      auto lowered = lower_assignment(assignment, module, command, assigned);
       if (!lowered) {
         ok = false;
         continue;
@@ -500,7 +571,8 @@ class Checker {
   }
 
   std::optional<model::Update> lower_assignment(const ast::Assignment& assignment,
-                                                std::int64_t module, std::vector<bool>& assigned) {
+                                                std::int64_t module, const ast::Command& command,
+                                                std::vector<bool>& assigned) {
     const auto it = symbols_.find(assignment.variable);
     if (it == symbols_.end() || it->second.kind != Symbol::Kind::Variable) {
       diagnostics_.error(
@@ -514,6 +586,17 @@ class Checker {
                          "module " + quoted(modules_[module].name) + " cannot update " +
                              quoted(assignment.variable) + ", a variable of module " +
                              quoted(modules_[owner_[slot]].name));
+      return std::nullopt;
+    }
+    // PRISM refuses any labelled command that updates a global (ModulesFileSemanticCheck):
+    // otherwise two modules synchronising on the action could both write it, and which write
+    // wins would depend on the order of the modules.
+    if (owner_[slot] == kGlobal && !command.action.empty()) {
+      diagnostics_.error(assignment.variable_range,
+                         "global variable " + quoted(assignment.variable) +
+                             " cannot be updated by a command with action " +
+                             quoted(command.action) +
+                             ": PRISM allows updates of globals only in unlabelled commands");
       return std::nullopt;
     }
     if (assigned[slot]) {
@@ -651,11 +734,14 @@ class Checker {
   DiagnosticEngine& diagnostics_;
   const CheckOptions& options_;
   Program program_;
-  std::vector<ast::Module> modules_;  // renamed modules expanded
+  std::vector<ast::Module> modules_;          // renamed modules expanded
+  std::vector<std::size_t> module_renaming_;  // per module: its index into renamings_
+  std::vector<Renaming> renamings_;           // [0]: none; then one per renamed copy
+  std::size_t current_renaming_ = 0;          // of the module whose parts are being lowered
   std::unordered_map<std::string, Symbol> symbols_;
   std::vector<ConstantOverride> overrides_;
   std::vector<ConstantState> constants_;
-  std::vector<FormulaState> formulas_;
+  std::vector<std::vector<FormulaState>> formulas_;  // [renaming][formula]
   int used_formula_level_ = 0;       // the deepest formula level the current lowering uses
   int expanding_formulas_ = 0;       // formulas being lowered, one inside another
   int evaluating_constants_ = 0;     // constants being evaluated, one inside another

@@ -214,7 +214,7 @@ std::optional<Expression> ExpressionLowering::call(const ast::Expr& expr) {
   };
   static constexpr Function kFunctions[] = {
       {"min", Op::Min, 2, 64},  {"max", Op::Max, 2, 64},  {"floor", Op::Floor, 1, 1},
-      {"ceil", Op::Ceil, 1, 1}, {"pow", Op::Power, 2, 2}, {"mod", Op::Mod, 2, 2},
+      {"ceil", Op::Ceil, 1, 1}, {"pow", Op::Power, 2, 2}, {"mod", Op::ModPositive, 2, 2},
   };
   const auto* found = std::find_if(std::begin(kFunctions), std::end(kFunctions),
                                    [&](const Function& f) { return f.name == expr.text; });
@@ -242,12 +242,12 @@ std::optional<Expression> ExpressionLowering::call(const ast::Expr& expr) {
   }
   if (found->op == Op::Floor || found->op == Op::Ceil) type = Type::Int;
   if (found->op == Op::Power) type = operands[0].type;
-  if ((found->op == Op::Mod || found->op == Op::Power) && operands[1].type != Type::Int) {
+  if ((found->op == Op::ModPositive || found->op == Op::Power) && operands[1].type != Type::Int) {
     diagnostics_.error(operands[1].range, "the second argument of " + quoted(expr.text) +
                                               " must be an int (oasis computes exactly)");
     return std::nullopt;
   }
-  if (found->op == Op::Mod && operands[0].type != Type::Int) {
+  if (found->op == Op::ModPositive && operands[0].type != Type::Int) {
     diagnostics_.error(operands[0].range, "the arguments of 'mod' must be ints");
     return std::nullopt;
   }

@@ -9,8 +9,6 @@
 namespace oasis::prism {
 namespace {
 
-using Renaming = std::unordered_map<std::string, std::string>;
-
 void rename(std::string& name, const Renaming& renaming) {
   if (const auto it = renaming.find(name); it != renaming.end()) name = it->second;
 }
@@ -59,11 +57,23 @@ const ast::Module* find_base(const std::vector<ast::Module>& modules, const ast:
   return &*base;
 }
 
-std::optional<Renaming> renaming_of(const ast::Module& copy, DiagnosticEngine& diagnostics) {
+bool is_formula(const std::vector<ast::Formula>& formulas, const std::string& name) {
+  return std::any_of(formulas.begin(), formulas.end(),
+                     [&](const ast::Formula& f) { return f.name == name; });
+}
+
+std::optional<Renaming> renaming_of(const ast::Module& copy,
+                                    const std::vector<ast::Formula>& formulas,
+                                    DiagnosticEngine& diagnostics) {
   Renaming renaming;
   bool ok = true;
   for (const ast::Rename& rename : copy.renames) {
-    if (!renaming.try_emplace(rename.from, rename.to).second) {
+    if (is_formula(formulas, rename.from)) {
+      diagnostics.error(rename.range, "formula " + quoted(rename.from) +
+                                          " cannot be renamed: formulas are expanded before "
+                                          "renaming, so rename the names it uses");
+      ok = false;
+    } else if (!renaming.try_emplace(rename.from, rename.to).second) {
       diagnostics.error(rename.range, quoted(rename.from) + " is renamed twice");
       ok = false;
     }
@@ -74,16 +84,17 @@ std::optional<Renaming> renaming_of(const ast::Module& copy, DiagnosticEngine& d
 
 }  // namespace
 
-std::vector<ast::Module> expand_renamed_modules(const std::vector<ast::Module>& modules,
-                                                DiagnosticEngine& diagnostics) {
-  std::vector<ast::Module> result;
+std::vector<ExpandedModule> expand_renamed_modules(const std::vector<ast::Module>& modules,
+                                                   const std::vector<ast::Formula>& formulas,
+                                                   DiagnosticEngine& diagnostics) {
+  std::vector<ExpandedModule> result;
   for (const ast::Module& module : modules) {
     if (!module.base) {
-      result.push_back(module);
+      result.push_back({module, {}});
       continue;
     }
     const ast::Module* base = find_base(modules, module, diagnostics);
-    const auto renaming = renaming_of(module, diagnostics);
+    auto renaming = renaming_of(module, formulas, diagnostics);
     if (base == nullptr || !renaming) continue;
     ast::Module copy = *base;
     copy.name = module.name;
@@ -92,7 +103,7 @@ std::vector<ast::Module> expand_renamed_modules(const std::vector<ast::Module>& 
       rename(var, *renaming);
     for (ast::Command& command : copy.commands)
       rename(command, *renaming);
-    result.push_back(std::move(copy));
+    result.push_back({std::move(copy), std::move(*renaming)});
   }
   return result;
 }

@@ -33,6 +33,14 @@ bool is_keyword(std::string_view word) {
   return std::find(kKeywords.begin(), kKeywords.end(), word) != kKeywords.end();
 }
 
+// The keywords that name functions, which func(NAME, ...) may call.
+constexpr std::array<std::string_view, 6> kFunctions = {"min",  "max", "floor",
+                                                        "ceil", "pow", "mod"};
+
+bool is_function(std::string_view word) {
+  return std::find(kFunctions.begin(), kFunctions.end(), word) != kFunctions.end();
+}
+
 class Parser {
  public:
   Parser(const std::vector<Token>& tokens, DiagnosticEngine& diagnostics)
@@ -342,13 +350,8 @@ class Parser {
     return node(ast::Expr::Kind::IfThenElse, "?", std::move(operands));
   }
 
-  ast::Expr implication() {
-    ast::Expr left = equivalence();
-    if (!at(TokenKind::Implies)) return left;
-    advance();
-    ast::Expr right = implication();  // a => b => c is a => (b => c)
-    return node(ast::Expr::Kind::Binary, "=>", pair_of(std::move(left), std::move(right)));
-  }
+  // PRISM's grammar (ExpressionImplies) makes a => b => c mean (a => b) => c.
+  ast::Expr implication() { return left_associative(&Parser::equivalence, {TokenKind::Implies}); }
 
   template <typename Next>
   ast::Expr left_associative(Next next, std::initializer_list<TokenKind> operators) {
@@ -376,10 +379,14 @@ class Parser {
     return result;
   }
 
+  // PRISM binds < <= > >= tighter than = and != (ExpressionEquality over ExpressionRelop), so
+  // `true = 1 < 2` is `true = (1 < 2)`; both levels are left associative.
   ast::Expr relation() {
-    return left_associative(
-        &Parser::sum, {TokenKind::Equal, TokenKind::NotEqual, TokenKind::Less, TokenKind::LessEqual,
-                       TokenKind::Greater, TokenKind::GreaterEqual});
+    return left_associative(&Parser::comparison, {TokenKind::Equal, TokenKind::NotEqual});
+  }
+  ast::Expr comparison() {
+    return left_associative(&Parser::sum, {TokenKind::Less, TokenKind::LessEqual,
+                                           TokenKind::Greater, TokenKind::GreaterEqual});
   }
   ast::Expr sum() {
     return left_associative(&Parser::product, {TokenKind::Plus, TokenKind::Minus});
@@ -432,7 +439,7 @@ class Parser {
     std::string function(token.text);
     advance();                 // (
     if (function == "func") {  // func(min, a, b) is min(a, b)
-      function = std::string(identifier("the function's name").text);
+      function = std::string(function_name().text);
       expect(TokenKind::Comma, "after the function's name");
     }
     ast::Expr call = leaf(ast::Expr::Kind::Call, token);
@@ -448,6 +455,17 @@ class Parser {
       call.depth = std::max(call.depth, operand.depth + 1);
     check_depth(call);
     return call;
+  }
+
+  // The name in func(NAME, ...): a function's name is a keyword (min, max, floor, ...), which
+  // identifier() refuses; any other identifier is left to the checker to report as unknown.
+  const Token& function_name() {
+    const Token& token = peek();
+    if (token.kind != TokenKind::Identifier)
+      fail(token, "expected the function's name, found " + describe(token));
+    if (is_keyword(token.text) && !is_function(token.text))
+      fail(token, "the keyword " + quoted(token.text) + " is not a function");
+    return advance();
   }
 
   void nest() {

@@ -258,6 +258,14 @@ INSTANTIATE_TEST_SUITE_P(
                   "x.lab:2:4: error: label 3 is not declared in the first line"},
         ErrorCase{kTra, "", "0=\"init\"\n5: 0\n", "", "",
                   "x.lab:2:1: error: state 5 is out of range"},
+        // A label is declared once: two "init"s would each give initial states, and a
+        // repeated name could not be told apart by --respect-labels.
+        ErrorCase{kTra, "", "0=\"init\" 1=\"init\"\n0: 0 1\n", "", "",
+                  "x.lab:1:13: error: label 'init' is declared twice (as label 0 and label 1)"},
+        ErrorCase{kTra, "", "0=\"init\" 1=\"a\" 2=\"a\"\n0: 0\n", "", "",
+                  "x.lab:1:19: error: label 'a' is declared twice (as label 1 and label 2)"},
+        ErrorCase{kTra, "", "0=\"init\" 1=\"\"\n0: 0\n", "", "",
+                  "x.lab:1:13: error: empty label name"},
         ErrorCase{kTra, "", "", "3 1\n0 1\n", "",
                   "x.srew:1:1: error: the header declares 3 states but the transitions file has 2"},
         ErrorCase{kTra, "", "", "2 2\n0 1\n", "",
@@ -270,6 +278,15 @@ INSTANTIATE_TEST_SUITE_P(
                   "x.trew:2:1: error: state 1 has no choice 3 in the transitions file"},
         ErrorCase{kTra, "", "", "", "2 2 2\n0 0 1 1\n0 0 0 2\n",
                   "x.trew:3:1: error: rows of state 0, choice 0 give different rewards"}));
+
+// A NUL cannot be part of a label name (it would cut the name short in every message and
+// file that shows it): a located error at the NUL.
+TEST_F(PrismTest, ALabelNameWithANulIsRefused) {
+  using namespace std::string_literals;
+  const std::string lab = "0=\"init\" 1=\"a\0b\"\n0: 0\n"s;
+  EXPECT_FALSE(read(kTra, "", lab));
+  EXPECT_TRUE(reported("x.lab:1:14: error: a label name cannot hold a NUL character")) << output();
+}
 
 // --- round trips -----------------------------------------------------------------------
 

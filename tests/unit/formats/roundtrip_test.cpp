@@ -11,11 +11,13 @@
 
 #include "../../support/scratch_directory.hpp"
 #include "../../support/spec_models.hpp"
+#include "bisim/refinement.hpp"
 #include "formats/aut_writer.hpp"
 #include "formats/model_file.hpp"
 #include "formats/prism_writer.hpp"
 #include "frontend/load_spec.hpp"
 #include "model/explorer.hpp"
+#include "prism/load_program.hpp"
 
 namespace oasis {
 namespace {
@@ -122,6 +124,68 @@ TEST_F(RoundTrip, FactoredSpecWithDisabledActionsAndActionRewards) {
   ASSERT_EQ(model.contexts.size(), 2U);
   ASSERT_GT(model.num_states(), 10U);
   check_all_contexts(model);
+}
+
+// A PRISM program whose state (x=2) has no enabled command: the explorer gives it a self-loop
+// and the label "deadlock", as PRISM does. Respecting all labels, (x=2) is a block of its own.
+const char* kProgramWithADeadlock = R"(
+mdp
+module m
+  x : [0..3] init 0;
+  [] x = 0 -> 1/2 : (x'=2) + 1/2 : (x'=3);
+  [] x = 3 -> (x'=3);
+  [] x = 1 -> true;
+endmodule
+label "far" = x >= 2;
+)";
+
+ExplicitModel load_program(const char* text) {
+  SourceManager sources;
+  std::ostringstream messages;
+  DiagnosticEngine diagnostics(sources, messages);
+  auto model =
+      prism::load_program_text(sources.add("deadlock.pm", text), "deadlock", diagnostics, {});
+  EXPECT_TRUE(model) << messages.str();
+  return std::move(*model);
+}
+
+model::Partition quotient_respecting_all_labels(const ExplicitModel& model) {
+  bisim::RefinementOptions options;
+  options.label_class = model::label_classes(model.labels, model.num_states(), {});
+  return bisim::coarsest_bisimulation(model, 0, options);
+}
+
+// `export --format prism` used to drop the model's "deadlock" label (it wrote the states with
+// no enabled choice, and the explorer's deadlocked states have a self-loop): the program had 3
+// blocks and its export 2. The export now carries the model's labels, all of them.
+TEST_F(RoundTrip, AProgramsExportHasItsLabelsAndItsQuotient) {
+  const ExplicitModel program = load_program(kProgramWithADeadlock);
+  const std::string base = (directory_ / "deadlock").string();
+  std::string error;
+  ASSERT_TRUE(formats::write_prism(program, 0, base, error)) << error;
+  const ExplicitModel exported = read_back(base + ".tra");
+  expect_same_context(program, 0, exported);
+
+  const auto names = [](const ExplicitModel& m) {
+    std::vector<std::string> sorted = m.labels.names;
+    std::sort(sorted.begin(), sorted.end());
+    return sorted;
+  };
+  ASSERT_EQ(names(program), names(exported));
+  for (const std::string& name : program.labels.names) {
+    const std::uint32_t a = *program.labels.find(name);
+    const std::uint32_t b = *exported.labels.find(name);
+    for (model::StateIndex s = 0; s < program.num_states(); ++s) {
+      const auto in_a = program.labels.of(s);
+      const auto in_b = exported.labels.of(s);
+      EXPECT_EQ(std::find(in_a.begin(), in_a.end(), a) != in_a.end(),
+                std::find(in_b.begin(), in_b.end(), b) != in_b.end())
+          << "label " << name << ", state " << program.states.name(s);
+    }
+  }
+  const model::Partition original = quotient_respecting_all_labels(program);
+  EXPECT_EQ(original.num_blocks, 3U);
+  EXPECT_EQ(quotient_respecting_all_labels(exported).block_of, original.block_of);
 }
 
 }  // namespace

@@ -179,6 +179,7 @@ endmodule
   EXPECT_EQ(m.contexts[0].transitions->num_enabled_choices(), 4U + 2 + 2 + 1);
 }
 
+// The copy reads the formula's expansion renamed: next is mod(y + 1, N + 1) in module two.
 TEST(PrismProgram, RenamedModulesConstantsAndFormulas) {
   const Loaded loaded = load(R"(
 mdp
@@ -189,9 +190,8 @@ module one
   x : [0..N] init 0;
   [tick] true -> q : (x'=next) + 1 - q : true;
 endmodule
-module two = one [x=y, next=back, q=r] endmodule
+module two = one [x=y, q=r] endmodule
 const double r = 1/2;
-formula back = y > 0 ? y - 1 : N;
 )",
                              "N=2");
   ASSERT_TRUE(loaded.model) << loaded.messages;
@@ -199,9 +199,122 @@ formula back = y > 0 ? y - 1 : N;
   EXPECT_EQ(m.num_states(), 9U);
   EXPECT_EQ(distribution(m, "(x=0,y=0)", "tick"),
             (std::map<std::string, Rational>{{"(x=0,y=0)", Rational(3, 8)},
-                                             {"(x=0,y=2)", Rational(3, 8)},
+                                             {"(x=0,y=1)", Rational(3, 8)},
                                              {"(x=1,y=0)", Rational(1, 8)},
-                                             {"(x=1,y=2)", Rational(1, 8)}}));
+                                             {"(x=1,y=1)", Rational(1, 8)}}));
+}
+
+// Everything two explicit models are made of: states (names, initial), actions,
+// transitions and labels.
+void expect_same_model(const model::ExplicitModel& a, const model::ExplicitModel& b) {
+  ASSERT_EQ(a.num_states(), b.num_states());
+  for (model::StateIndex s = 0; s < a.num_states(); ++s)
+    EXPECT_EQ(a.states.name(s), b.states.name(s));
+  EXPECT_EQ(a.states.initial, b.states.initial);
+  EXPECT_EQ(a.actions, b.actions);
+  const model::TransitionMatrix& x = *a.contexts.at(0).transitions;
+  const model::TransitionMatrix& y = *b.contexts.at(0).transitions;
+  EXPECT_EQ(x.num_enabled_choices(), y.num_enabled_choices());
+  ASSERT_EQ(x.num_edges(), y.num_edges());
+  for (model::StateIndex s = 0; s < a.num_states(); ++s) {
+    for (model::ActionIndex act = 0; act < a.num_actions(); ++act) {
+      ASSERT_EQ(x.enabled(s, act), y.enabled(s, act));
+      if (!x.enabled(s, act)) continue;
+      ASSERT_EQ(x.edges_end(s, act) - x.edges_begin(s, act),
+                y.edges_end(s, act) - y.edges_begin(s, act));
+      for (auto e = x.edges_begin(s, act), f = y.edges_begin(s, act); e < x.edges_end(s, act);
+           ++e, ++f) {
+        EXPECT_EQ(x.edge_target[e], y.edge_target[f]);
+        EXPECT_EQ(a.values[x.edge_probability[e]], b.values[y.edge_probability[f]]);
+      }
+    }
+  }
+  EXPECT_EQ(a.labels.names, b.labels.names);
+  EXPECT_EQ(a.labels.begin, b.labels.begin);
+  EXPECT_EQ(a.labels.label, b.labels.label);
+}
+
+// PRISM expands formulas before renaming modules, so a renamed copy reads its formulas over
+// the renamed variables: the same model as with every formula written out (issue 37). The
+// copy used to read f over x, the original's variable: another model (equality), or an
+// update out of range (the comparison, f true while y is already 2).
+TEST(PrismProgram, FormulasInARenamedModuleReadTheRenamedVariables) {
+  const Loaded equality = load(R"(
+mdp
+formula f = x = 0;
+module m1
+  x : [0..2] init 0;
+  [] f -> 1/2 : (x'=1) + 1/2 : (x'=2);
+  [] !f -> (x'=0);
+endmodule
+module m2 = m1 [x=y] endmodule
+)");
+  const Loaded equality_written_out = load(R"(
+mdp
+module m1
+  x : [0..2] init 0;
+  [] x = 0 -> 1/2 : (x'=1) + 1/2 : (x'=2);
+  [] !(x = 0) -> (x'=0);
+endmodule
+module m2
+  y : [0..2] init 0;
+  [] y = 0 -> 1/2 : (y'=1) + 1/2 : (y'=2);
+  [] !(y = 0) -> (y'=0);
+endmodule
+)");
+  ASSERT_TRUE(equality.model) << equality.messages;
+  ASSERT_TRUE(equality_written_out.model) << equality_written_out.messages;
+  expect_same_model(*equality.model, *equality_written_out.model);
+
+  // Nested formulas too: g uses f, and both read y in the copy.
+  const Loaded comparison = load(R"(
+dtmc
+formula f = x < 2;
+formula g = f | false;
+module m1
+  x : [0..2] init 0;
+  [] g -> (x'=x+1);
+  [] !g -> true;
+endmodule
+module m2 = m1 [x=y] endmodule
+label "both" = !g & y = 2;
+)");
+  const Loaded comparison_written_out = load(R"(
+dtmc
+module m1
+  x : [0..2] init 0;
+  [] (x < 2) | false -> (x'=x+1);
+  [] !((x < 2) | false) -> true;
+endmodule
+module m2
+  y : [0..2] init 0;
+  [] (y < 2) | false -> (y'=y+1);
+  [] !((y < 2) | false) -> true;
+endmodule
+label "both" = !((x < 2) | false) & y = 2;
+)");
+  ASSERT_TRUE(comparison.model) << comparison.messages;
+  ASSERT_TRUE(comparison_written_out.model) << comparison_written_out.messages;
+  EXPECT_EQ(comparison.model->num_states(), 9U);
+  expect_same_model(*comparison.model, *comparison_written_out.model);
+}
+
+// PRISM: "Formula f cannot be renamed since formulas are expanded before module renaming".
+TEST(PrismProgram, AFormulaCannotBeRenamed) {
+  const Loaded loaded = load(R"(
+mdp
+formula f = x = 0;
+module m1
+  x : [0..1] init 0;
+  [] f -> (x'=1);
+endmodule
+module m2 = m1 [x=y, f=g] endmodule
+)");
+  EXPECT_FALSE(loaded.model);
+  EXPECT_NE(loaded.messages.find("test.pm:8:22: error: formula 'f' cannot be renamed: formulas "
+                                 "are expanded before renaming"),
+            std::string::npos)
+      << loaded.messages;
 }
 
 TEST(PrismProgram, BooleansInitBlocksAndFunctions) {
@@ -309,6 +422,114 @@ endmodule
   ASSERT_FALSE(loaded.model);
   EXPECT_NE(loaded.messages.find("in state (x=0) the probabilities sum to 1/2"), std::string::npos)
       << loaded.messages;
+}
+
+// PRISM's grammar: < <= > >= bind tighter than = and !=, and => groups to the left.
+TEST(PrismProgram, OperatorsBindAsInPrismsGrammar) {
+  const Loaded loaded = load(R"(
+dtmc
+module m
+  x : [0..1] init 0;
+  [] true = 1 < 2 -> (x'=1);
+endmodule
+label "left" = false => false => false;
+label "compared" = 1 < 2 = 2 < 3;
+)");
+  ASSERT_TRUE(loaded.model) << loaded.messages;
+  const model::ExplicitModel& m = *loaded.model;
+  EXPECT_EQ(distribution(m, "(x=0)", "[0]"), (std::map<std::string, Rational>{{"(x=1)", 1}}));
+  // (false => false) => false is false; false => (false => false) would be true.
+  EXPECT_EQ(labels_of(m, "(x=1)"), std::vector<std::string>{"compared"});
+  EXPECT_NE(load("dtmc\nmodule m x : [0..1]; [] x = 1 < 2 -> true; endmodule\n")
+                .messages.find("'=' compares a int with a bool"),
+            std::string::npos);
+}
+
+// func(NAME, args) calls each function docs/formats.md lists, as PRISM's old syntax does.
+TEST(PrismProgram, FuncCallsEveryListedFunction) {
+  const Loaded loaded = load(R"(
+dtmc
+module m
+  a : [0..9] init func(min, 3, 2);
+  b : [0..9] init func(max, 3, 2, 4);
+  c : [0..9] init func(floor, 5/2);
+  d : [0..9] init func(ceil, 5/2);
+  e : [0..9] init func(pow, 2, 3);
+  f : [0..9] init func(mod, 7, 3);
+  [] true -> true;
+endmodule
+)");
+  ASSERT_TRUE(loaded.model) << loaded.messages;
+  EXPECT_EQ(loaded.model->states.name(loaded.model->states.initial.at(0)),
+            "(a=2,b=4,c=2,d=3,e=8,f=1)");
+  EXPECT_NE(load("dtmc\nmodule m x : [0..1] init func(sqrt, 1); [] true -> true; endmodule\n")
+                .messages.find("unknown function 'sqrt'"),
+            std::string::npos);
+}
+
+// PRISM's mod refuses a divisor that is not positive: in a constant, when the program is
+// checked; in an expression over the state, in the state where it happens.
+TEST(PrismProgram, ModNeedsAPositiveDivisor) {
+  const Loaded constant = load(
+      "dtmc\nmodule m x : [0..3] init mod(7, -3); [] true -> true; "
+      "endmodule\n");
+  EXPECT_FALSE(constant.model);
+  EXPECT_NE(constant.messages.find("test.pm:2:26: error: mod(7, -3): the divisor must be positive"),
+            std::string::npos)
+      << constant.messages;
+  const Loaded state = load(R"(
+dtmc
+module m
+  x : [0..3] init 0;
+  [] true -> (x'=mod(7, x - 1));
+endmodule
+)");
+  EXPECT_FALSE(state.model);
+  EXPECT_NE(state.messages.find("mod(7, -1): the divisor must be positive"), std::string::npos)
+      << state.messages;
+  EXPECT_NE(state.messages.find("(x=0)"), std::string::npos) << state.messages;
+}
+
+// PRISM: "There must be at least one module", "There must be at least one variable".
+TEST(PrismProgram, AProgramNeedsAModuleAndAVariable) {
+  for (const char* text : {"", "// nothing but a comment\n", "mdp\n", "dtmc\nconst int N = 2;\n"}) {
+    const Loaded loaded = load(text);
+    EXPECT_FALSE(loaded.model) << text;
+    EXPECT_NE(loaded.messages.find("error: the program declares no module"), std::string::npos)
+        << loaded.messages;
+  }
+  EXPECT_NE(load("").messages.find("test.pm:1:1: error:"), std::string::npos);
+  const Loaded no_variable = load("mdp\nmodule m [] true -> true; endmodule\n");
+  EXPECT_FALSE(no_variable.model);
+  EXPECT_NE(no_variable.messages.find("test.pm:1:1: error: the program declares no variable"),
+            std::string::npos)
+      << no_variable.messages;
+}
+
+// A labelled command synchronises; PRISM lets none of them update a global, so two modules
+// cannot both write it in one step with the module order choosing the winner.
+TEST(PrismProgram, SynchronisedCommandsCannotUpdateAGlobal) {
+  const Loaded loaded = load(R"(
+mdp
+global g : [0..2] init 0;
+module a
+  x : [0..1] init 0;
+  [s] x = 0 -> (x'=1) & (g'=1);
+endmodule
+module b
+  y : [0..1] init 0;
+  [s] y = 0 -> (y'=1) & (g'=2);
+  [] y = 1 -> (g'=0);
+endmodule
+)");
+  EXPECT_FALSE(loaded.model);
+  EXPECT_NE(loaded.messages.find("test.pm:6:26: error: global variable 'g' cannot be updated by "
+                                 "a command with action 's'"),
+            std::string::npos)
+      << loaded.messages;
+  EXPECT_NE(loaded.messages.find("test.pm:10:26: error: global variable 'g'"), std::string::npos)
+      << loaded.messages;
+  EXPECT_EQ(loaded.messages.find("test.pm:11:"), std::string::npos) << loaded.messages;
 }
 
 }  // namespace
