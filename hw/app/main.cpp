@@ -11,6 +11,7 @@
 #include "app/commands.hpp"
 #include "cli/empty_values.hpp"
 #include "cli/memory_option.hpp"
+#include "perception/out_of_memory.hpp"
 #include "settings/settings_error.hpp"
 
 int main(int argc, char** argv) {
@@ -53,11 +54,13 @@ int main(int argc, char** argv) {
   try {
     for (const CLI::App* command : app.get_subcommands())
       return runners.at(command)();
-  } catch (const std::bad_alloc&) {
-    // The robot was stopped on the way out (the loop's watchdog and the link's destructor).
-    oasis::cli::report_out_of_memory("oasis-go1", *budget);
   } catch (const std::exception& e) {
-    std::cerr << "oasis-go1: error: " << e.what() << '\n';
+    // The robot was stopped on the way out (the loop's watchdog and the link's destructor).
+    // OpenCV says it ran out of memory in its own words (perception/out_of_memory.hpp).
+    if (oasis::hw::is_out_of_memory(e))
+      oasis::cli::report_out_of_memory("oasis-go1", *budget);
+    else
+      std::cerr << "oasis-go1: error: " << e.what() << '\n';
   }
   return 1;
 }

@@ -204,8 +204,8 @@ CommandRunner add_run_command(CLI::App& app) {
                     "clock, run each step as soon as the last is done");
   command->footer(
       "Without --dry-run the robot must answer within --robot-timeout-ms, or nothing starts. "
-      "The robot stops within 200 ms when the loop stalls, and on Ctrl-C or SIGTERM it is told "
-      "to stop, then to stand.");
+      "The robot stops within 200 ms when the loop stalls, and on Ctrl-C, SIGTERM or SIGHUP it "
+      "is told to stop, then to stand.");
   return [request] {
     if (request->fast && !request->dry_run)
       throw std::invalid_argument("--fast needs --dry-run: a robot moves in real time");

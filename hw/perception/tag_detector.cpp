@@ -1,16 +1,53 @@
 #include "perception/tag_detector.hpp"
 
+#include <cerrno>
 #include <cstdint>
+#include <cstdlib>
+#include <new>
 
 #include <apriltag/apriltag.h>
 #include <apriltag/tag36h11.h>
 #include <opencv2/imgproc.hpp>
 
 namespace oasis::hw {
+namespace {
+
+// The bytes of libapriltag's decode table for `family` (its quick_decode_init, 3.x): three
+// slots of 16 bytes for each code and each pattern of up to `max_hamming` flipped bits.
+std::size_t decode_table_bytes(const apriltag_family_t& family, int max_hamming) {
+  const std::size_t codes = family.ncodes;
+  const std::size_t bits = family.nbits;
+  std::size_t patterns = 1;
+  if (max_hamming >= 1) patterns += bits;
+  if (max_hamming >= 2) patterns += bits * (bits - 1);
+  if (max_hamming >= 3) patterns += bits * (bits - 1) * (bits - 2);
+  return codes * patterns * 3 * 16;
+}
+
+// libapriltag prints "Failed to allocate hamming decode table" when its table does not fit in
+// memory (a tight --memory-budget), goes on without it, and the first detection then reads
+// through a null pointer. Tried first here, so that the program reports running out of memory
+// (std::bad_alloc) instead; errno is the library's own signal, in case memory ran out between.
+void add_family(apriltag_detector_t* detector, apriltag_family_t* family, int max_hamming) {
+  void* room = std::malloc(decode_table_bytes(*family, max_hamming));
+  if (room == nullptr) throw std::bad_alloc();
+  std::free(room);
+  errno = 0;
+  apriltag_detector_add_family_bits(detector, family, max_hamming);
+  if (errno == ENOMEM) throw std::bad_alloc();
+}
+
+}  // namespace
 
 TagDetector::TagDetector(TagDetectorConfig config)
     : config_(config), family_(tag36h11_create()), detector_(apriltag_detector_create()) {
-  apriltag_detector_add_family_bits(detector_, family_, config_.max_hamming);
+  try {
+    add_family(detector_, family_, config_.max_hamming);
+  } catch (...) {
+    apriltag_detector_destroy(detector_);
+    tag36h11_destroy(family_);
+    throw;
+  }
   detector_->nthreads = 1;
 }
 

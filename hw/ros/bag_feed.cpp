@@ -1,7 +1,9 @@
 #include "ros/bag_feed.hpp"
 
+#include <cerrno>
 #include <deque>
 #include <map>
+#include <optional>
 #include <set>
 #include <stdexcept>
 
@@ -16,8 +18,11 @@
 #include <sensor_msgs/Image.h>
 #include <std_msgs/Float64.h>
 #include <std_msgs/Int8.h>
+#include <sys/stat.h>
 
+#include "files/input_file.hpp"
 #include "ros/message_conversion.hpp"
+#include "text/printable_text.hpp"
 
 namespace oasis::hw::ros_node {
 namespace {
@@ -33,6 +38,19 @@ struct CameraParts {
   sensor_msgs::CameraInfoConstPtr info;
   bool complete() const { return colour && depth && info; }
 };
+
+// Why `path` cannot be a bag, or "". The rule of every program's inputs
+// (common/files/input_file.hpp: a directory, a device or a socket is refused with what it is),
+// and a FIFO too: rosbag reads a bag by seeking in it (the index is at the end), and a FIFO
+// nobody writes to blocked its open() forever.
+std::string bag_file_problem(const std::string& path) {
+  struct stat info {};
+  if (::stat(path.c_str(), &info) != 0) return files::reason_of_errno(errno);
+  if (const std::optional<std::string> refused = files::refused_kind(info)) return *refused;
+  if (S_ISFIFO(info.st_mode))
+    return "is a pipe; a rosbag is read by seeking in it, so it must be a regular file";
+  return "";
+}
 
 }  // namespace
 
@@ -51,6 +69,7 @@ struct BagFeed::State {
   std::optional<double> reward;
   std::optional<int> holder;
   std::uint64_t refused = 0;
+  std::string last_refusal;
   std::uint64_t given = 0;
   bool done = false;
 
@@ -134,6 +153,8 @@ BagFeed::BagFeed(const std::string& path, TopicInputOptions options)
   s.options = std::move(options);
   s.camera = s.options.mode == InputMode::kCamera;
   if (!ros::Time::isValid()) ros::Time::init();
+  if (const std::string problem = bag_file_problem(path); !problem.empty())
+    throw RosError("--bag " + text::printable_excerpt(path, 1000) + ": " + problem);
   try {
     s.bag.open(path, rosbag::bagmode::Read);
   } catch (const rosbag::BagException& e) {
@@ -168,8 +189,9 @@ std::optional<ObservedInput> BagFeed::next(std::chrono::milliseconds) {
     std::optional<ObservedInput> input;
     try {
       input = s.read(message);
-    } catch (const std::invalid_argument&) {
-      ++s.refused;
+    } catch (const std::invalid_argument& e) {
+      ++s.refused;  // a malformed message: the replay goes on without it, as the node does
+      s.last_refusal = e.what();
     }
     ++s.at;
     if (!input) continue;
@@ -191,6 +213,10 @@ std::string BagFeed::describe() const {
 
 std::uint64_t BagFeed::refused() const {
   return state_->refused;
+}
+
+std::string BagFeed::last_refusal() const {
+  return state_->last_refusal;
 }
 
 }  // namespace oasis::hw::ros_node

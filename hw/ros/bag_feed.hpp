@@ -22,7 +22,8 @@ class BagFeed final : public InputFeed {
   bool ended() const override;
   std::string describe() const override;
 
-  std::uint64_t refused() const;  // messages that could not be read
+  std::uint64_t refused() const;     // messages that could not be read
+  std::string last_refusal() const;  // why the last of them could not
 
   struct State;  // bag_feed.cpp
 

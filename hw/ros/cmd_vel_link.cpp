@@ -8,6 +8,7 @@
 #include <geometry_msgs/Twist.h>
 #include <ros/ros.h>
 
+#include "ros/command_gate.hpp"
 #include "ros/message_conversion.hpp"
 #include "ros/ros_session_handles.hpp"
 
@@ -34,7 +35,7 @@ struct CmdVelLink::State {
   std::thread repeater;
 
   void publish(const go1::VelocityCommand& velocity) {
-    publisher.publish(twist_from_velocity(velocity));
+    publish_command(publisher, twist_from_velocity(velocity));
   }
 
   // Every keepalive: the current decision while it is fresh, a zero Twist once it is not.

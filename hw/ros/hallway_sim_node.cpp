@@ -26,6 +26,7 @@
 #include "go1/planar_pose.hpp"
 #include "go1/stop_signal.hpp"
 #include "perception/treat_holder.hpp"
+#include "process/ending_signals.hpp"
 #include "ros/hallway_sim_topics.hpp"
 #include "ros/ros_session.hpp"
 #include "settings/settings.hpp"
@@ -97,7 +98,7 @@ std::string to_string(RunEnd end) {
     case RunEnd::kStepLimit:
       return "--steps reached";
     case RunEnd::kSignal:
-      return go1::received_stop_signal() == SIGTERM ? "SIGTERM" : "SIGINT";
+      return process::ending_signal_name(go1::received_stop_signal());
     case RunEnd::kRosShutdown:
       return "ROS shut the node down";
   }
@@ -323,11 +324,12 @@ void add_options(CLI::App& app, SimNodeRequest& request) {
                  "subscribers, for up to 30 s (then start anyway); 0: start at once")
       ->capture_default_str()
       ->check(oasis::cli::whole_in(0, 1000));
-  app.add_option("--bag", request.bag,
-                 "also write every message published to this rosbag, under the topic names "
-                 "published (relative, without a leading slash); it is written to FILE.tmp and "
-                 "renamed to FILE when the run ends, on SIGINT or SIGTERM too; after an error "
-                 "it stays FILE.tmp");
+  app.add_option(
+      "--bag", request.bag,
+      "also write every message published to this rosbag, under the topic names "
+      "published (relative, without a leading slash); it is written to FILE.tmp and "
+      "renamed to FILE when the run ends, on SIGINT, SIGTERM or SIGHUP too; after an error "
+      "it stays FILE.tmp");
   app.add_option("--master-timeout-ms", request.master_timeout_ms,
                  "how long to wait for the ROS master before giving up")
       ->capture_default_str()
@@ -347,8 +349,8 @@ int main(int argc, char** argv) {
       "period, and the frame goes out, with one stamp, on odom (nav_msgs/Odometry), "
       "ground_truth (diagnostic_msgs/DiagnosticArray: the true context and reward), "
       "camera/color/camera_info, camera/aligned_depth_to_color/image_raw (16UC1, mm) and "
-      "camera/color/image_raw (bgr8). It stops after the trial, after --steps, or on SIGINT or "
-      "SIGTERM, with status 0.",
+      "camera/color/image_raw (bgr8). It stops after the trial, after --steps, or on SIGINT, "
+      "SIGTERM or SIGHUP, with status 0.",
       kProgram};
   SimNodeRequest request;
   add_options(app, request);

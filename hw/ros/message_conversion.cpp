@@ -1,12 +1,18 @@
 #include "ros/message_conversion.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
+#include <new>
 #include <stdexcept>
 
 #include <cv_bridge/cv_bridge.h>
+#include <opencv2/core.hpp>
 #include <opencv2/imgproc.hpp>
 #include <sensor_msgs/image_encodings.h>
+
+#include "perception/out_of_memory.hpp"
+#include "text/printable_text.hpp"
 
 namespace oasis::hw::ros_node {
 namespace {
@@ -15,53 +21,133 @@ namespace encodings = sensor_msgs::image_encodings;
 
 constexpr const char* kTruthStatusName = "oasis ground truth";
 
+// No camera gives a side longer than this. The bound keeps every product of two sides and a
+// pixel's size far inside 64 bits, and every side inside OpenCV's int.
+constexpr std::uint64_t kMaxImageSide = std::uint64_t{1} << 16;
+
+// The bytes of one pixel and of one of its channels, for the encodings we take.
+struct PixelLayout {
+  std::uint64_t pixel_bytes;
+  std::uint64_t channel_bytes;
+};
+
+std::string size_text(const sensor_msgs::Image& image) {
+  return std::to_string(image.width) + "x" + std::to_string(image.height) + ", step " +
+         std::to_string(image.step) + ", " + std::to_string(image.data.size()) + " bytes";
+}
+
+// Throws std::invalid_argument unless the declared sizes describe exactly the bytes the
+// message carries. Every product is taken in 64 bits: cv_bridge checks height * step ==
+// data.size() in 32 bits, where 21846 * 196608 = 2^32 + 131072 passes for 131072 bytes and
+// the conversion then reads 4 GiB.
+void check_layout(const sensor_msgs::Image& image, const std::string& what, PixelLayout layout) {
+  const std::uint64_t width = image.width;
+  const std::uint64_t height = image.height;
+  const std::uint64_t step = image.step;
+  const auto refuse = [&](const std::string& why) {
+    throw std::invalid_argument(what + " (" + size_text(image) + "): " + why);
+  };
+  if (width == 0 || height == 0) refuse("the image is empty");
+  if (width > kMaxImageSide || height > kMaxImageSide)
+    refuse("a side is longer than " + std::to_string(kMaxImageSide) + " pixels");
+  if (step < width * layout.pixel_bytes)
+    refuse("the step is shorter than a row of " + std::to_string(width) + " pixels of " +
+           std::to_string(layout.pixel_bytes) + " bytes");
+  if (step % layout.channel_bytes != 0)
+    refuse("the step is not a multiple of a channel's " + std::to_string(layout.channel_bytes) +
+           " bytes");
+  if (height * step != image.data.size())
+    refuse("height * step is " + std::to_string(height * step) + " bytes, not the " +
+           std::to_string(image.data.size()) + " the message carries");
+}
+
+// A conversion's own failure as a refusal of the frame; running out of memory stays what it
+// is (std::bad_alloc), so that the program reports it as such.
+template <class Convert>
+cv::Mat converted(const std::string& what, Convert convert) {
+  try {
+    return convert();
+  } catch (const cv_bridge::Exception& e) {
+    throw std::invalid_argument(what + ": " + e.what());
+  } catch (const cv::Exception& e) {
+    if (is_out_of_memory(e)) throw std::bad_alloc();
+    throw std::invalid_argument(what + ": OpenCV refused it (" + e.err + ")");
+  }
+}
+
 cv::Mat colour_as_bgr(const sensor_msgs::Image& colour) {
   const std::string& encoding = colour.encoding;
-  if (encoding != encodings::BGR8 && encoding != encodings::RGB8 && encoding != encodings::BGRA8 &&
-      encoding != encodings::RGBA8)
-    throw std::invalid_argument("colour image: encoding \"" + encoding +
+  const std::string what = "colour image";
+  if (encoding == encodings::BGR8 || encoding == encodings::RGB8)
+    check_layout(colour, what, {3, 1});
+  else if (encoding == encodings::BGRA8 || encoding == encodings::RGBA8)
+    check_layout(colour, what, {4, 1});
+  else
+    throw std::invalid_argument("colour image: encoding \"" + text::printable_excerpt(encoding) +
                                 "\" is not one of bgr8, rgb8, bgra8, rgba8");
-  try {
-    return cv_bridge::toCvCopy(colour, encodings::BGR8)->image;
-  } catch (const cv_bridge::Exception& e) {
-    throw std::invalid_argument(std::string("colour image: ") + e.what());
+  return converted(what, [&] { return cv_bridge::toCvCopy(colour, encodings::BGR8)->image; });
+}
+
+// Metres (32FC1) as millimetres (16UC1).
+cv::Mat millimetres_of(const cv::Mat& metres) {
+  cv::Mat millimetres(metres.size(), CV_16UC1);
+  for (int row = 0; row < metres.rows; ++row) {
+    const float* in = metres.ptr<float>(row);
+    std::uint16_t* out = millimetres.ptr<std::uint16_t>(row);
+    for (int col = 0; col < metres.cols; ++col) {
+      const double mm = static_cast<double>(in[col]) * 1000.0;
+      // NaN, infinite, negative or beyond 65.5 m: no depth, as the RealSense writes 0.
+      out[col] = std::isfinite(mm) && mm > 0.0 && mm < 65535.0
+                     ? static_cast<std::uint16_t>(std::lround(mm))
+                     : 0;
+    }
   }
+  return millimetres;
+}
+
+// The depth image's pixels as `type` (CV_16UC1 or CV_32FC1, its layout already checked), in
+// this machine's byte order. Read here, not by cv_bridge: its byte swap of a big-endian image
+// returns the pixels as CV_8UC2 (or CV_8UC4), not as the declared type.
+cv::Mat depth_pixels(const sensor_msgs::Image& depth, int type) {
+  const cv::Mat view(static_cast<int>(depth.height), static_cast<int>(depth.width), type,
+                     const_cast<std::uint8_t*>(depth.data.data()), depth.step);
+  cv::Mat pixels = view.clone();
+  const bool native_big_endian = __BYTE_ORDER__ == __ORDER_BIG_ENDIAN__;
+  if ((depth.is_bigendian != 0) == native_big_endian) return pixels;
+  const std::size_t size = pixels.elemSize();
+  for (int row = 0; row < pixels.rows; ++row) {
+    std::uint8_t* bytes = pixels.ptr<std::uint8_t>(row);
+    for (int col = 0; col < pixels.cols; ++col)
+      std::reverse(bytes + col * size, bytes + (col + 1) * size);
+  }
+  return pixels;
 }
 
 // Depth in millimetres, 0 where there is none, as perception reads it (depth_scale 0.001).
 cv::Mat depth_in_millimetres(const sensor_msgs::Image& depth) {
-  try {
-    if (depth.encoding == encodings::TYPE_16UC1 || depth.encoding == encodings::MONO16)
-      return cv_bridge::toCvCopy(depth, encodings::TYPE_16UC1)->image;
-    if (depth.encoding == encodings::TYPE_32FC1) {
-      const cv::Mat metres = cv_bridge::toCvShare(depth, nullptr, encodings::TYPE_32FC1)->image;
-      cv::Mat millimetres(metres.size(), CV_16UC1);
-      for (int row = 0; row < metres.rows; ++row) {
-        const float* in = metres.ptr<float>(row);
-        std::uint16_t* out = millimetres.ptr<std::uint16_t>(row);
-        for (int col = 0; col < metres.cols; ++col) {
-          const double mm = static_cast<double>(in[col]) * 1000.0;
-          // NaN, infinite, negative or beyond 65.5 m: no depth, as the RealSense writes 0.
-          out[col] = std::isfinite(mm) && mm > 0.0 && mm < 65535.0
-                         ? static_cast<std::uint16_t>(std::lround(mm))
-                         : 0;
-        }
-      }
-      return millimetres;
-    }
-  } catch (const cv_bridge::Exception& e) {
-    throw std::invalid_argument(std::string("depth image: ") + e.what());
+  const std::string what = "depth image";
+  if (depth.encoding == encodings::TYPE_16UC1 || depth.encoding == encodings::MONO16) {
+    check_layout(depth, what, {2, 2});
+    return converted(what, [&] { return depth_pixels(depth, CV_16UC1); });
   }
-  throw std::invalid_argument("depth image: encoding \"" + depth.encoding +
+  if (depth.encoding == encodings::TYPE_32FC1) {
+    check_layout(depth, what, {4, 4});
+    return converted(what, [&] { return millimetres_of(depth_pixels(depth, CV_32FC1)); });
+  }
+  throw std::invalid_argument("depth image: encoding \"" + text::printable_excerpt(depth.encoding) +
                               "\" is not 16UC1 (millimetres) or 32FC1 (metres)");
 }
 
 CameraIntrinsics intrinsics_of(const sensor_msgs::CameraInfo& info, const cv::Size& image) {
   const auto& k = info.K;  // row-major 3x3: fx 0 cx / 0 fy cy / 0 0 1
-  if (!(k[0] > 0.0) || !(k[4] > 0.0))
-    throw std::invalid_argument("camera_info: K has no focal lengths (fx, fy must be > 0)");
-  if (info.width != 0 && (static_cast<int>(info.width) != image.width ||
-                          static_cast<int>(info.height) != image.height))
+  if (!(k[0] > 0.0) || !(k[4] > 0.0) || !std::isfinite(k[0]) || !std::isfinite(k[4]))
+    throw std::invalid_argument("camera_info: K has no focal lengths (fx, fy must be finite, > 0)");
+  if (!std::isfinite(k[2]) || !std::isfinite(k[5]))
+    throw std::invalid_argument("camera_info: K's principal point (cx, cy) is not finite");
+  // Compared as unsigned 64-bit numbers: a width of 2^32 - 1 is not -1.
+  const auto width = static_cast<std::uint64_t>(image.width);
+  const auto height = static_cast<std::uint64_t>(image.height);
+  if (info.width != 0 && (info.width != width || info.height != height))
     throw std::invalid_argument("camera_info: " + std::to_string(info.width) + "x" +
                                 std::to_string(info.height) + " but the images are " +
                                 std::to_string(image.width) + "x" + std::to_string(image.height));

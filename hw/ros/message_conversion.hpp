@@ -29,7 +29,11 @@ namespace oasis::hw::ros_node {
 // A Frame from a colour image (bgr8, rgb8, bgra8 or rgba8), a depth image registered to it
 // (16UC1 in millimetres, or 32FC1 in metres, NaN or 0 for no depth) and the colour camera's
 // CameraInfo (K gives fx, fy, cx, cy). The frame's time is the colour image's stamp. Throws
-// std::invalid_argument naming what does not fit: an encoding, sizes that differ, an empty K.
+// std::invalid_argument naming what does not fit: an encoding, an empty image, a side over
+// 65536 pixels, a step shorter than a row or not whole channels, height * step other than the
+// bytes carried (all in 64 bits), sizes that differ, a K without finite fx, fy > 0, cx, cy.
+// An accepted frame is exactly the declared width x height (CV_8UC3 colour, CV_16UC1 depth).
+// Throws std::bad_alloc when memory runs out; nothing else.
 Frame frame_from_messages(const sensor_msgs::Image& colour, const sensor_msgs::Image& depth,
                           const sensor_msgs::CameraInfo& info);
 

@@ -19,15 +19,20 @@
 #include "app/control_loop.hpp"
 #include "app/profile_controller.hpp"
 #include "app/session.hpp"
+#include "cli/empty_values.hpp"
+#include "cli/memory_option.hpp"
+#include "cli/number_options.hpp"
 #include "go1/stop_signal.hpp"
 #include "log/step_log_writer.hpp"
 #include "log/table2_metrics.hpp"
 #include "log/table2_report.hpp"
+#include "perception/out_of_memory.hpp"
 #include "perception/perception.hpp"
 #include "perception/tag_visibility.hpp"
 #include "ros/attention_publisher.hpp"
 #include "ros/bag_feed.hpp"
 #include "ros/cmd_vel_link.hpp"
+#include "ros/last_resort_stop.hpp"
 #include "ros/node_settings.hpp"
 #include "ros/ros_session.hpp"
 #include "ros/topic_inputs.hpp"
@@ -42,7 +47,25 @@ struct NodeRequest {
   std::optional<std::uint64_t> steps;
   int master_timeout_ms = 10000;
   bool quiet = false;
+  std::uint64_t memory_budget = 0;  // bytes in force, 0: none (for the out-of-memory message)
 };
+
+constexpr const char* kProgram = "oasis-ros";
+
+// ROS's own rule for a topic's name, for the settings to check before any name reaches ROS.
+bool is_topic_name(const std::string& name) {
+  return ros_name_problem(name).empty();
+}
+
+// An error that ends the node, in the words every program uses: out of memory as such (not
+// OpenCV's text), anything else after "oasis-ros: error: ".
+void report_error(const std::exception& error, const NodeRequest& request,
+                  const std::string& after = "") {
+  if (is_out_of_memory(error))
+    cli::report_out_of_memory(kProgram, request.memory_budget);
+  else
+    std::cerr << kProgram << ": error: " << error.what() << after << '\n';
+}
 
 // Seconds since the epoch on the wall clock, as ROS stamps are (comparable on one machine).
 double wall_clock_s() {
@@ -229,27 +252,42 @@ std::string description(const Assembly& assembly, const InputFeed& feed,
          link.describe();
 }
 
+// Nothing started: the robot is told to stand still all the same, on the cmd_vel parameter's
+// topic (the default cmd_vel when it is not set). When that parameter is itself no ROS name,
+// no topic is named and nothing can be published: said so, rather than guessing a topic.
+void stop_before_start(RosSession& session) {
+  const std::string cmd_vel =
+      session.private_string_parameter("ros/topics/cmd_vel", RosTopics{}.cmd_vel);
+  if (!is_topic_name(cmd_vel)) {
+    std::cerr << kProgram
+              << ": no zero Twist was published: ~ros/topics/cmd_vel names no valid topic\n";
+    return;
+  }
+  CmdVelLink::send_zero_once(session, cmd_vel, std::chrono::milliseconds(2000));
+}
+
 int run_node(const NodeRequest& request, int argc, char** argv) {
   go1::install_stop_signal_handlers();
   RosSession session(argc, argv, "oasis_ros", std::chrono::milliseconds(request.master_timeout_ms));
-  const std::string cmd_vel_fallback =
-      session.private_string_parameter("ros/topics/cmd_vel", RosTopics{}.cmd_vel);
   std::unique_ptr<Assembly> assembly;
   try {
-    assembly = std::make_unique<Assembly>(parse_node_settings(
-        session.private_parameters_yaml(), "the ROS parameters of " + session.node_name()));
+    assembly = std::make_unique<Assembly>(
+        parse_node_settings(session.private_parameters_yaml(),
+                            "the ROS parameters of " + session.node_name(), is_topic_name));
   } catch (const std::exception& e) {
     if (const auto* bad = dynamic_cast<const settings::SettingsError*>(&e))
       print_parameter_errors(*bad, session);
     else
-      std::cerr << "oasis-ros: error: " << e.what() << '\n';
-    // Nothing started; the robot is told to stand still all the same.
-    CmdVelLink::send_zero_once(session, cmd_vel_fallback, std::chrono::milliseconds(2000));
+      report_error(e, request);
+    stop_before_start(session);
     session.shut_down(std::chrono::milliseconds(200));
     return 1;
   }
 
   const NodeSettings& settings = assembly->settings;
+  // From here on an exception nobody catches, or a fatal signal, still ends with a zero Twist
+  // (last_resort_stop.hpp says what it covers and what it cannot).
+  LastResortStop last_resort(session, settings.ros.topics.cmd_vel);
   TopicInputs inputs(session, assembly->input_options());
   FeedFrames frames(inputs, [&session] { return session.ok(); });
   CmdVelLink link(session,
@@ -270,7 +308,7 @@ int run_node(const NodeRequest& request, int argc, char** argv) {
                    });
   } catch (const std::exception& e) {
     link.shut_down();
-    std::cerr << "oasis-ros: error: " << e.what() << "; the robot was sent a zero Twist\n";
+    report_error(e, request, "; the robot was sent a zero Twist");
     session.shut_down(std::chrono::milliseconds(200));
     return 1;
   }
@@ -315,7 +353,8 @@ int replay_bag(const NodeRequest& request) {
   std::unique_ptr<Assembly> assembly;
   try {
     assembly = std::make_unique<Assembly>(
-        request.params_path.empty() ? NodeSettings{} : load_node_settings(request.params_path));
+        request.params_path.empty() ? NodeSettings{}
+                                    : load_node_settings(request.params_path, is_topic_name));
   } catch (const settings::SettingsError& e) {
     std::cerr << e.what() << '\n';
     return 1;
@@ -327,7 +366,9 @@ int replay_bag(const NodeRequest& request) {
   const Drive result = drive(*assembly, frames, link, request, {});
   std::cerr << "oasis-ros: " << result.result.steps << " steps replayed"
             << (result.result.reason.empty() ? "" : ", ended by " + result.result.reason)
-            << (bag.refused() > 0 ? "; " + std::to_string(bag.refused()) + " messages refused" : "")
+            << (bag.refused() > 0 ? "; " + std::to_string(bag.refused()) +
+                                        " messages refused (last: " + bag.last_refusal() + ")"
+                                  : "")
             << '\n';
   print_score(request, result.records);
   raise_received_signal();
@@ -355,32 +396,43 @@ int main(int argc, char** argv) {
       ->check(CLI::ExistingFile);
   app.add_option("--log", request.log_path,
                  "write every step as a JSON line (hw/log/README.md) to this file");
-  app.add_option("--steps", request.steps, "stop after this many control steps");
+  app.add_option("--steps", request.steps, "stop after this many control steps")
+      ->check(oasis::cli::whole_in(0, oasis::cli::max_of<std::uint64_t>()));
   app.add_option("--master-timeout-ms", request.master_timeout_ms,
                  "how long to wait for the ROS master before giving up")
-      ->check(CLI::Range(100, 600000));
+      ->capture_default_str()
+      ->check(oasis::cli::whole_in(100, 600000));
   app.add_flag("--quiet", request.quiet, "no line per step, no score table");
+  std::string memory_budget = "auto";
+  oasis::cli::add_memory_budget_option(app, memory_budget);
+  oasis::cli::refuse_empty_values(app);
   app.footer(
       "Settings are the node's private ROS parameters, with the names and checks of "
       "hw/config/go1.yaml plus a ros: section (mode, topics, input_timeout_ms, use_odom, "
       "frames): e.g. _ros/mode:=detections, or a rosparam file in hw/ros/launch/oasis.launch. "
       "Topic names are relative and remap as usual (cmd_vel:=/robot/cmd_vel). A zero Twist is "
-      "sent when no fresh input comes, on Ctrl-C or SIGTERM, and on any error. hw/ros/README.md "
+      "sent when no fresh input comes, on Ctrl-C, SIGTERM or SIGHUP, and on any error. "
+      "hw/ros/README.md "
       "has a robot owner's step-by-step.");
   try {
     app.parse(arguments_for_cli(argc, argv));
   } catch (const CLI::ParseError& e) {
     const int status = app.exit(e);
-    return status == 0 ? 0 : 2;
+    return status == 0 ? 0 : 2;  // bad usage, distinct from 1 (an error in the input)
   }
+  if (!request.params_path.empty() && request.bag_path.empty()) {
+    std::cerr << "oasis-ros: error: --params goes with --bag; a live node reads the ROS "
+                 "parameters\n";
+    return 2;
+  }
+  const std::optional<std::uint64_t> budget =
+      oasis::cli::apply_memory_budget_option(app, memory_budget, "oasis-ros");
+  if (!budget) return 2;
+  request.memory_budget = *budget;
   try {
-    if (!request.params_path.empty() && request.bag_path.empty()) {
-      std::cerr << "oasis-ros: --params goes with --bag; a live node reads the ROS parameters\n";
-      return 2;
-    }
     return request.bag_path.empty() ? run_node(request, argc, argv) : replay_bag(request);
   } catch (const std::exception& e) {
-    std::cerr << "oasis-ros: error: " << e.what() << '\n';
+    report_error(e, request);
     return 1;
   }
 }

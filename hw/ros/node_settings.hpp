@@ -10,6 +10,7 @@
 // and source: sections are accepted for that reason, and unused: the node drives cmd_vel, and
 // its frames come from topics.
 #include <chrono>
+#include <functional>
 #include <string>
 #include <string_view>
 
@@ -37,13 +38,19 @@ struct NodeSettings {
   RosSettings ros;
 };
 
+// Whether a text is a valid ROS topic name. The node gives ROS's own rule (ros_session.hpp);
+// without one, any non-empty text is taken.
+using TopicNameRule = std::function<bool(const std::string&)>;
+
 // Parses the node's parameter tree, as YAML text (the ROS parameters converted, or a file).
 // `origin` names it in messages. Throws settings::SettingsError with every problem found, each
-// naming its key ("loop.rate_hz", "ros.mode").
-NodeSettings parse_node_settings(std::string_view yaml_text, std::string_view origin);
+// naming its key ("loop.rate_hz", "ros.mode", "ros.topics.cmd_vel" for a name `is_topic_name`
+// refuses), so that no bad name reaches ROS, whose own error would name no parameter.
+NodeSettings parse_node_settings(std::string_view yaml_text, std::string_view origin,
+                                 const TopicNameRule& is_topic_name = {});
 
 // The same from a YAML file (oasis-ros --bag --params FILE). Throws settings::SettingsError.
-NodeSettings load_node_settings(const std::string& file);
+NodeSettings load_node_settings(const std::string& file, const TopicNameRule& is_topic_name = {});
 
 // "camera" or "detections".
 std::string to_string(InputMode mode);

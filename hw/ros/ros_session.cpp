@@ -3,6 +3,7 @@
 #include <thread>
 
 #include <ros/master.h>
+#include <ros/names.h>
 #include <ros/ros.h>
 #include <yaml-cpp/yaml.h>
 
@@ -45,6 +46,12 @@ std::vector<std::string> arguments_for_cli(int argc, char** argv) {
   for (int k = argc - 1; k >= 1; --k)
     if (std::string(argv[k]).find(":=") == std::string::npos) arguments.emplace_back(argv[k]);
   return arguments;
+}
+
+std::string ros_name_problem(const std::string& name) {
+  std::string error;
+  if (name.empty()) return "an empty name";
+  return ros::names::validate(name, error) ? "" : error;
 }
 
 RosSession::RosSession(int& argc, char** argv, const std::string& node_name,

@@ -25,6 +25,10 @@ struct RosSessionHandles;  // ros_session_handles.hpp
 // _param:=value, __name:=...) that ros::init takes, in the reverse order CLI11 expects.
 std::vector<std::string> arguments_for_cli(int argc, char** argv);
 
+// Why `name` is not a valid ROS graph resource name (a topic's), as ROS says it; empty when it
+// is one. Needs no master.
+std::string ros_name_problem(const std::string& name);
+
 class RosSession {
  public:
   // Joins the graph as `node_name` (remapped by __name:= as usual). Throws RosError when the

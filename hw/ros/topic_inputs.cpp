@@ -4,6 +4,7 @@
 #include <deque>
 #include <map>
 #include <mutex>
+#include <new>
 #include <stdexcept>
 
 #include <diagnostic_msgs/DiagnosticArray.h>
@@ -84,7 +85,11 @@ struct TopicInputs::State {
     ObservedInput input;
     try {
       input.frame = frame_from_messages(*colour_image, *depth_image, *camera_info);
-    } catch (const std::invalid_argument& e) {
+    } catch (const std::bad_alloc&) {
+      // Counted like a malformed frame: no observation, so the fail-safe stops the robot.
+      refuse("out of memory while converting the frame");
+      return;
+    } catch (const std::exception& e) {
       refuse(e.what());
       return;
     }
@@ -104,7 +109,7 @@ struct TopicInputs::State {
     ObservedInput input;
     try {
       input.detections = perception_from_detections(detections);
-    } catch (const std::invalid_argument& e) {
+    } catch (const std::exception& e) {
       refuse(e.what());
       return;
     }

@@ -58,8 +58,9 @@ class TopicInputs final : public InputFeed {
 
   // Observations replaced by a newer one before the loop took them (the loop fell behind).
   std::uint64_t dropped() const;
-  // Messages that could not be read (an encoding we do not take, sizes that differ), and why
-  // the last one could not.
+  // Messages that could not be read (an encoding we do not take, sizes that do not describe
+  // the bytes carried, images that differ in size; message_conversion.hpp), and why the last
+  // one could not.
   std::uint64_t refused() const;
   std::string last_refusal() const;
 

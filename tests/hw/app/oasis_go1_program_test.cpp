@@ -1,6 +1,6 @@
 // The oasis-go1 program as a user runs it: a dry run that logs and scores, the fake Go1 driven
-// over loopback and stopped by SIGTERM, and clear errors (exit 1) for a malformed config, a
-// missing camera and a robot that does not answer - never a moving robot.
+// over loopback and stopped by SIGTERM or SIGHUP, and clear errors (exit 1) for a malformed config,
+// a missing camera and a robot that does not answer - never a moving robot.
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
@@ -182,20 +182,22 @@ TEST(OasisGo1Program, RecordThenReplay) {
   EXPECT_EQ(lines_in(log), 12u);
 }
 
-TEST(OasisGo1Program, SigtermStopsThenStandsTheFakeGo1) {
+// `oasis-go1 run` against the fake Go1, ended by `signal_number` after 3 s: it dies of that
+// signal, having stopped the robot at once (walking at zero), then told it to stand.
+void expect_stop_then_stand_on(int signal_number, const std::string& name) {
   oasis::hw::go1::FakeGo1 robot;
   const std::string address = "127.0.0.1:" + std::to_string(robot.endpoint().port);
   const fs::path config =
       write_config("loopback.yaml", "robot:\n  local_address: 127.0.0.1\n  local_port: 0\n");
-  const fs::path output = scratch("sigterm.txt");
+  const fs::path output = scratch(name + ".txt");
   const pid_t child = start(
       {"run", "--config", config.string(), "--source", "synthetic", "--robot", address, "--quiet"},
       output);
   std::this_thread::sleep_for(milliseconds(3000));
   const auto signalled = std::chrono::steady_clock::now();
-  ASSERT_EQ(::kill(child, SIGTERM), 0);
+  ASSERT_EQ(::kill(child, signal_number), 0);
   const Outcome outcome = finish(child, output);
-  EXPECT_EQ(outcome.signal, SIGTERM) << "status " << outcome.status << ": " << outcome.output;
+  EXPECT_EQ(outcome.signal, signal_number) << "status " << outcome.status << ": " << outcome.output;
 
   const std::vector<oasis::hw::go1::AppliedCommand> applied = robot.applied_commands();
   ASSERT_FALSE(applied.empty()) << outcome.output;
@@ -203,7 +205,6 @@ TEST(OasisGo1Program, SigtermStopsThenStandsTheFakeGo1) {
   for (const auto& command : applied)
     moved = moved || command.command.velocity[0] > 0.0f;
   EXPECT_TRUE(moved) << "the loop never drove the robot forward: " << outcome.output;
-  // After the signal: stopped at once (walking at zero), then told to stand.
   std::optional<std::chrono::steady_clock::time_point> stopped;
   for (const auto& command : applied)
     if (command.at >= signalled && !stopped && command.command.velocity[0] == 0.0f &&
@@ -213,6 +214,16 @@ TEST(OasisGo1Program, SigtermStopsThenStandsTheFakeGo1) {
   EXPECT_LE(std::chrono::duration_cast<milliseconds>(*stopped - signalled).count(),
             kSchedulingMargin.count());
   EXPECT_EQ(applied.back().command.mode, oasis::hw::go1::Mode::kIdle);
+}
+
+TEST(OasisGo1Program, SigtermStopsThenStandsTheFakeGo1) {
+  expect_stop_then_stand_on(SIGTERM, "sigterm");
+}
+
+// A closed terminal or ssh session (issue 37, item 2): as SIGTERM, not the default death that
+// left the robot walking on its last command.
+TEST(OasisGo1Program, SighupStopsThenStandsTheFakeGo1) {
+  expect_stop_then_stand_on(SIGHUP, "sighup");
 }
 
 TEST(OasisGo1Program, UnreachableRobotIsAnErrorAndNothingRuns) {

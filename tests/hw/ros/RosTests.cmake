@@ -35,7 +35,8 @@ gtest_discover_tests(ros_settings_test DISCOVERY_MODE PRE_TEST TEST_PREFIX "ros_
 
 # Debian's python3 has rospy; a virtualenv's or pyenv's may not.
 find_program(OASIS_DEBIAN_PYTHON NAMES python3 PATHS /usr/bin NO_DEFAULT_PATH REQUIRED)
-foreach(case IN ITEMS bad_parameter fail_safe sigint closed_loop launch replay)
+foreach(case IN ITEMS bad_parameter fail_safe sigint closed_loop launch replay sighup last_resort
+                      last_resort_abort crafted_frames crafted_bag bad_topic_name)
   add_test(NAME ros.${case}
            COMMAND "${OASIS_DEBIAN_PYTHON}" "${ros_tests}/ros_node_test.py" ${case}
                    --oasis-ros $<TARGET_FILE:oasis-ros>

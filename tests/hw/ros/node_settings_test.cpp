@@ -2,6 +2,8 @@
 // node's ROS parameters become.
 #include "ros/node_settings.hpp"
 
+#include <algorithm>
+
 #include <gtest/gtest.h>
 
 namespace oasis::hw::ros_node {
@@ -64,6 +66,33 @@ TEST(NodeSettings, TheChecksAcrossOasisGo1KeysStillRun) {
   const std::vector<settings::Diagnostic> problems =
       problems_of("actions: {forward: {forward: 1.4}}\nlimits: {max_forward: 0.5}\n");
   ASSERT_FALSE(problems.empty());
+}
+
+// A topic name ROS would refuse names its parameter, as every other bad key does; the rule is
+// the node's (ROS's own names::validate; a stand-in here, which refuses spaces).
+TEST(NodeSettings, ATopicNameTheRuleRefusesNamesItsKey) {
+  const TopicNameRule no_spaces = [](const std::string& name) {
+    return name.find(' ') == std::string::npos;
+  };
+  std::vector<settings::Diagnostic> problems;
+  try {
+    parse_node_settings("ros: {topics: {cmd_vel: \"bad name\", odom: \"a b\", colour: ok}}\n",
+                        "params", no_spaces);
+  } catch (const settings::SettingsError& e) {
+    problems = e.diagnostics();
+  }
+  ASSERT_EQ(problems.size(), 2u);
+  const auto cmd_vel = std::find_if(problems.begin(), problems.end(), [](const auto& problem) {
+    return problem.key == "ros.topics.cmd_vel";
+  });
+  ASSERT_NE(cmd_vel, problems.end());
+  EXPECT_NE(cmd_vel->message.find("expected a ROS topic name"), std::string::npos);
+  EXPECT_NE(cmd_vel->message.find("\"bad name\""), std::string::npos);
+  EXPECT_TRUE(problems[0].key == "ros.topics.odom" || problems[1].key == "ros.topics.odom");
+  // Without a rule (the settings alone), any non-empty name is taken.
+  EXPECT_EQ(
+      parse_node_settings("ros: {topics: {cmd_vel: \"bad name\"}}\n", "params").ros.topics.cmd_vel,
+      "bad name");
 }
 
 }  // namespace

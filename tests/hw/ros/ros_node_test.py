@@ -7,6 +7,7 @@ Run by ctest (label ros). Needs Debian's python3 (rospy), not a virtualenv's."""
 import argparse
 import json
 import os
+import re
 import signal
 import subprocess
 import sys
@@ -171,11 +172,14 @@ def case_fail_safe(args, env):
     check("fail-safe stops" in err, "the summary reports the fail-safe")
 
 
-def case_sigint(args, env):
-    _, recorder, tracker, node = run_with_detections(args, env, "oasis_test_sigint")
+def stopped_by(args, env, signal_number, within_s):
+    """oasis-ros driving on detections, then sent `signal_number`: it dies of that signal, and
+    the last Twist, within `within_s` of the signal, is zero. Returns its standard error."""
+    name = signal.Signals(signal_number).name
+    _, recorder, tracker, node = run_with_detections(args, env, "oasis_test_" + name.lower())
     time.sleep(2.5)
     signalled_at = time.monotonic()
-    node.send_signal(signal.SIGINT)
+    node.send_signal(signal_number)
     out, err = node.communicate(timeout=30)
     time.sleep(0.3)
     tracker.stop()
@@ -184,10 +188,256 @@ def case_sigint(args, env):
     check(any(not is_zero(t) for t in twists), "the robot was driven before the signal")
     check(bool(twists) and is_zero(twists[-1]), "the last Twist is zero")
     zeros_after = [t for t in twists if is_zero(t) and t[0] >= signalled_at]
-    check(bool(zeros_after) and zeros_after[0][0] - signalled_at < 0.25,
-          "a zero Twist came within 250 ms of SIGINT")
+    check(bool(zeros_after) and zeros_after[0][0] - signalled_at < within_s,
+          "a zero Twist came within %.0f ms of %s" % (within_s * 1000.0, name))
+    check(node.returncode in (-signal_number, 128 + signal_number),
+          "oasis-ros died of %s, as an interrupted program does (got %s)" %
+          (name, node.returncode))
+    return err
+
+
+def case_sigint(args, env):
+    stopped_by(args, env, signal.SIGINT, 0.25)
+
+
+def case_sighup(args, env):
+    """A closed terminal or ssh session (issue 37, item 2): as SIGINT."""
+    stopped_by(args, env, signal.SIGHUP, 0.25)
+
+
+def last_resort(args, env, signal_number):
+    """A fatal signal (issue 37, item 1): the last resort publishes the zero Twist before the
+    node dies of the signal (hw/ros/last_resort_stop.hpp). The signal is sent from outside,
+    which the handler cannot tell from a fault of the node's own."""
+    err = stopped_by(args, env, signal_number, 0.6)
+    check("a zero Twist was published on cmd_vel (last resort)" in err,
+          "the node says the last resort published the zero Twist")
+
+
+def case_last_resort(args, env):
+    last_resort(args, env, signal.SIGSEGV)
+
+
+def case_last_resort_abort(args, env):
+    last_resort(args, env, signal.SIGABRT)
+
+
+# Debian packages sensor_msgs for C++ only (no python3-sensor-msgs): the two types are made
+# from their full definitions, as rosbag makes a bag's types; the md5 sums are ROS's own
+# (060021388200f6f0f447d0fcd9c64743, c9a58c1b0b154e0e6da7578cb991d214), checked below.
+HEADER_DEFINITION = """
+================================================================================
+MSG: std_msgs/Header
+uint32 seq
+time stamp
+string frame_id
+"""
+IMAGE_DEFINITION = """std_msgs/Header header
+uint32 height
+uint32 width
+string encoding
+uint8 is_bigendian
+uint32 step
+uint8[] data
+""" + HEADER_DEFINITION
+CAMERA_INFO_DEFINITION = """std_msgs/Header header
+uint32 height
+uint32 width
+string distortion_model
+float64[] D
+float64[9] K
+float64[9] R
+float64[12] P
+uint32 binning_x
+uint32 binning_y
+RegionOfInterest roi
+""" + HEADER_DEFINITION + """
+================================================================================
+MSG: sensor_msgs/RegionOfInterest
+uint32 x_offset
+uint32 y_offset
+uint32 height
+uint32 width
+bool do_rectify
+"""
+
+
+def sensor_types():
+    """(Image, CameraInfo) as Python message classes."""
+    import genpy.dynamic
+    image = genpy.dynamic.generate_dynamic("sensor_msgs/Image",
+                                           IMAGE_DEFINITION)["sensor_msgs/Image"]
+    info = genpy.dynamic.generate_dynamic("sensor_msgs/CameraInfo",
+                                          CAMERA_INFO_DEFINITION)["sensor_msgs/CameraInfo"]
+    assert image._md5sum == "060021388200f6f0f447d0fcd9c64743", image._md5sum
+    assert info._md5sum == "c9a58c1b0b154e0e6da7578cb991d214", info._md5sum
+    return image, info
+
+
+def camera_publishers():
+    import rospy
+    Image, CameraInfo = sensor_types()
+    return (rospy.Publisher("/camera/color/image_raw", Image, queue_size=10),
+            rospy.Publisher("/camera/aligned_depth_to_color/image_raw", Image, queue_size=10),
+            rospy.Publisher("/camera/color/camera_info", CameraInfo, queue_size=10))
+
+
+def image_message(stamp, encoding, width, height, step, size, fill=0x40):
+    Image, _ = sensor_types()
+    message = Image()
+    message.header.stamp = stamp
+    message.header.frame_id = "camera_color_optical_frame"
+    message.encoding, message.width, message.height, message.step = encoding, width, height, step
+    message.data = bytes([fill]) * size
+    return message
+
+
+def info_message(stamp, width, height):
+    _, CameraInfo = sensor_types()
+    info = CameraInfo()
+    info.header.stamp = stamp
+    info.width, info.height = width, height
+    info.K = [500.0, 0.0, width / 2.0, 0.0, 500.0, height / 2.0, 0.0, 0.0, 1.0]
+    return info
+
+
+def crafted_frames(stamp_of):
+    """The frames of issue 37, item 1, each a (colour, depth, camera info) of one stamp: sizes
+    whose 32-bit products wrap around to the bytes carried (colour and depth), a 12.9 GB
+    colour image, an empty one, a step of half a depth pixel."""
+    frames = [
+        ("bgr8", 65536, 21846, 196608, 131072, "16UC1", 4, 3, 8, 24),
+        ("bgr8", 65536, 65537, 196608, 131072, "16UC1", 4, 3, 8, 24),
+        ("bgr8", 0, 0, 0, 0, "16UC1", 0, 0, 0, 0),
+        ("bgr8", 4, 4, 12, 48, "16UC1", 4, 4, 9, 36),
+        ("bgr8", 4, 3, 12, 36, "32FC1", 65536, 16385, 262144, 262144),
+        ("bgr8", 4, 3, 12, 36, "16UC1", 65536, 32769, 131072, 131072),
+    ]
+    for k, (c_enc, c_w, c_h, c_step, c_size, d_enc, d_w, d_h, d_step, d_size) in \
+            enumerate(frames):
+        stamp = stamp_of(k)
+        yield (image_message(stamp, c_enc, c_w, c_h, c_step, c_size),
+               image_message(stamp, d_enc, d_w, d_h, d_step, d_size),
+               info_message(stamp, c_w, c_h))
+
+
+def small_frame(stamp, width=64, height=48):
+    """A well-formed frame, small enough that perception sees nobody in it."""
+    return (image_message(stamp, "bgr8", width, height, width * 3, width * height * 3, 0x80),
+            image_message(stamp, "16UC1", width, height, width * 2, width * height * 2, 0x08),
+            info_message(stamp, width, height))
+
+
+def publish_frames(publishers, frames, pause_s=0.15):
+    count = 0
+    for frame in frames:
+        for publisher, message in zip(publishers, frame):
+            publisher.publish(message)
+        count += 1
+        time.sleep(pause_s)
+    return count
+
+
+def case_crafted_frames(args, env):
+    """The crafted frames published among the hallway simulator's while oasis-ros drives, then
+    alone: the node keeps running, each frame it is given is refused and counted, and the last
+    Twist is zero. (Among the simulator's frames, the synchronizer may drop a crafted set that
+    a newer frame overtakes before it is complete: alone, every set reaches the node.)"""
+    rospy = init_rospy(env, "oasis_test_crafted_frames")
+    recorder = TwistRecorder()
+    publishers = camera_publishers()
+    node = start_node(args, env)
+    check(all(wait_for_subscriber(p) for p in publishers), "oasis-ros subscribed to the camera")
+    sim = subprocess.Popen([args.sim, "--seed", "1000", "--steps", "45", "--rate-hz", "5"],
+                           env=env, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    time.sleep(3.0)
+    now = rospy.Time.now
+    publish_frames(publishers, crafted_frames(lambda k: now()))
+    # Well-formed frames of one pixel and of four: taken, and perception copes.
+    publish_frames(publishers, [small_frame(now(), 1, 1), small_frame(now(), 2, 2)])
+    sim.communicate(timeout=120)
+    time.sleep(1.0)
+    alone = publish_frames(publishers, crafted_frames(lambda k: now()))
+    time.sleep(1.0)
+    check(node.poll() is None, "oasis-ros still runs after the crafted frames (status %s)" %
+          node.returncode)
+    twists = recorder.snapshot()
+    node.send_signal(signal.SIGINT)
+    out, err = node.communicate(timeout=30)
+    sys.stderr.write(err)
+    check(any(not is_zero(t) for t in twists), "the robot was driven during the trial")
+    check(bool(twists) and is_zero(twists[-1]), "the last Twist is zero")
+    refused = re.search(r"refused (\d+)", err)
+    check(refused is not None and int(refused.group(1)) >= alone,
+          "the crafted frames were refused and counted (%s; %d sent alone)" %
+          (refused.group(1) if refused else "none", alone))
+    check(not any(text in err for text in CRASH_TEXTS),
+          "no raw OpenCV, assertion or terminate text")
     check(node.returncode in (-signal.SIGINT, 130),
-          "oasis-ros died of SIGINT, as an interrupted program does (got %s)" % node.returncode)
+          "oasis-ros ended by SIGINT as usual (got %s)" % node.returncode)
+
+
+CRASH_TEXTS = ("OpenCV(", "cv::Exception", "Assertion", "terminate called", "Segmentation")
+
+
+def case_crafted_bag(args, env):
+    """`oasis-ros --bag` over a bag of the crafted frames and three well-formed ones: the run
+    ends normally, the crafted ones refused and counted, the others decided on."""
+    import rosbag
+    import rospy
+    work = args.work
+    bag_path, log = os.path.join(work, "crafted.bag"), os.path.join(work, "crafted.jsonl")
+    topics = ("camera/color/image_raw", "camera/aligned_depth_to_color/image_raw",
+              "camera/color/camera_info")
+    crafted = 0
+    with rosbag.Bag(bag_path, "w") as bag:
+        stamp = rospy.Time(100, 0)
+        for k in range(3):
+            when = stamp + rospy.Duration(k * 0.2)
+            for topic, message in zip(topics, small_frame(when)):
+                bag.write(topic, message, when)
+        for frame in crafted_frames(lambda k: stamp + rospy.Duration(1.0 + k * 0.2)):
+            for topic, message in zip(topics, frame):
+                bag.write(topic, message, frame[0].header.stamp)
+            crafted += 1
+    run = subprocess.run([args.oasis_ros, "--bag", bag_path, "--log", log, "--quiet"],
+                         stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, timeout=120,
+                         env={k: v for k, v in os.environ.items() if not k.startswith("ROS_")})
+    sys.stderr.write(run.stderr)
+    check(run.returncode == 0, "the replay ended normally (status %d)" % run.returncode)
+    check("%d messages refused" % crafted in run.stderr,
+          "the %d crafted frames were refused and counted" % crafted)
+    check(not any(text in run.stderr for text in CRASH_TEXTS),
+          "no raw OpenCV, assertion or terminate text")
+    steps = sum(1 for _ in open(log)) if os.path.exists(log) else 0
+    check(steps == 3, "the 3 well-formed frames were decided on (%d steps)" % steps)
+
+
+def case_bad_topic_name(args, env):
+    """A topic parameter that is no ROS name (issue 37, item 13) names the parameter and exits
+    1; the zero Twist still goes out on cmd_vel, unless cmd_vel's own name is the bad one."""
+    rospy = init_rospy(env, "oasis_test_bad_topic_name")
+    recorder = TwistRecorder()
+    node = start_node(args, env, ["_ros/topics/colour:=bad name"])
+    out, err = node.communicate(timeout=60)
+    sys.stderr.write(err)
+    check(node.returncode == 1, "a bad topic name exits with status 1 (got %s)" %
+          node.returncode)
+    check("parameter ~ros/topics/colour" in err and "expected a ROS topic name" in err,
+          "the message names ~ros/topics/colour and what it expects")
+    time.sleep(0.5)
+    twists = recorder.snapshot()
+    check(len(twists) >= 1 and all(is_zero(t) for t in twists),
+          "a zero Twist was published on cmd_vel (%d received)" % len(twists))
+    node = start_node(args, env, ["_ros/topics/cmd_vel:=bad name"])
+    out, err = node.communicate(timeout=60)
+    sys.stderr.write(err)
+    check(node.returncode == 1, "a bad cmd_vel name exits with status 1 (got %s)" %
+          node.returncode)
+    check("parameter ~ros/topics/cmd_vel" in err and "names no valid topic" in err,
+          "the message names ~ros/topics/cmd_vel and says why no zero Twist went out")
+    check("Character [" not in err, "no raw ROS text")
+    del rospy
 
 
 def accuracy_of(json_text, controller=None):
@@ -358,6 +608,12 @@ CASES = {
     "bad_parameter": case_bad_parameter,
     "fail_safe": case_fail_safe,
     "sigint": case_sigint,
+    "sighup": case_sighup,
+    "last_resort": case_last_resort,
+    "last_resort_abort": case_last_resort_abort,
+    "crafted_frames": case_crafted_frames,
+    "crafted_bag": case_crafted_bag,
+    "bad_topic_name": case_bad_topic_name,
 }
 
 
