@@ -14,17 +14,16 @@ void add_common_options(CLI::App& command, CommonOptions& options) {
   command.add_option("--max-errors", options.max_errors, "Stop after this many errors")
       ->capture_default_str()
       ->check(whole_in(1, 100000));
-  command
-      .add_option("--max-spec-size", options.load.max_spec_bytes,
-                  "Refuse .oasis and PRISM programs larger than this (bytes, or with a unit: 64M)")
-      ->capture_default_str()
-      ->transform(CLI::AsSizeValue(false));
-  command
-      .add_option("--max-input-size", options.load.max_input_bytes,
-                  "Refuse .aut, .tra, CSV and JSON inputs larger than this (bytes, or with a "
-                  "unit: 8G)")
-      ->capture_default_str()
-      ->transform(CLI::AsSizeValue(false));
+  as_size(command
+              .add_option("--max-spec-size", options.load.max_spec_bytes,
+                          "Refuse .oasis and PRISM programs larger than this (bytes, or with a "
+                          "unit: 64M)")
+              ->capture_default_str());
+  as_size(command
+              .add_option("--max-input-size", options.load.max_input_bytes,
+                          "Refuse .aut, .tra, CSV and JSON inputs larger than this (bytes, or "
+                          "with a unit: 8G)")
+              ->capture_default_str());
   command
       .add_option("--max-number-bits", options.load.max_number_bits,
                   "Refuse exact numbers whose numerator or denominator has more bits than this")

@@ -13,6 +13,7 @@
 
 #include "cli/commands.hpp"
 #include "cli/number_options.hpp"
+#include "cli/output_names.hpp"
 #include "codegen/catalog_files.hpp"
 #include "model/catalog_data.hpp"
 #include "oasis/rt/catalog_sections.hpp"
@@ -27,21 +28,6 @@
 
 namespace oasis::cli {
 namespace {
-
-// --basename names files inside the output folder: a plain name, never a path ("../evil",
-// "/etc/x"), so that compile writes nowhere else.
-CLI::Validator plain_file_name() {
-  return CLI::Validator(
-      [](std::string& name) -> std::string {
-        const bool plain = !name.empty() && name != "." && name != ".." &&
-                           name.find('/') == std::string::npos &&
-                           name.find('\0') == std::string::npos;
-        return plain ? ""
-                     : "\"" + name.substr(0, 60) +
-                           "\" is not a plain file name (no '/', not '.' or '..', not empty)";
-      },
-      "NAME");
-}
 
 namespace fs = std::filesystem;
 
@@ -236,7 +222,7 @@ CommandRunner add_compile_command(CLI::App& app) {
   command
       ->add_option("--basename", options->basename,
                    "File name (without extension) of the C++ output, inside the output folder")
-      ->check(plain_file_name());
+      ->check(plain_file_name());  // never a path: compile writes nowhere else
   command
       ->add_option("--robust", options->p_correct,
                    "Add the robust filter's section with this sensor accuracy P = 1 - noise "

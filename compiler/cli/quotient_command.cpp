@@ -1,6 +1,7 @@
 // `oasisc quotient FILE`: the coarsest bisimulation quotient of every context.
 
 #include <chrono>
+#include <filesystem>
 #include <iomanip>
 #include <iostream>
 #include <memory>
@@ -14,12 +15,14 @@
 #include "cli/label_options.hpp"
 #include "cli/number_options.hpp"
 #include "cli/quotient_output.hpp"
+#include "files/output_names.hpp"
 #include "formats/aut_writer.hpp"
 #include "pipeline/discrete_catalog.hpp"
 #include "support/atomic_file.hpp"
 #include "support/atomic_file_set.hpp"
 #include "support/limits.hpp"
 #include "support/peak_memory.hpp"
+#include "text/printable_text.hpp"
 
 namespace oasis::cli {
 namespace {
@@ -60,6 +63,39 @@ std::optional<std::vector<std::size_t>> select_contexts(const model::ExplicitMod
     selected.push_back(c);
   }
   return selected;
+}
+
+// With one file per context (aut, dot), a context's name becomes part of a file name: a name
+// that is a path (a PRISM reward structure "a/../../x") would write elsewhere, and no two
+// contexts may share a file (the one rule for output names, common/files/output_names.hpp).
+// Checked before any work; false after saying why.
+bool context_files_allowed(const model::ExplicitModel& model,
+                           const std::vector<std::size_t>& selected,
+                           const QuotientOptions& options) {
+  const bool per_context = (options.format == "aut" || options.format == "dot") &&
+                           selected.size() > 1 && !options.output.empty() && options.output != "-";
+  if (!per_context) return true;
+  std::vector<std::string> paths;
+  for (const std::size_t c : selected) {
+    paths.push_back(output_path(options.output, options.format, model.contexts[c].name, true));
+    const std::string problem = files::plain_file_name_problem(
+        std::filesystem::path(options.output).stem().string() + "." + model.contexts[c].name);
+    if (!problem.empty()) {
+      std::cerr << options.file << ": error: context \""
+                << text::printable_excerpt(model.contexts[c].name)
+                << "\" cannot name a file: " << problem << "; choose other contexts with -c\n";
+      return false;
+    }
+  }
+  if (const auto shared = files::first_shared_output(paths)) {
+    std::cerr << options.file << ": error: contexts \""
+              << text::printable_excerpt(model.contexts[selected[shared->first]].name)
+              << "\" and \""
+              << text::printable_excerpt(model.contexts[selected[shared->second]].name)
+              << "\" would both be written to " << paths[shared->first] << '\n';
+    return false;
+  }
+  return true;
 }
 
 // Refines the selected contexts in parallel, through the compiler's pipeline (partitions only).
@@ -191,6 +227,7 @@ int run_quotient(const QuotientOptions& options) {
                  "output, or give -o FILE\n";
     return 2;
   }
+  if (!context_files_allowed(*loaded->model, *selected, options)) return 1;
   auto label_class = respected_label_classes(*loaded->model, options.respect_labels, options.file);
   if (!label_class) return 1;
   const auto results = run_contexts(*loaded->model, *selected, options, std::move(*label_class),

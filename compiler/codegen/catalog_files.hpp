@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "files/output_names.hpp"
 #include "model/catalog_data.hpp"
 #include "pipeline/continuous_catalog.hpp"
 #include "support/atomic_file.hpp"
@@ -44,6 +45,16 @@ class OutputSet {
     if (to_standard_output() && !names_.empty()) {
       // Checked before anything is written (one_file_error), so this is a bug guard.
       error = "-o - writes one file, and this compile makes more than " + *names_.begin();
+      return false;
+    }
+    // Names come from the model and its contexts (a PRISM reward structure may be called
+    // "a/../../x"): each must name a file in the folder, and only once.
+    if (const std::string problem = files::plain_file_name_problem(name); !problem.empty()) {
+      error = "a file of the catalog would be named " + problem;
+      return false;
+    }
+    if (names_.count(name) != 0) {
+      error = "two files of the catalog would be named \"" + text::printable_excerpt(name) + "\"";
       return false;
     }
     AtomicFile file;

@@ -1,6 +1,7 @@
 #include "distributed/communicator.hpp"
 
 #include <algorithm>
+#include <cstdlib>
 
 #include <mpi.h>
 
@@ -102,6 +103,11 @@ std::uint64_t Communicator::max(std::uint64_t mine) const {
 
 void Communicator::barrier() const {
   MPI_Barrier(MPI_COMM_WORLD);
+}
+
+void Communicator::abort(int status) const {
+  MPI_Abort(MPI_COMM_WORLD, status);
+  std::_Exit(status);  // MPI_Abort does not return; this tells the compiler so
 }
 
 }  // namespace oasis::distributed

@@ -42,6 +42,10 @@ class Communicator {
 
   void barrier() const;
 
+  // Ends every rank of the job with `status` (MPI_Abort): for a failure on one rank that the
+  // others, waiting in a collective, cannot learn of (an exception such as out of memory).
+  [[noreturn]] void abort(int status) const;
+
  private:
   std::uint32_t rank_ = 0;
   std::uint32_t size_ = 1;

@@ -10,10 +10,13 @@
 #include <sstream>
 #include <string>
 
+#include "cli/number_options.hpp"
+#include "cli/output_names.hpp"
 #include "codegen/catalog_files.hpp"
 #include "distributed/context_spreading.hpp"
 #include "input/model_loader.hpp"
 #include "mpi_cli/commands.hpp"
+#include "support/limits.hpp"
 #include "support/staged_directory.hpp"
 
 namespace oasis::mpi_cli {
@@ -130,21 +133,24 @@ CommandRunner add_compile_command(CLI::App& app, const distributed::Communicator
                    "Formats: bin, json, dot, cpp (default: bin,json,dot)")
       ->delimiter(',')
       ->check(CLI::IsMember({"bin", "json", "dot", "cpp"}));
-  command->add_option("--basename", options->basename,
-                      "File name (without extension) of the C++ output, inside the output folder");
+  command
+      ->add_option("--basename", options->basename,
+                   "File name (without extension) of the C++ output, inside the output folder")
+      ->check(cli::plain_file_name());  // never a path: compile writes nowhere else
   command
       ->add_option("--robust", options->p_correct,
                    "Add the robust filter's section with this sensor accuracy P = 1 - noise")
-      ->check(CLI::Range(0.0, 1.0));
+      ->check(cli::real_in(cli::closed(0.0, 1.0)));
   command
       ->add_option("-j,--jobs", options->jobs,
                    "Threads per rank for its contexts (0: one per hardware thread)")
-      ->capture_default_str();
+      ->capture_default_str()
+      ->check(cli::whole_in(0, limits::kMaxJobs));
   command
       ->add_option("--max-states", options->load.max_states,
                    "Stop exploring a factored model past this many states")
       ->capture_default_str()
-      ->check(CLI::Range(1U, 4'000'000'000U));
+      ->check(cli::whole_in(1, 4'000'000'000U));
   command->add_option("--const", options->load.constants,
                       "PRISM programs: values of undefined constants (N=4,p=0.1)");
   command

@@ -14,10 +14,12 @@
 #include <string>
 #include <vector>
 
+#include "cli/number_options.hpp"
 #include "distributed/distributed_reader.hpp"
 #include "distributed/partition_output.hpp"
 #include "distributed/quotient_output.hpp"
 #include "distributed/signature_refinement.hpp"
+#include "files/output_names.hpp"
 #include "formats/aut_writer.hpp"
 #include "mpi_cli/commands.hpp"
 #include "support/peak_memory.hpp"
@@ -166,13 +168,16 @@ bool run_one(const std::string& path, const Options& options,
   return !communicator.any(!written);
 }
 
-bool check_models(const Options& options, bool report) {
+// 0 when the models can be quotiented into options.output; otherwise the exit status, after
+// rank 0 (`report`) has said why: 1 for a model it cannot read, 2 for outputs that cannot be
+// told apart (bad usage). Checked before any work, so that no result is written and lost.
+int check_models(const Options& options, bool report) {
   for (const std::string& model : options.models) {
     if (std::filesystem::path(model).extension() != ".aut") {
       if (report)
         std::cerr << model << ": error: oasisc-mpi reads mCRL2 .aut files; convert others with "
                   << "'oasisc export " << model << " --format aut -o MODEL.aut'\n";
-      return false;
+      return 1;
     }
   }
   std::error_code code;
@@ -180,9 +185,20 @@ bool check_models(const Options& options, bool report) {
     if (report)
       std::cerr << "oasisc-mpi: error: with " << options.models.size()
                 << " models, -o must name an existing directory (one output per model)\n";
-    return false;
+    return 2;
   }
-  return true;
+  std::vector<std::string> outputs;
+  for (const std::string& model : options.models)
+    outputs.push_back(output_for(options, model));
+  if (const auto shared = files::first_shared_output(outputs)) {
+    if (report)
+      std::cerr << "oasisc-mpi: error: " << options.models[shared->first] << " and "
+                << options.models[shared->second] << " would both be written to "
+                << outputs[shared->first]
+                << " (one output per model, named after it); quotient them in separate runs\n";
+    return 2;
+  }
+  return 0;
 }
 
 }  // namespace
@@ -206,23 +222,22 @@ CommandRunner add_quotient_command(CLI::App& app, const distributed::Communicato
                    "aut: the quotient MDP, as 'oasisc quotient --format aut' writes it")
       ->capture_default_str()
       ->check(CLI::IsMember({"json", "aut"}));
-  command
-      ->add_option("--max-input-size", options->read.max_bytes,
-                   "Refuse files larger than this (bytes, or with a unit: 8G)")
-      ->capture_default_str()
-      ->transform(CLI::AsSizeValue(false));
+  cli::as_size(command
+                   ->add_option("--max-input-size", options->read.max_bytes,
+                                "Refuse files larger than this (bytes, or with a unit: 8G)")
+                   ->capture_default_str());
   command
       ->add_option("--max-states", options->read.max_states,
                    "Refuse files whose header declares more states")
       ->capture_default_str()
-      ->check(CLI::Range(1U, 4'000'000'000U));
+      ->check(cli::whole_in(1, 4'000'000'000U));
   command->add_flag("--rational-sums", options->rational_sums,
                     "Add probabilities with GMP even when integers would be exact (for tests)");
   command->add_flag("--progress", options->progress,
                     "Report on stderr how the reading goes, then the blocks after each round");
   command->add_flag("-q,--quiet", options->quiet, "Print nothing on success");
   return [options, &communicator] {
-    if (!check_models(*options, communicator.is_root())) return 1;
+    if (const int refused = check_models(*options, communicator.is_root())) return refused;
     bool ok = true;
     for (const std::string& model : options->models)
       ok = run_one(model, *options, communicator) && ok;

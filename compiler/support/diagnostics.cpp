@@ -1,6 +1,7 @@
 #include "support/diagnostics.hpp"
 
 #include <algorithm>
+#include <cerrno>
 #include <ostream>
 #include <string>
 
@@ -100,7 +101,8 @@ void DiagnosticEngine::file_error(std::string_view path, std::string_view messag
 
 void DiagnosticEngine::plain_error(std::string_view message) {
   count(Severity::Error);
-  out_ << "oasisc: error: " << text::printable_message(message) << '\n';
+  // The program that runs (oasisc, oasisc-mpi, oasis-sim), as its other messages name it.
+  out_ << program_invocation_short_name << ": error: " << text::printable_message(message) << '\n';
 }
 
 }  // namespace oasis

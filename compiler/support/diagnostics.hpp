@@ -54,7 +54,7 @@ class DiagnosticEngine {
 
   // For problems that belong to a file but to no place in it (cannot open, too large).
   void file_error(std::string_view path, std::string_view message);
-  // For problems that belong to no file (bad command-line values).
+  // For problems that belong to no file (bad command-line values): "PROGRAM: error: ...".
   void plain_error(std::string_view message);
 
   [[nodiscard]] std::size_t error_count() const { return errors_; }

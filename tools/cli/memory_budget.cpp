@@ -28,6 +28,9 @@ namespace {
 
 constexpr std::uint64_t kUnlimited = std::numeric_limits<std::uint64_t>::max();
 
+// The soft data limit apply_memory_budget() lowered, for lift_memory_budget().
+std::optional<rlim_t> soft_limit_before;
+
 // A number of bytes in a control-group file ("max" or a number); nullopt when absent or
 // unlimited. v1 writes "unlimited" as a huge multiple of the page size.
 std::optional<std::uint64_t> read_cgroup_limit(const std::string& path) {
@@ -167,12 +170,26 @@ std::optional<std::uint64_t> apply_memory_budget(std::uint64_t bytes, std::strin
   const auto hard = limit.rlim_max == RLIM_INFINITY ? kUnlimited : limit.rlim_max;
   const std::uint64_t wanted = bytes == 0 ? kUnlimited : std::min(bytes, hard);
   if (wanted >= current) return current == kUnlimited ? 0 : current;  // never raised
+  soft_limit_before = limit.rlim_cur;
   limit.rlim_cur = static_cast<rlim_t>(wanted);
   if (::setrlimit(RLIMIT_DATA, &limit) != 0) {
     error = std::string("cannot set the data limit: ") + std::strerror(errno);
     return std::nullopt;
   }
   return wanted;
+}
+
+void lift_memory_budget() {
+  rlimit limit{};
+  if (!soft_limit_before || ::getrlimit(RLIMIT_DATA, &limit) != 0) return;
+  limit.rlim_cur = *soft_limit_before;
+  ::setrlimit(RLIMIT_DATA, &limit);  // only ever raises the soft limit back: cannot fail
+}
+
+std::optional<std::uint64_t> address_space_limit() {
+  rlimit limit{};
+  if (::getrlimit(RLIMIT_AS, &limit) != 0 || limit.rlim_cur == RLIM_INFINITY) return std::nullopt;
+  return static_cast<std::uint64_t>(limit.rlim_cur);
 }
 
 std::string describe_bytes(std::uint64_t bytes) {

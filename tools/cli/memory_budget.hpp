@@ -52,6 +52,16 @@ inline constexpr std::uint64_t kMinMemoryBudgetBytes = std::uint64_t{16} << 20;
 [[nodiscard]] std::optional<std::uint64_t> apply_memory_budget(std::uint64_t bytes,
                                                                std::string& error);
 
+// Gives back the soft data limit that apply_memory_budget() lowered, once the command has run
+// out of its budget: for what must still be done after (oasisc-mpi's MPI_Abort, which
+// allocates to tell mpirun why). Does nothing when no budget was applied.
+void lift_memory_budget();
+
+// The soft RLIMIT_AS (a shell's `ulimit -v`), or nullopt when there is none. It bounds the
+// whole address space, so a tight one runs out before the budget: the out-of-memory message
+// names whichever is in force and lower.
+[[nodiscard]] std::optional<std::uint64_t> address_space_limit();
+
 // "1.5 GiB", "512 MiB", "900 KiB": for messages.
 [[nodiscard]] std::string describe_bytes(std::uint64_t bytes);
 

@@ -55,6 +55,17 @@ std::optional<std::uint64_t> apply_memory_budget_option(const CLI::App& app,
 }
 
 void report_out_of_memory(std::string_view program, std::uint64_t budget) {
+  // The address space holds the data the budget counts and more (mapped inputs, stacks, code):
+  // a shell's `ulimit -v` at or below the budget is the limit that bit.
+  const std::optional<std::uint64_t> address_space = address_space_limit();
+  if (address_space && (budget == 0 || *address_space <= budget)) {
+    std::cerr << program
+              << ": error: out of memory: the command needs more than the address-space limit "
+                 "of "
+              << describe_bytes(*address_space)
+              << " set for it (ulimit -v, RLIMIT_AS; --memory-budget cannot raise it)\n";
+    return;
+  }
   if (budget == 0) {
     std::cerr << program << ": error: out of memory\n";
     return;
@@ -62,7 +73,11 @@ void report_out_of_memory(std::string_view program, std::uint64_t budget) {
   std::cerr << program
             << ": error: out of memory: the command needs more than its memory budget of "
             << describe_bytes(budget) << " (" << kMemoryBudgetFlag << "; the default is "
-            << kDefaultMemoryBudgetPercent << "% of the machine's memory)\n";
+            << kDefaultMemoryBudgetPercent << "% of the machine's memory)";
+  if (address_space)
+    std::cerr << " or the address-space limit of " << describe_bytes(*address_space)
+              << " (ulimit -v)";
+  std::cerr << '\n';
 }
 
 }  // namespace oasis::cli

@@ -8,6 +8,7 @@
 //                       "0x1p3" are refused;
 //   whole_in(min, max)  a whole number written in digits only: no sign, no exponent, no point,
 //                       so a count or a seed can never wrap around;
+//   as_size(option)     a size with an optional unit (8G), no sign, no "nan";
 // and every message names the rule in the shortest text that reads back the same bound:
 //   --epsilon: 5 is not a number in (0, 1]
 // A program exits with status 2 on such an error, as on every usage error.
@@ -125,6 +126,33 @@ inline CLI::Validator whole_in(std::uint64_t min, std::uint64_t max) {
         return "";
       },
       rule);
+}
+
+// A size in bytes, with an optional unit as CLI11's AsSizeValue reads it ("65536", "8G", "64MiB",
+// "512 kb"): digits, then letters. CLI11 alone takes "-1" as 2^64 - 1 bytes, which turned a
+// size limit off, and "G" as a gigabyte. as_size() attaches this check and the conversion.
+inline CLI::Validator size_text() {
+  const std::string rule = "a size in bytes, or with a unit (64M, 8G)";
+  return CLI::Validator(
+      [rule](std::string& text) -> std::string {
+        const std::size_t digits = text.find_first_not_of("0123456789");
+        std::size_t unit = digits == std::string::npos ? text.size() : digits;
+        const bool has_digits = unit > 0;
+        while (unit < text.size() && text[unit] == ' ')
+          ++unit;
+        while (unit < text.size() && ((text[unit] >= 'a' && text[unit] <= 'z') ||
+                                      (text[unit] >= 'A' && text[unit] <= 'Z')))
+          ++unit;
+        if (!has_digits || unit != text.size()) return detail::quoted(text) + " is not " + rule;
+        return "";
+      },
+      rule);
+}
+
+// Makes `option` a size in bytes: size_text() on the text as given, then AsSizeValue. CLI11
+// runs transforms before checks, the last added first, so both are transforms, in this order.
+inline CLI::Option* as_size(CLI::Option* option) {
+  return option->transform(CLI::AsSizeValue(false))->transform(size_text());
 }
 
 // The largest value of an unsigned option's type, for whole_in(min, max_of<T>()).
