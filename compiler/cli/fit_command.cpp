@@ -20,8 +20,10 @@
 #include "fit/spec_fragment.hpp"
 #include "fit/switching_fit.hpp"
 #include "fit/switching_log.hpp"
+#include "frontend/lexer.hpp"
 #include "pipeline/discrete_catalog.hpp"
 #include "support/atomic_file.hpp"
+#include "text/printable_text.hpp"
 
 namespace oasis::cli {
 namespace {
@@ -421,6 +423,19 @@ int run_depth(const DepthOptions& options) {
 }
 
 // Every fit's -o: where deliver_fragment() also writes the spec fragment.
+// A name the fragment declares (--object, --variables): one identifier of the spec language,
+// so that the printed fragment can never carry text that `check` would read as more spec.
+CLI::Validator spec_identifier() {
+  return CLI::Validator(
+      [](std::string& value) -> std::string {
+        if (frontend::is_identifier(value)) return {};
+        return "\"" + text::printable_excerpt(value) +
+               "\" is not a name of the spec language (a letter or '_', then letters, digits "
+               "or '_'; not a keyword)";
+      },
+      "NAME");
+}
+
 void add_fragment_output(CLI::App& fit, std::string& path) {
   fit.add_option(
       "-o,--output", path,
@@ -510,11 +525,13 @@ CommandRunner add_fit_command(CLI::App& app) {
       ->delimiter(',')
       ->check(real_in(non_negative(1000.0)));
   dn->add_option("--object", depth->object, "The object the fragment declares")
-      ->capture_default_str();
+      ->capture_default_str()
+      ->check(spec_identifier());
   dn->add_option("--variables", depth->variables,
                  "The continuous variables the object's position is (comma-separated)")
       ->delimiter(',')
-      ->capture_default_str();
+      ->capture_default_str()
+      ->check(spec_identifier());
   add_fragment_output(*dn, depth->output);
   dn->add_option("--max-errors", depth->max_errors, "Stop after this many errors")
       ->capture_default_str()

@@ -320,6 +320,15 @@ std::string_view describe(TokenKind kind) {
   return "token";
 }
 
+bool is_identifier(std::string_view text) {
+  if (text.empty() || !is_identifier_start(text.front())) return false;
+  for (const char c : text)
+    if (!is_identifier_char(c)) return false;
+  for (const Keyword& keyword : kKeywords)
+    if (keyword.spelling == text) return false;
+  return true;
+}
+
 std::vector<Token> lex(FileId file, DiagnosticEngine& diagnostics) {
   return Lexer(file, diagnostics).run();
 }

@@ -114,6 +114,55 @@ Breaks with_scale(const GridGeometry& geometry, const Breaks& mandatory, double 
   return breaks;
 }
 
+// What a scale makes of the grid, without building its breakpoints: per axis, the widest
+// cell's half-width and the number of cells (as with_scale would cut them). Choosing the scale
+// asks this some hundred times; building up to a budget's worth of exact breakpoints each time
+// took minutes on a domain of [0 .. 1e300] before the grid was even chosen (issue 37).
+struct GridShape {
+  std::vector<Rational> half_widths;
+  std::vector<double> intervals;
+};
+
+GridShape shape_at(const GridGeometry& geometry, const Breaks& mandatory, double scale,
+                   std::size_t max_pieces) {
+  GridShape shape{std::vector<Rational>(geometry.dimension()),
+                  std::vector<double>(geometry.dimension())};
+  for (std::size_t i = 0; i < geometry.dimension(); ++i) {
+    const bool cut = stochastic_somewhere(geometry, i);
+    const double step = cut ? scale * narrowest_unit(geometry, i) : 0;
+    for (auto it = mandatory[i].begin(); std::next(it) != mandatory[i].end(); ++it) {
+      const Rational length = *std::next(it) - *it;
+      const double pieces =
+          cut ? std::min(std::ceil(to_double(length) / step), static_cast<double>(max_pieces))
+              : 1.0;
+      const double count = std::max(1.0, pieces);
+      shape.intervals[i] += count;
+      shape.half_widths[i] = std::max(shape.half_widths[i],
+                                      Rational(length / (2 * Rational(static_cast<long>(count)))));
+    }
+  }
+  return shape;
+}
+
+double shape_cells(const GridShape& shape) {
+  double cells = 1;
+  for (const double intervals : shape.intervals)
+    cells *= intervals;
+  return cells;
+}
+
+double shape_error(const GridGeometry& geometry, const GridShape& shape) {
+  Rational worst = 0;
+  for (const AxisDynamics& action : geometry.actions) {
+    Rational error = cell_error(action, shape.half_widths);
+    for (std::size_t i = 0; i < shape.intervals.size(); ++i)
+      if (action.disturbance[i].kind == Disturbance::Kind::Gaussian)
+        error += gaussian_row_tolerance(static_cast<std::size_t>(shape.intervals[i]));
+    worst = std::max(worst, error);
+  }
+  return to_double(worst);
+}
+
 // The pre-images of every break of axis i under every action that moves i without a
 // disturbance, until closed. False when the budget is passed.
 bool close_under_preimages(const GridGeometry& geometry, Breaks& breaks, std::size_t max_breaks,
@@ -178,12 +227,12 @@ std::optional<GridPartition> partition_grid(const GridGeometry& geometry, const 
   // that meets the target, or, when that needs too many cells, the finest that fits the
   // budget. Bisection on doubles chooses the grid; its ε is then computed exactly.
   auto meets = [&](double scale) {
-    return to_double(partition_error(geometry, with_scale(geometry, mandatory, scale,
-                                                          target.max_cells + 1))) <= target.epsilon;
+    return shape_error(geometry, shape_at(geometry, mandatory, scale, target.max_cells + 1)) <=
+           target.epsilon;
   };
   auto fits = [&](double scale) {
-    return cell_count(with_scale(geometry, mandatory, scale, target.max_cells + 1)) <=
-           target.max_cells;
+    return shape_cells(shape_at(geometry, mandatory, scale, target.max_cells + 1)) <=
+           static_cast<double>(target.max_cells);
   };
   double fine = 0;  // meets the target (a scale of 0 would, with infinitely many cells)
   double coarse = 1;
@@ -195,12 +244,14 @@ std::optional<GridPartition> partition_grid(const GridGeometry& geometry, const 
   }
   double scale = fine > 0 ? fine : coarse;
   if (!fits(scale)) {
+    // Up to the whole domain in one piece per segment: a domain of 1e300 fits only at a
+    // scale near 1e300 (its bound then says how far the budget is from the target).
     double crowded = scale;  // too many cells
     double sparse = scale;
-    while (!fits(sparse) && sparse < 1e6)
+    while (!fits(sparse) && sparse < 1e300)
       sparse *= 2;
-    for (int step = 0; step < 40; ++step) {
-      const double middle = (crowded + sparse) / 2;
+    for (int step = 0; step < 60; ++step) {
+      const double middle = crowded + (sparse - crowded) / 2;
       (fits(middle) ? sparse : crowded) = middle;
     }
     scale = sparse;

@@ -47,7 +47,9 @@ std::string above_target(const ContinuousAbstraction& abstraction, std::size_t m
   return "the cell budget of " + std::to_string(max_cells) + " cells stops the refinement at " +
          std::to_string(abstraction.num_cells()) + " cells with a bound of " +
          short_number(to_double(abstraction.epsilon)) + ", above the target " +
-         short_number(target) + "; raise --max-cells (or the spec's max_cells) to reach it";
+         short_number(target) + "; raise --max-cells (or the spec's max_cells) to reach it" +
+         // Rows of probabilities never differ by more than 1: such a bound guarantees nothing.
+         (to_double(abstraction.epsilon) >= 1 ? " (a bound of 1 or more guarantees nothing)" : "");
 }
 
 // The grid's breakpoints as doubles: a grid abstraction's cells, or the polytope path's box.
@@ -136,7 +138,7 @@ bool partition_by_polytopes(const geom::PolytopeGeometry& geometry, const model:
     // Exact polytope work makes this the long stage: say how far it got every 100 cells, and
     // warn once, at half the budget, if the bound is still above the target.
     const Clock::time_point begun = start;
-    target.progress = [&options, &result, &target, begun, warned = false](
+    target.progress = [&options, &result, &target, begun, last_shown = begun, warned = false](
                           std::size_t cells, std::optional<double> worst) mutable {
       if (options.warn && !warned && worst && cells >= target.max_cells / 2 &&
           *worst > to_double(target.epsilon)) {
@@ -148,8 +150,13 @@ bool partition_by_polytopes(const geom::PolytopeGeometry& geometry, const model:
                                          short_number(options.epsilon) +
                                          ": the refinement may stop above it (--max-cells)");
       }
-      if (!options.progress || cells % 100 != 0) return;
-      const double seconds = std::chrono::duration<double>(Clock::now() - begun).count();
+      if (!options.progress) return;
+      // Every 100 cells, and at least every 2 s: with exact numbers of thousands of digits (a
+      // domain of 1e300) one split can take seconds, and silence would look like a hang.
+      const Clock::time_point now = Clock::now();
+      if (cells % 100 != 0 && now - last_shown < std::chrono::seconds(2)) return;
+      last_shown = now;
+      const double seconds = std::chrono::duration<double>(now - begun).count();
       std::string done = "refining, " + std::to_string(cells) + " polytope cells";
       if (worst) done += ", worst bound " + short_number(*worst);
       options.progress(result.context, done, seconds);

@@ -18,6 +18,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include "support/file_set_journal.hpp"
 #include "support/path_text.hpp"
 
 namespace oasis {
@@ -191,6 +192,9 @@ bool AtomicFile::open(const std::string& path, std::string& error) {
   const bool exists = ::stat(destination_.c_str(), &status) == 0;
   if (exists && (S_ISCHR(status.st_mode) || S_ISFIFO(status.st_mode) || S_ISSOCK(status.st_mode)))
     return open_direct(destination_, error);
+  // First finish a set a killed writer left half replaced (its new files are stale-looking
+  // temporaries that the clean-up below would otherwise delete), then clear the leftovers.
+  repair_interrupted_file_sets(directory_of(destination_));
   remove_stale_temporaries(destination_);
   if (!open_temporary(error)) return false;
   // Held until the rename, so that no other writer's clean-up takes this file for stale.

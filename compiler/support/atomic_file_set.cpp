@@ -2,6 +2,7 @@
 
 #include <atomic>
 #include <cerrno>
+#include <csignal>
 #include <cstring>
 
 #include <sys/stat.h>
@@ -100,24 +101,48 @@ bool AtomicFileSet::commit(std::string& error) {
       return false;
     }
   }
+  // From here on every new file is complete: a run killed during the renames is finished by
+  // the next writer in this folder (file_set_journal.hpp).
+  FileSetJournal journal;
+  if (!write_journal(replaced, journal, error)) {
+    restore(replaced);
+    discard();
+    return false;
+  }
+  const int crash_point = file_set_crash_point_for_testing();
   for (std::size_t i = 0; i < replaced.size(); ++i) {
+    if (static_cast<int>(i) == crash_point) ::raise(SIGKILL);
     if (i < files_.size()) {
       if (!files_[i]->install(error)) {
         restore(replaced);
         discard();
-        return false;
+        return false;  // the journal goes with its destructor, after the old set is back
       }
     } else if (!replaced[i].old_copy.empty()) {
       ::unlink(replaced[i].destination.c_str());
     }
     replaced[i].done = true;
   }
+  journal.finish();
   for (const Replaced& entry : replaced) {
     if (!entry.old_copy.empty()) ::unlink(entry.old_copy.c_str());
   }
   files_.clear();
   removals_.clear();
   return true;
+}
+
+bool AtomicFileSet::write_journal(const std::vector<Replaced>& replaced, FileSetJournal& journal,
+                                  std::string& error) const {
+  std::vector<FileSetEntry> entries;
+  for (std::size_t i = 0; i < replaced.size(); ++i) {
+    if (replaced[i].destination.empty()) continue;  // written directly: nothing to rename
+    FileSetEntry entry{replaced[i].destination, "", replaced[i].old_copy};
+    if (i < files_.size()) entry.temporary = files_[i]->temporary_path();
+    entries.push_back(std::move(entry));
+  }
+  if (entries.empty()) return true;
+  return journal.write(directory_of(entries.front().destination), entries, error);
 }
 
 void AtomicFileSet::discard() {

@@ -8,14 +8,16 @@
 // nothing that can fail for lack of space or a bad folder happens once the first file is in
 // place. It then keeps each existing destination as a hidden hard link, renames the new files
 // in, and, if a rename fails (a destination that became a directory, say), renames the old
-// ones back. SIGINT and SIGTERM wait until the set is in place (interrupt::CommitSection); only
-// SIGKILL or a power cut in that instant can leave a mix.
+// ones back. SIGINT and SIGTERM wait until the set is in place (interrupt::CommitSection). A
+// SIGKILL or a power cut during the renames leaves a journal (file_set_journal.hpp) from which
+// the next writer in that folder finishes the set: a mix lasts only until then.
 
 #include <memory>
 #include <string>
 #include <vector>
 
 #include "support/atomic_file.hpp"
+#include "support/file_set_journal.hpp"
 
 namespace oasis {
 
@@ -35,6 +37,8 @@ class AtomicFileSet {
  private:
   struct Replaced;
   bool keep_old(const std::string& destination, Replaced& replaced, std::string& error);
+  bool write_journal(const std::vector<Replaced>& replaced, FileSetJournal& journal,
+                     std::string& error) const;
   static void restore(const std::vector<Replaced>& replaced);
 
   std::vector<std::unique_ptr<AtomicFile>> files_;

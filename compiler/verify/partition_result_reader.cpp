@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 
 #include "support/mapped_file.hpp"
+#include "text/printable_text.hpp"
 
 namespace oasis::verify {
 namespace {
@@ -74,19 +75,20 @@ class Reader {
     const std::string name = entry["name"].get<std::string>();
     ContextPartition result;
     result.context = find_context(name);
-    const std::string context = "context '" + name + "'";
+    const std::string context = "context '" + text::printable_excerpt(name) + "'";
     if (!entry.contains("partition")) {
       fail(context + " has no \"partition\" (write it with 'oasisc quotient --partition')");
     }
     const json& blocks = entry["partition"];
     if (!blocks.is_array()) fail(context + ": \"partition\" is not an array of blocks");
     if (entry.contains("states") && entry["states"] != model_.num_states()) {
-      fail(context + ": \"states\" is " + entry["states"].dump() + " but the model has " +
-           std::to_string(model_.num_states()) + " states (a different model?)");
+      fail(context + ": \"states\" is " + text::printable_excerpt(entry["states"].dump()) +
+           " but the model has " + std::to_string(model_.num_states()) +
+           " states (a different model?)");
     }
     if (entry.contains("blocks") && entry["blocks"] != blocks.size()) {
-      fail(context + ": \"blocks\" is " + entry["blocks"].dump() + " but \"partition\" lists " +
-           std::to_string(blocks.size()) + " blocks");
+      fail(context + ": \"blocks\" is " + text::printable_excerpt(entry["blocks"].dump()) +
+           " but \"partition\" lists " + std::to_string(blocks.size()) + " blocks");
     }
 
     model::Partition& partition = result.partition;
@@ -119,13 +121,15 @@ class Reader {
       if (model_.contexts[c].name == name) return c;
       names += (c ? ", " : "") + model_.contexts[c].name;
     }
-    fail("the model has no context '" + name + "' (it has: " + names + ")");
+    fail("the model has no context '" + text::printable_excerpt(name) +
+         "' (it has: " + text::printable_excerpt(names, text::kMaxMessageBytes / 2) + ")");
   }
 
   model::StateIndex find_state(const json& item, const std::string& block) const {
     if (item.is_string()) {
       const auto it = by_name_.find(item.get<std::string>());
-      if (it == by_name_.end()) fail(block + ": the model has no state " + item.dump());
+      if (it == by_name_.end())
+        fail(block + ": the model has no state " + text::printable_excerpt(item.dump()));
       return it->second;
     }
     if (item.is_number_unsigned()) {
@@ -136,7 +140,8 @@ class Reader {
       }
       return static_cast<model::StateIndex>(index);
     }
-    fail(block + ": " + item.dump() + " is neither a state name nor a state index");
+    fail(block + ": " + text::printable_excerpt(item.dump()) +
+         " is neither a state name nor a state index");
   }
 
   const model::ExplicitModel& model_;

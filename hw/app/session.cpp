@@ -2,9 +2,7 @@
 
 #include <cstdint>
 #include <filesystem>
-#include <fstream>
 #include <optional>
-#include <sstream>
 #include <stdexcept>
 
 #include "app/go1_link.hpp"
@@ -13,6 +11,7 @@
 #include "camera/camera_error.hpp"
 #include "camera/live_camera.hpp"
 #include "camera/recorded_source.hpp"
+#include "files/input_file.hpp"
 #include "go1/link_error.hpp"
 #include "go1_treat_catalog.hpp"
 #include "oasis/rt/spec_hash.hpp"
@@ -111,20 +110,18 @@ settings::ControllerProfile robot_profile(const std::string& name_or_path) {
 
 namespace {
 
+// The compiler's own limit on a spec (support/limits.hpp): a larger file is not a spec.
+constexpr std::size_t kMaxSpecBytes = std::size_t{16} << 20;
+
 // The spec hash a catalog must carry, or nothing for "any".
 std::optional<std::uint64_t> expected_spec_hash(const std::string& spec_setting) {
   if (spec_setting == settings::kAnyCatalogSpec) return std::nullopt;
   if (spec_setting == settings::kLinkedCatalog) return go1_treat::catalog().spec_hash;
-  std::error_code ignored;
-  if (std::filesystem::exists(spec_setting, ignored) &&
-      !std::filesystem::is_regular_file(spec_setting, ignored))  // a FIFO would block forever
-    throw SetupError("loop.catalog_spec: cannot read " + spec_setting +
-                     ": not a regular file (a directory, FIFO or device)");
-  std::ifstream in(spec_setting, std::ios::binary);
-  std::ostringstream text;
-  if (!(in && text << in.rdbuf()))
-    throw SetupError("loop.catalog_spec: cannot read " + spec_setting);
-  return rt::spec_hash(text.str());
+  // The readers' one rule (common/files/input_file.hpp), with the compiler's limit on specs.
+  std::string reason;
+  const std::optional<std::string> text = files::read_input(spec_setting, kMaxSpecBytes, reason);
+  if (!text) throw SetupError("loop.catalog_spec: cannot read " + spec_setting + ": " + reason);
+  return rt::spec_hash(*text);
 }
 
 }  // namespace

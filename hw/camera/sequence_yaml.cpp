@@ -5,10 +5,8 @@
 #include <charconv>
 #include <cmath>
 #include <filesystem>
-#include <fstream>
 #include <optional>
 #include <span>
-#include <sstream>
 #include <string_view>
 #include <utility>
 
@@ -16,6 +14,7 @@
 
 #include "camera/camera_error.hpp"
 #include "camera/recording_layout.hpp"
+#include "files/input_file.hpp"
 
 namespace oasis::hw::camera {
 
@@ -32,6 +31,8 @@ constexpr std::array<std::string_view, 6> kIntrinsicsKeys = {"fx", "fy",    "cx"
 // Far more than any recording (a day at 30 frames/s is 2.6 million); stops a typo from
 // expanding a frame period into an enormous list.
 constexpr long long kMaxFrameCount = 10'000'000;
+// sequence.yaml is a page of numbers; anything this large is the wrong file.
+constexpr std::size_t kMaxSequenceBytes = std::size_t{1} << 20;
 
 std::string joined(std::span<const std::string_view> words) {
   std::string text;
@@ -101,15 +102,13 @@ void SequenceReader::fail(const YAML::Mark& mark, const std::string& message) co
 }
 
 YAML::Node SequenceReader::load() const {
-  std::error_code ignored;
-  if (std::filesystem::exists(file_, ignored) && !std::filesystem::is_regular_file(file_, ignored))
-    throw CameraError(file_.string() + ": is not a regular file (a FIFO would block forever)");
-  std::ifstream stream(file_);
-  if (!stream) throw CameraError("cannot read " + file_.string());
-  std::ostringstream text;
-  text << stream.rdbuf();
+  // The readers' one rule (common/files/input_file.hpp): no directory, device or silent pipe.
+  std::string reason;
+  const std::optional<std::string> text =
+      files::read_input(file_.string(), kMaxSequenceBytes, reason);
+  if (!text) throw CameraError(file_.string() + ": " + reason);
   try {
-    return YAML::Load(text.str());
+    return YAML::Load(*text);
   } catch (const YAML::ParserException& error) {
     fail(error.mark, "not valid YAML: " + error.msg);
   }

@@ -3,6 +3,8 @@
 #include <atomic>
 #include <csignal>
 
+#include "process/ending_signals.hpp"
+
 namespace oasis::hw::go1 {
 
 namespace {
@@ -14,13 +16,11 @@ void on_stop_signal(int signal_number) {
   received_signal.store(signal_number);
 }
 
+// Every ending signal, SIGHUP too: a closed terminal or ssh session must stop the robot as
+// Ctrl-C does. An ignored SIGHUP (nohup) is taken over all the same: the robot still stands
+// before the program ends, whoever asked.
 void set_disposition(void (*handler)(int)) {
-  struct sigaction action {};
-  action.sa_handler = handler;
-  sigemptyset(&action.sa_mask);
-  action.sa_flags = SA_RESTART;
-  sigaction(SIGINT, &action, nullptr);
-  sigaction(SIGTERM, &action, nullptr);
+  process::install_ending_signal_handler(handler, SA_RESTART, /*keep_ignored=*/false);
 }
 
 }  // namespace

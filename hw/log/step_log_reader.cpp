@@ -1,14 +1,12 @@
 #include "log/step_log_reader.hpp"
 
-#include <cerrno>
-#include <cstring>
 #include <filesystem>
-#include <fstream>
+#include <limits>
 #include <optional>
-#include <sstream>
 
 #include <nlohmann/json.hpp>
 
+#include "files/input_file.hpp"
 #include "log/log_error.hpp"
 #include "log/step_json.hpp"
 #include "text/printable_text.hpp"
@@ -79,20 +77,13 @@ StepLog parse_step_log(std::string_view text, const std::string& name) {
 }
 
 StepLog read_step_log(const std::filesystem::path& path) {
-  // Only a regular file: a directory is no log, and a FIFO nobody writes to would block forever.
-  std::error_code ignored;
-  if (std::filesystem::exists(path, ignored) && !std::filesystem::is_regular_file(path, ignored))
-    throw LogError(log_diagnostic(path.string(), 0, "error",
-                                  "is not a regular file (a directory, FIFO or device), not a "
-                                  "step log"));
-  std::ifstream in(path, std::ios::binary);
-  if (!in)
-    throw LogError(log_diagnostic(path.string(), 0, "error",
-                                  std::string("cannot open: ") + std::strerror(errno)));
-  std::ostringstream text;
-  text << in.rdbuf();
-  if (in.bad()) throw LogError(log_diagnostic(path.string(), 0, "error", "cannot read"));
-  return parse_step_log(text.str(), path.string());
+  // The readers' one rule (common/files/input_file.hpp): a directory or device is refused, a
+  // pipe nobody writes to too, after its grace period.
+  std::string reason;
+  const std::optional<std::string> text =
+      files::read_input(path.string(), std::numeric_limits<std::size_t>::max(), reason);
+  if (!text) throw LogError(log_diagnostic(path.string(), 0, "error", reason));
+  return parse_step_log(*text, path.string());
 }
 
 }  // namespace oasis::hw::log

@@ -2,11 +2,12 @@
 
 #include "settings/schema_reader.hpp"
 
-#include <cerrno>
-#include <cstring>
+#include <cstddef>
 #include <filesystem>
-#include <fstream>
-#include <sstream>
+#include <optional>
+#include <utility>
+
+#include "files/input_file.hpp"
 
 namespace oasis::hw::settings::detail {
 
@@ -33,10 +34,11 @@ std::string in_quotes(std::string_view text) {
 
 std::string what_node_is(const YAML::Node& node) {
   switch (node.Type()) {
+    // "got a list" after "expected a list of ..." would read as a contradiction: say what is off.
     case YAML::NodeType::Sequence:
-      return "a list";
+      return node.size() == 0 ? "an empty list" : "a list";
     case YAML::NodeType::Map:
-      return "a mapping";
+      return node.size() == 0 ? "an empty mapping" : "a mapping";
     case YAML::NodeType::Scalar:
       return in_quotes(node.Scalar());
     default:
@@ -62,26 +64,22 @@ Diagnostic at_mark(const YAML::Mark& mark, const std::vector<std::string>& lines
   return diagnostic;
 }
 
+namespace {
+// Settings, scenarios and profiles are written by hand: past this it is the wrong file.
+constexpr std::size_t kMaxSettingsBytes = std::size_t{16} << 20;
+}  // namespace
+
 std::string read_yaml_file(const std::filesystem::path& file) {
   const std::string name = file.string();
   std::error_code ignored;
   if (!std::filesystem::exists(file, ignored))
     throw SettingsError(name, {{0, 0, "", "no such settings file", {}}});
-  if (std::filesystem::is_directory(file, ignored))
-    throw SettingsError(name, {{0, 0, "", "is a directory, not a settings file", {}}});
-  // A FIFO nobody writes to would block the open below forever.
-  if (!std::filesystem::is_regular_file(file, ignored))
-    throw SettingsError(
-        name,
-        {{0, 0, "", "is not a regular file (a FIFO, socket or device), not a settings file", {}}});
-  std::ifstream in(file, std::ios::binary);
-  std::ostringstream text;
-  if (in) text << in.rdbuf();
-  if (!in || in.bad())
-    throw SettingsError(
-        name,
-        {{0, 0, "", std::string("cannot read the settings file: ") + std::strerror(errno), {}}});
-  return text.str();
+  // The readers' one rule (common/files/input_file.hpp): a directory or device is refused, and
+  // a pipe nobody writes to too, after its grace period (`--config <(...)` works).
+  std::string reason;
+  std::optional<std::string> text = files::read_input(name, kMaxSettingsBytes, reason);
+  if (!text) throw SettingsError(name, {{0, 0, "", reason + ", not a settings file", {}}});
+  return std::move(*text);
 }
 
 }  // namespace oasis::hw::settings::detail

@@ -14,6 +14,7 @@
 #include <utility>
 #include <vector>
 
+#include <yaml-cpp/depthguard.h>  // YAML::DeepRecursion: yaml.h does not include it
 #include <yaml-cpp/yaml.h>
 
 #include "settings/checks.hpp"
@@ -432,6 +433,16 @@ void parse_with_schema(std::string_view yaml_text, std::string_view file_name, V
   YAML::Node document;
   try {
     document = YAML::Load(std::string(yaml_text));
+  } catch (const YAML::DeepRecursion& e) {
+    // yaml-cpp's own text for this is "bad file", and its mark points past the nesting (at the
+    // end of what it scanned ahead), so the error names the file only.
+    throw SettingsError(file, {{0,
+                                0,
+                                "",
+                                "invalid YAML: nested " + std::to_string(e.depth()) +
+                                    " levels deep, past what the YAML reader allows; settings "
+                                    "are a few levels deep",
+                                {}}});
   } catch (const YAML::Exception& e) {
     throw SettingsError(file, {at_mark(e.mark, split_lines(yaml_text), "invalid YAML: " + e.msg)});
   }

@@ -28,6 +28,8 @@ import subprocess
 import sys
 import tempfile
 
+from probe_harness import report, run_probe, snapshot, write_bytes
+
 # Values no number option may take, whatever its range; and values that wrap an unsigned one.
 NOT_A_NUMBER = ["nan", "NaN", "inf", "-inf", "1e999", "0x10", "", "1,5", "twelve", "5\x01"]
 NOT_A_COUNT = ["-1", "-0", "1.5", "1e3", "+3", "18446744073709551616"]
@@ -95,6 +97,11 @@ def other_probes(paths):
     yield [g, "sim", "--trials", "1", "--steps", "1", "--plots", "/proc/oasis-x"], 1, "--plots"
     yield [g, "score", paths.empty_log], 1, paths.empty_log
     yield [c, "fit", "noise", fit_spec, all_wrong], 1, "every label is wrong"
+    # A name printed into a spec fragment must be one name of the spec language (issue 37).
+    depth_csv = os.path.join(paths.source_dir, "tests/data/fit/calibration.csv")
+    for option, name in [("--object", "bad name; } mdp x {"), ("--object", "mdp"),
+                         ("--variables", "x1,y 1"), ("--object", "")]:
+        yield [c, "fit", "depth-noise", depth_csv, option, name], 2, option
     line = os.path.join(paths.source_dir, "tests/data/gaussian_line.oasis")
     yield [c, "quotient", line], 1, "oasisc compile"
     # An empty value never means the default (it did for every string option).
@@ -132,6 +139,9 @@ def other_probes(paths):
         yield [g, "score", odd], score_status, odd
         yield [g, "sim", "--trials", "1", "--steps", "1", "--controllers", odd + ".yaml"], 1, odd
     yield [g, "run", "--dry-run", "--config", paths.fifo], 1, paths.fifo
+    # oasis-sim read --spec with a blocking open() first (issue 37): the front end's reader now.
+    yield [s, "table1", "--steps", "1", "--seeds", "1", "--spec", paths.fifo], 1, paths.fifo
+    yield [s, "table1", "--steps", "1", "--seeds", "1", "--spec", paths.folder], 1, paths.folder
     yield [g, "sim", "--trials", "1", "--steps", "1", "--scenario", paths.fifo], 1, paths.fifo
     yield [s, "table1", "--no-such-option"], 2, "--no-such-option"
     yield [s, "nonsense"], 2, "A subcommand is required"
@@ -180,6 +190,10 @@ def reading_probes(paths):
     yield [g, "run", "--dry-run", "--fast", "--source", "recorded:" + paths.bomb_recording], 1, \
         "declares 60000x60000"
     yield [g, "score", paths.long_log], 1, "bytes)"
+    yield [c, "verify", os.path.join(paths.source_dir, "specs/discrete_tracking.oasis"),
+           paths.long_name_partition], 1, "(10000000 bytes)"
+    yield [g, "run", "--dry-run", "--config", paths.deep_yaml], 1, "levels deep"
+    yield [g, "run", "--dry-run", "--config", paths.no_bands_yaml], 1, "got an empty list"
     yield [g, "score", paths.nul_log], 1, paths.nul_log
     yield [c, "check", paths.long_aut], 1, paths.long_aut
     yield [c, "fit", "noise", os.path.join(paths.source_dir, "tests/data/fit/tracking.oasis"),
@@ -201,16 +215,6 @@ def probes(paths):
     yield from resource_probes(paths)
     yield from reading_probes(paths)
     yield from writing_probes(paths)
-
-
-# Text that only a crash or a leak of internals prints.
-CRASH_TEXT = ["json.exception", "terminate called", "Assertion", "AddressSanitizer",
-              "runtime error:", "Segmentation fault", "internal error", "what():"]
-
-
-def write_bytes(path, data):
-    with open(path, "wb") as out:
-        out.write(data)
 
 
 def compile_json(paths, spec_name, model_name):
@@ -289,6 +293,13 @@ def prepare_inputs(paths):
     write_bytes(paths.long_aut, b'des (0,1,2)\n(0,"' + b"a" * 10_000_000 + b'",1 x)\n')
     paths.long_csv = os.path.join(root, "long.csv")
     write_bytes(paths.long_csv, b"t,true_state,observed_state\n0," + b"s" * 10_000_000 + b",s1\n")
+    paths.long_name_partition = os.path.join(root, "long_name.json")
+    write_bytes(paths.long_name_partition, b'{"contexts": [{"name": "' + b"c" * 10_000_000 +
+                b'", "partition": [["s1"]]}]}')
+    paths.deep_yaml = os.path.join(root, "deep.yaml")
+    write_bytes(paths.deep_yaml, b"[" * 5000 + b"]" * 5000 + b"\n")
+    paths.no_bands_yaml = os.path.join(root, "no_bands.yaml")
+    write_bytes(paths.no_bands_yaml, b"perception:\n  segmentation:\n    red: []\n")
     paths.nul_yaml = os.path.join(root, "nul.yaml")
     write_bytes(paths.nul_yaml, b"loop:\n  rate_hz: ab\x00cd\n")
 
@@ -323,20 +334,6 @@ def prepare_inputs(paths):
     os.mkdir(os.path.join(quotients, victim))
 
 
-def snapshot(folder):
-    """Every file under `folder` with its bytes: what the probes must leave as it was."""
-    files = {}
-    for directory, _, names in os.walk(folder):
-        for name in names:
-            path = os.path.join(directory, name)
-            if os.path.isfile(path):
-                with open(path, "rb") as data:
-                    files[path] = data.read()
-            else:
-                files[path] = None
-    return files
-
-
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("--oasisc", required=True)
@@ -368,24 +365,9 @@ def main():
         inputs_before = snapshot(scratch)
         for arguments, expected, culprit in probes(paths):
             count += 1
-            shown = " ".join(repr(a) if (not a or " " in a or not a.isprintable()) else a
-                             for a in [os.path.basename(arguments[0])] + arguments[1:])
-            try:
-                result = subprocess.run(arguments, capture_output=True, timeout=60,
-                                        stdin=subprocess.DEVNULL)
-            except subprocess.TimeoutExpired:
-                failures.append(f"{shown}: hung (60 s)")
-                continue
-            output = (result.stdout + result.stderr).decode("utf-8", "replace")
-            if result.returncode != expected:
-                failures.append(f"{shown}: status {result.returncode}, expected {expected}\n"
-                                f"{output}")
-            elif culprit not in output:
-                failures.append(f"{shown}: the message does not name {culprit}\n{output}")
-            elif any(text in output for text in CRASH_TEXT):
-                failures.append(f"{shown}: the output holds crash text\n{output[:600]}")
-            elif len(output) > 2000 or max(len(l) for l in output.splitlines() or [""]) > 400:
-                failures.append(f"{shown}: the message is longer than a few lines\n{output[:600]}")
+            failure = run_probe(arguments, expected, culprit)
+            if failure:
+                failures.append(failure)
         after = sorted(os.listdir(scratch))
         if after != before:
             failures.append(f"refused commands left {sorted(set(after) - set(before))} behind")
@@ -396,10 +378,7 @@ def main():
     for outside in ["/tmp/oasis-hostile-evil.cpp", "/tmp/oasis-hostile-evil.hpp"]:
         if os.path.exists(outside):
             failures.append(f"--basename wrote {outside}, outside the output folder")
-    for failure in failures:
-        print("FAILED:", failure)
-    print(f"{count} probes, {len(failures)} failed")
-    return 1 if failures else 0
+    return report(failures, count)
 
 
 if __name__ == "__main__":

@@ -4,12 +4,11 @@
 
 #include <cstdint>
 #include <filesystem>
-#include <fstream>
 #include <iostream>
 #include <new>
 #include <optional>
-#include <sstream>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include <CLI/CLI.hpp>
@@ -56,14 +55,6 @@ struct Table1Arguments {
   std::string plot_dir;
 };
 
-std::optional<std::string> read_file(const std::string& path) {
-  std::ifstream file(path, std::ios::binary);
-  if (!file) return std::nullopt;
-  std::ostringstream text;
-  text << file.rdbuf();
-  return text.str();
-}
-
 int run_table1_command(const Table1Arguments& arguments) {
   table1::Table1Options options;
   options.seeds = arguments.seeds;
@@ -101,15 +92,15 @@ int run_table1_command(const Table1Arguments& arguments) {
     options.declared.push_back(*declared);
   }
 
-  const std::optional<std::string> text = read_file(arguments.spec);
-  if (!text) {
-    std::cerr << "oasis-sim: cannot read " << arguments.spec << "\n";
-    return 1;
-  }
+  // The spec is read once, by the front end's reader (MappedFile: a FIFO nobody writes to is
+  // refused after its grace period, and `--spec <(cat spec.oasis)` works), and the catalog's
+  // hash is taken from the very bytes it parsed.
   SourceManager sources;
   DiagnosticEngine diagnostics(sources, std::cerr);
+  const FileId spec_file = sources.num_files();
   const auto ir = frontend::load_spec(arguments.spec, sources, diagnostics);
   if (!ir) return 1;
+  const std::string_view spec_text = sources.file(spec_file).text();
   auto model = model::explore(*ir, diagnostics);
   if (!model) return 1;
   std::vector<std::string> context_names;
@@ -118,7 +109,7 @@ int run_table1_command(const Table1Arguments& arguments) {
   std::vector<std::string> state_names;
   for (std::uint32_t s = 0; s < model->num_states(); ++s)
     state_names.push_back(model->states.name(s));
-  const table1::Table1Experiment experiment(std::move(*model), rt::spec_hash(*text));
+  const table1::Table1Experiment experiment(std::move(*model), rt::spec_hash(spec_text));
 
   namespace fs = std::filesystem;
   std::string error;

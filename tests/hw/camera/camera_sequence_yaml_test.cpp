@@ -1,5 +1,6 @@
 // sequence.yaml: what a valid file means, that written text reads back exactly, and that each
 // kind of mistake is reported with the file, line and column and names the key.
+#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -178,7 +179,21 @@ TEST(SequenceYaml, MissingFileIsNamed) {
     read_sequence_yaml(folder / "sequence.yaml");
     FAIL() << "no error";
   } catch (const CameraError& error) {
-    EXPECT_EQ(std::string(error.what()), "cannot read " + (folder / "sequence.yaml").string());
+    EXPECT_EQ(std::string(error.what()),
+              (folder / "sequence.yaml").string() + ": no such file or directory");
+  }
+}
+
+// The readers' one rule (common/files/input_file.hpp): a folder or a pipe nobody writes to is
+// named as such, never waited on.
+TEST(SequenceYaml, AFolderIsNamedAsOne) {
+  const TemporaryFolder folder;
+  std::filesystem::create_directory(folder / "sequence.yaml");
+  try {
+    read_sequence_yaml(folder / "sequence.yaml");
+    FAIL() << "no error";
+  } catch (const CameraError& error) {
+    EXPECT_EQ(std::string(error.what()), (folder / "sequence.yaml").string() + ": is a directory");
   }
 }
 

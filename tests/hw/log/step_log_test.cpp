@@ -198,7 +198,7 @@ TEST(StepLogReader, MissingFileIsALogError) {
     FAIL() << "expected LogError";
   } catch (const LogError& error) {
     EXPECT_EQ(std::string(error.what()),
-              "/nonexistent-oasis-dir/run.jsonl: error: cannot open: No such file or directory");
+              "/nonexistent-oasis-dir/run.jsonl: error: no such file or directory");
   }
 }
 

@@ -141,6 +141,15 @@ TEST(SettingsErrors, HsvOutOfOpenCvsRanges) {
                "perception.segmentation.red[0]: missing high");
   EXPECT_ERROR("perception:\n  segmentation:\n    red: []\n",
                "perception.segmentation.red: expected a list of HSV bands");
+  // "expected a list ..., got a list" read as a contradiction (issue 37): the list is empty.
+  EXPECT_ERROR("perception:\n  segmentation:\n    red: []\n", "got an empty list");
+}
+
+TEST(SettingsErrors, DeepNestingIsNamed) {
+  // yaml-cpp stops at its depth guard with the text "bad file" (issue 37): say what it is.
+  const std::string deep = std::string(3000, '[') + std::string(3000, ']') + "\n";
+  EXPECT_ERROR(deep, "t.yaml: error: invalid YAML: nested 500 levels deep");
+  EXPECT_EQ(error_of(deep).find("bad file"), std::string::npos) << error_of(deep);
 }
 
 TEST(SettingsErrors, ActionFasterThanTheLimitsIsAnError) {

@@ -267,5 +267,89 @@ TEST(CompileKill, OneOutputFileIsOldOrNewAndNothingStays) {
   EXPECT_EQ(others(folder, "model.aut"), std::vector<std::string>{});
 }
 
+// Starts `oasisc export MODEL --format prism -o BASE` (a set of files: .tra, .lab, .srew).
+pid_t start_prism_export(const fs::path& model, const fs::path& base) {
+  const pid_t pid = ::fork();
+  if (pid == 0) {
+    const int null = ::open("/dev/null", O_WRONLY);
+    ::dup2(null, 1);
+    ::dup2(null, 2);
+    ::execl(OASISC_PATH, OASISC_PATH, "export", model.c_str(), "--format", "prism", "-o",
+            base.c_str(), "--progress", "never", static_cast<char*>(nullptr));
+    ::_exit(127);
+  }
+  return pid;
+}
+
+// The files of the set written to BASE (model.tra, model.lab, ...), without hidden ones.
+Files visible_set(const fs::path& folder) {
+  Files files = snapshot(folder);
+  std::erase_if(files, [](const auto& entry) { return entry.first.rfind("model.", 0) != 0; });
+  return files;
+}
+
+// A set of files killed at random points: after the next oasisc run that writes in the folder
+// (here, an export to another name), the set is wholly the old one or wholly the new one, and
+// nothing hidden is left: a kill in the middle of the renames is finished from the journal
+// (support/file_set_journal.hpp; the deterministic kill after each rename is in
+// atomic_file_set_test).
+TEST(CompileKill, AFileSetIsWholeAfterTheNextRun) {
+  const test::ScratchDirectory scratch("oasis_set_kill");
+  const fs::path folder = scratch.path() / "out";
+  fs::create_directories(folder);
+  const fs::path small = scratch.path() / "small.aut";
+  const fs::path big = scratch.path() / "big.aut";
+  std::ofstream(small, std::ios::binary) << chain_aut(3);
+  std::ofstream(big, std::ios::binary) << chain_aut(300000);
+  const fs::path base = folder / "model";
+  const fs::path other = folder / "other";
+
+  ASSERT_EQ(wait_for(start_prism_export(small, base)), 0);
+  const auto begin = std::chrono::steady_clock::now();
+  ASSERT_EQ(wait_for(start_prism_export(big, base)), 0);
+  const double full =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
+  const Files new_set = visible_set(folder);
+  ASSERT_EQ(wait_for(start_prism_export(small, base)), 0);
+  const Files old_set = visible_set(folder);
+  ASSERT_GE(old_set.size(), 2U);
+  ASSERT_NE(old_set, new_set);
+
+  const unsigned seed = 20261128;
+  std::mt19937 random(seed);
+  int saw_old = 0;
+  int saw_new = 0;
+  for (int trial = 0; trial < 20; ++trial) {
+    if (visible_set(folder) != old_set) {
+      ASSERT_EQ(wait_for(start_prism_export(small, base)), 0);
+    }
+    const pid_t pid = start_prism_export(big, base);
+    const double delay = std::uniform_real_distribution<double>(0.0, 1.1 * full)(random);
+    std::this_thread::sleep_for(std::chrono::duration<double>(delay));
+    ::kill(pid, SIGKILL);
+    wait_for(pid);
+    ASSERT_EQ(wait_for(start_prism_export(small, other)), 0);  // the next run in the folder
+    const Files now = visible_set(folder);
+    ASSERT_TRUE(now == old_set || now == new_set)
+        << "trial " << trial << " (killed after " << delay << " s): a mix of two sets";
+    (now == old_set ? saw_old : saw_new) += 1;
+    // Killed before its renames began, a writer may leave complete temporaries of its own
+    // files (removed by the next write of that output); never a journal.
+    for (const auto& entry : fs::directory_iterator(folder)) {
+      const std::string name = entry.path().filename().string();
+      EXPECT_TRUE(name.rfind("model.", 0) == 0 || name.rfind("other.", 0) == 0 ||
+                  (name.rfind(".model.", 0) == 0 && name.find(".tmp.") != std::string::npos))
+          << "trial " << trial << ": " << name << " left behind";
+    }
+  }
+  std::cout << "seed " << seed << ": old set " << saw_old << " times, new set " << saw_new
+            << " times\n";
+  ASSERT_EQ(wait_for(start_prism_export(small, base)), 0);
+  for (const auto& entry : fs::directory_iterator(folder)) {
+    const std::string name = entry.path().filename().string();
+    EXPECT_TRUE(name.rfind("model.", 0) == 0 || name.rfind("other.", 0) == 0) << name;
+  }
+}
+
 }  // namespace
 }  // namespace oasis

@@ -12,10 +12,14 @@
 #include <string>
 
 #include <gtest/gtest.h>
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
 #include "../../support/file_snapshot.hpp"
 #include "../../support/run_oasisc.hpp"
 #include "../../support/scratch_directory.hpp"
+#include "support/file_set_journal.hpp"
 
 namespace oasis {
 namespace {
@@ -123,6 +127,65 @@ TEST(AtomicFileSet, QuotientOfSeveralContextsKeepsTheOldFilesWhole) {
   const auto second = test::run_oasisc("quotient '" + spec + "' --format aut -o '" + out + "'");
   EXPECT_EQ(second.status, 1) << second.output;
   EXPECT_EQ(snapshot(scratch.path()), before);
+}
+
+// A writer killed after each number of renames (as SIGKILL would: the test hook raises it) leaves
+// a journal; the next writer in the folder finishes the set, so that it is wholly the new one and
+// nothing hidden is left (issue 37: 3 of 60 random kills used to leave a mix for good).
+TEST(AtomicFileSet, ASetKilledDuringItsRenamesIsFinishedByTheNextWriter) {
+  const test::ScratchDirectory scratch("oasis_file_set_kill");
+  std::string error;
+  for (int renames = 0; renames <= 4; ++renames) {
+    SCOPED_TRACE("killed after " + std::to_string(renames) + " renames");
+    fs::remove_all(scratch.path());
+    fs::create_directories(scratch.path());
+    ASSERT_TRUE(write_set(scratch.path(), "old", error)) << error;
+    std::ofstream(scratch.path() / "d.txt") << "removed by the new set";
+    const pid_t child = ::fork();
+    ASSERT_GE(child, 0);
+    if (child == 0) {
+      set_file_set_crash_point_for_testing(renames);
+      AtomicFileSet set;
+      for (const char* name : {"a.txt", "b.txt", "c.txt"}) {
+        AtomicFile* file = set.add((scratch.path() / name).string(), error);
+        if (file == nullptr) ::_exit(3);
+        file->append(std::string("new ") + name);
+      }
+      set.remove_at_commit((scratch.path() / "d.txt").string());
+      ::_exit(set.commit(error) ? 0 : 4);
+    }
+    int status = 0;
+    ASSERT_EQ(::waitpid(child, &status, 0), child);
+    if (renames < 4) {
+      ASSERT_TRUE(WIFSIGNALED(status) && WTERMSIG(status) == SIGKILL) << status;
+      EXPECT_EQ(repair_interrupted_file_sets(scratch.path().string()), 1U);
+    } else {
+      ASSERT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << status;  // all 4 done
+    }
+    // The next writer in the folder (any file) cleans up what repair left to it.
+    AtomicFile other;
+    ASSERT_TRUE(other.open((scratch.path() / "other.txt").string(), error)) << error;
+    other.discard();
+    EXPECT_EQ(snapshot(scratch.path()),
+              (Files{{"a.txt", "new a.txt"}, {"b.txt", "new b.txt"}, {"c.txt", "new c.txt"}}));
+    std::size_t entries = 0;
+    for ([[maybe_unused]] const auto& entry : fs::directory_iterator(scratch.path()))
+      ++entries;
+    EXPECT_EQ(entries, 3U) << "hidden files left";
+  }
+}
+
+// Killed before its journal existed, the old set is whole; the next writer only clears the
+// leftovers.
+TEST(AtomicFileSet, AJournalWithoutItsNameMeansTheOldSetStands) {
+  const test::ScratchDirectory scratch("oasis_file_set_early");
+  std::string error;
+  ASSERT_TRUE(write_set(scratch.path(), "old", error)) << error;
+  const Files before = snapshot(scratch.path());
+  std::ofstream(scratch.path() / ".oasis-file-set.1.1.tmp") << "oasis file set journal 1\n";
+  EXPECT_EQ(repair_interrupted_file_sets(scratch.path().string()), 0U);
+  EXPECT_EQ(snapshot(scratch.path()), before);
+  EXPECT_FALSE(fs::exists(scratch.path() / ".oasis-file-set.1.1.tmp"));
 }
 
 }  // namespace
