@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <functional>
 #include <iostream>
 #include <map>
 #include <sstream>
@@ -279,9 +280,11 @@ std::optional<formats::AutPart> read_own_part(const std::string& path,
   std::string error;
   const bool opened = file.open(path, options.max_bytes, error);
   // Usually every rank fails alike (no such file) and rank 0 says so once; a file that only
-  // some ranks cannot open (not on their machine) is reported by each of them.
-  const std::vector<std::uint64_t> opened_by = communicator.all_gather(opened ? 1 : 0);
-  if (!opened && (communicator.is_root() || opened_by[0] == 1)) {
+  // some ranks cannot open (not on their machine) is reported by each of them. 0: not opened,
+  // else the size the rank sees plus one.
+  const std::vector<std::uint64_t> opened_by =
+      communicator.all_gather(opened ? file.text().size() + 1 : 0);
+  if (!opened && (communicator.is_root() || opened_by[0] != 0)) {
     const std::string where = communicator.is_root()
                                   ? std::string()
                                   : " (rank " + std::to_string(communicator.rank()) + ")";
@@ -289,6 +292,13 @@ std::optional<formats::AutPart> read_own_part(const std::string& path,
     std::cerr << buffered.str() << std::flush;
   }
   if (std::find(opened_by.begin(), opened_by.end(), 0) != opened_by.end()) return std::nullopt;
+  // The parts are cut by the size each rank sees: they fit together only if all saw one size.
+  if (std::adjacent_find(opened_by.begin(), opened_by.end(), std::not_equal_to<>()) !=
+      opened_by.end()) {
+    if (communicator.is_root())
+      diagnostics.file_error(path, "the file changed size while being read");
+    return std::nullopt;
+  }
   sender.set_file_bytes(file.text().size());
   const FileId id = sources.add(path, std::move(file));
   bool header_read = false;

@@ -9,12 +9,15 @@
 #include <fcntl.h>
 #include <unistd.h>
 
+#include "process/ending_signals.hpp"
+
 namespace oasis::interrupt {
 namespace {
 
 constexpr int kSlots = 64;
 constexpr std::size_t kMaxPath = 4096;
-constexpr int kMaxDepth = 8;  // staging directories are flat; this only bounds the recursion
+constexpr int kMaxDepth = 8;        // staging directories are flat; this only bounds the recursion
+constexpr int kRemovalRounds = 16;  // see remove_tree_at
 
 enum SlotState : int { kFree = 0, kFilling = 1, kReady = 2 };
 
@@ -59,14 +62,35 @@ void empty_directory(int fd, int depth) {
   }
 }
 
+// Removes the name `name` in `parent` when it is not a directory, keeping the file open. The
+// last unlink of a file whose pages the kernel is still writing out (a catalog file just
+// written and synced) waits for that writeback, which on a slow disk takes seconds: longer
+// than mpirun's second between SIGTERM and SIGKILL, which then left the folder behind. With
+// the file still open, unlink only removes the name; the wait moves to the program's exit,
+// when every name is gone. The descriptor is never closed: the program is about to die.
+bool unlink_keeping_open(int parent, const char* name) {
+  const int keep = ::openat(parent, name, O_RDONLY | O_NOFOLLOW | O_NONBLOCK | O_CLOEXEC);
+  static_cast<void>(keep);  // a file that cannot be opened is still unlinked, waiting or not
+  return ::unlinkat(parent, name, 0) == 0;
+}
+
 bool remove_tree_at(int parent, const char* name, int depth) {
-  if (::unlinkat(parent, name, 0) == 0) return true;
+  if (unlink_keeping_open(parent, name)) return true;
   if (errno != EISDIR || depth > kMaxDepth) return false;
   const int fd = ::openat(parent, name, O_RDONLY | O_DIRECTORY | O_NOFOLLOW | O_CLOEXEC);
   if (fd < 0) return false;
-  empty_directory(fd, depth);
+  // The signal may run this on a thread that does not write while another still does (an
+  // MPI library's thread, a worker): a file it creates once the folder is empty makes the
+  // removal fail, so the folder is emptied again. The writer stops at its next registration
+  // (CleanupPath waits for death once the gate is closed), so a few rounds suffice.
+  bool gone = false;
+  for (int round = 0; round < kRemovalRounds && !gone; ++round) {
+    empty_directory(fd, depth);
+    gone = ::unlinkat(parent, name, AT_REMOVEDIR) == 0;
+    if (!gone && errno != ENOTEMPTY && errno != EEXIST) break;
+  }
   ::close(fd);
-  return ::unlinkat(parent, name, AT_REMOVEDIR) == 0;
+  return gone;
 }
 
 void write_error(const char* text) {
@@ -74,14 +98,20 @@ void write_error(const char* text) {
   static_cast<void>(ignored);
 }
 
-[[noreturn]] void clean_up_and_die(int signal_number) {
+// Called with the gate closed (-1): no slot changes meanwhile.
+bool remove_registered_paths() {
   bool removed = false;
   for (Slot& slot : slots) {
     if (slot.state.load(std::memory_order_acquire) != kReady) continue;
-    removed =
-        (slot.directory ? remove_tree_at(AT_FDCWD, slot.path, 0) : ::unlink(slot.path) == 0) ||
-        removed;
+    removed = (slot.directory ? remove_tree_at(AT_FDCWD, slot.path, 0)
+                              : unlink_keeping_open(AT_FDCWD, slot.path)) ||
+              removed;
   }
+  return removed;
+}
+
+[[noreturn]] void clean_up_and_die(int signal_number) {
+  const bool removed = remove_registered_paths();
   if (removed) {
     write_error(program_invocation_short_name);
     write_error(": interrupted: removed the unfinished output\n");
@@ -116,17 +146,8 @@ void on_signal(int signal_number) {
 }  // namespace
 
 void install_cleanup_handlers() {
-  struct sigaction action {};
-  action.sa_handler = on_signal;
-  sigemptyset(&action.sa_mask);
-  for (const int signal_number : {SIGINT, SIGTERM, SIGHUP})
-    sigaddset(&action.sa_mask, signal_number);
-  for (const int signal_number : {SIGINT, SIGTERM, SIGHUP}) {
-    struct sigaction previous {};
-    ::sigaction(signal_number, nullptr, &previous);
-    if (previous.sa_handler == SIG_IGN) continue;  // started under nohup, or told to ignore it
-    ::sigaction(signal_number, &action, nullptr);
-  }
+  // Started under nohup, SIGHUP stays ignored: the person who started the run asked for that.
+  process::install_ending_signal_handler(on_signal, 0, /*keep_ignored=*/true);
 }
 
 CleanupPath::CleanupPath(const std::string& path, Kind kind) {
@@ -179,6 +200,12 @@ CommitSection::~CommitSection() {
   if (gate.fetch_sub(1) != 1) return;
   const int signal_number = pending_signal.exchange(0);
   if (signal_number != 0) on_signal(signal_number);
+}
+
+bool remove_unfinished_output_now() {
+  int state = 0;
+  if (!gate.compare_exchange_strong(state, -1)) return false;  // committing, or already dying
+  return remove_registered_paths();
 }
 
 std::size_t registered_paths() {

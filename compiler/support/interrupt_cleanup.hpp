@@ -54,6 +54,13 @@ class CommitSection {
   CommitSection& operator=(const CommitSection&) = delete;
 };
 
+// For a handler of a fatal signal that ends the program with _exit (mapped_file.cpp's SIGBUS
+// handler): removes every registered path now, async-signal-safely, and returns whether any
+// was. From then on no commit starts and no path registers, as after an ending signal. While
+// another thread is committing, nothing is removed: its staged paths are left to the next
+// writer, as after SIGKILL.
+bool remove_unfinished_output_now();
+
 // How many slots are in use (for tests).
 [[nodiscard]] std::size_t registered_paths();
 

@@ -47,6 +47,7 @@ std::string_view SourceFile::line_text(SourceOffset offset) const {
 }
 
 FileId SourceManager::add(std::string path, MappedFile contents) {
+  contents.shrink_if_testing(path);  // every reader of a mapped file passes here before reading
   files_.emplace_back(std::move(path), std::move(contents));
   return static_cast<FileId>(files_.size() - 1);
 }
