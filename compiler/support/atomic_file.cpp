@@ -54,15 +54,6 @@ std::string unique_suffix(unsigned attempt) {
   return suffix;
 }
 
-// Makes the rename itself durable. Best effort: some file systems refuse fsync on a
-// directory, and the data is already safe.
-void sync_directory(const std::string& directory) {
-  const int fd = ::open(directory.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
-  if (fd < 0) return;
-  ::fsync(fd);
-  ::close(fd);
-}
-
 // The descriptor that `path` names without being a file of its own: "-" is standard output,
 // and /dev/stdout, /dev/fd/N or /proc/self/fd/N are the calling process's descriptors.
 // Opening such a name again would start a second file offset (overwriting what was already

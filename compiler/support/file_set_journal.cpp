@@ -58,13 +58,6 @@ bool write_all(int fd, std::string_view bytes) {
   return true;
 }
 
-void sync_folder(const std::string& directory) {
-  const int fd = ::open(directory.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
-  if (fd < 0) return;
-  ::fsync(fd);
-  ::close(fd);
-}
-
 bool read_all(int fd, std::string& text) {
   char buffer[1 << 14];
   for (;;) {
@@ -142,7 +135,7 @@ bool repair_one(const std::string& directory, const std::string& name) {
   const bool ours = read_all(fd, text) && parse_journal(text, directory, entries);
   if (ours) {
     finish_set(entries);
-    sync_folder(directory);
+    sync_directory(directory);
     ::unlink(path.c_str());
     std::cerr << program_invocation_short_name << ": note: finished replacing " << entries.size()
               << (entries.size() == 1 ? " file" : " files") << " beside '"
@@ -184,7 +177,7 @@ bool FileSetJournal::write(const std::string& directory, const std::vector<FileS
     ::close(fd);
     return false;
   }
-  sync_folder(directory);
+  sync_directory(directory);
   path_ = name;
   fd_ = fd;
   return true;

@@ -13,11 +13,11 @@
 #include <utility>
 
 #include <fcntl.h>
-#include <poll.h>
 #include <sys/mman.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include "files/input_file.hpp"
 #include "support/interrupt_cleanup.hpp"
 #include "text/printable_text.hpp"
 
@@ -123,35 +123,8 @@ class FileDescriptor {
   int fd_;
 };
 
-// strerror() capitalises; our diagnostics are lower-case fragments.
-std::string system_error_text(int code) {
-  std::string text = std::strerror(code);
-  if (!text.empty() && text[0] >= 'A' && text[0] <= 'Z')
-    text[0] = static_cast<char>(text[0] - 'A' + 'a');
-  return text;
-}
-
 std::string too_large_message(std::size_t max_bytes) {
   return "file is larger than the limit of " + std::to_string(max_bytes) + " bytes";
-}
-
-// How long a FIFO (a named pipe, or `<(command)`) may stay silent before it counts as one that
-// nobody writes to: a writer that is there delivers at once; none would block open() forever.
-constexpr int kPipeWaitMs = 5000;
-
-// A pipe is usable once its writer has written or closed; false (with `error`) if neither
-// happened within kPipeWaitMs.
-bool wait_for_writer(int fd, std::string& error) {
-  pollfd waiting{fd, POLLIN, 0};
-  for (;;) {
-    const int ready = ::poll(&waiting, 1, kPipeWaitMs);
-    if (ready > 0) return true;
-    if (ready < 0 && errno == EINTR) continue;
-    error = ready == 0 ? "is a pipe that nobody writes to (nothing arrived in " +
-                             std::to_string(kPipeWaitMs / 1000) + " s)"
-                       : system_error_text(errno);
-    return false;
-  }
 }
 
 }  // namespace
@@ -196,24 +169,11 @@ void MappedFile::release_pages_before(std::size_t bytes) const {
 
 bool MappedFile::open(const std::string& path, std::size_t max_bytes, std::string& error) {
   release();
-  // Non-blocking, so that opening a FIFO nobody writes to does not wait forever.
-  FileDescriptor fd(::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC));
-  if (fd.get() < 0) {
-    error = system_error_text(errno);
-    return false;
-  }
+  // The readers' one rule (common/files/input_file.hpp): a directory, device or socket is
+  // refused, and a pipe is read once its writer has written (refused after 5 s of silence).
   struct stat info {};
-  if (::fstat(fd.get(), &info) != 0) {
-    error = system_error_text(errno);
-    return false;
-  }
-  if (S_ISDIR(info.st_mode)) {
-    error = "is a directory";
-    return false;
-  }
-  if (S_ISFIFO(info.st_mode) && !wait_for_writer(fd.get(), error)) return false;
-  // Reading blocks again from here: a pipe with a writer delivers what it writes.
-  ::fcntl(fd.get(), F_SETFL, ::fcntl(fd.get(), F_GETFL) & ~O_NONBLOCK);
+  FileDescriptor fd(files::open_input(path, info, error));
+  if (fd.get() < 0) return false;
   if (S_ISREG(info.st_mode) && info.st_size > 0) {
     const auto size = static_cast<std::size_t>(info.st_size);
     if (size > max_bytes) {
@@ -230,13 +190,13 @@ bool MappedFile::open(const std::string& path, std::size_t max_bytes, std::strin
       return true;
     }
   }
-  // Pipes, character devices and empty files: read what there is, up to the limit.
+  // Pipes and empty files: read what there is, up to the limit.
   char buffer[1 << 16];
   for (;;) {
     const ssize_t count = ::read(fd.get(), buffer, sizeof buffer);
     if (count < 0) {
       if (errno == EINTR) continue;
-      error = system_error_text(errno);
+      error = files::reason_of_errno(errno);
       owned_.clear();
       return false;
     }

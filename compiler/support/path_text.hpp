@@ -1,9 +1,13 @@
 #pragma once
-// Two small helpers of the output writers (AtomicFile, AtomicFileSet, StagedDirectory): an
-// errno as the lower-case fragment our messages use, and the directory part of a path.
+// Small helpers of the output writers (AtomicFile, AtomicFileSet and its journal,
+// StagedDirectory): an errno as the lower-case fragment our messages use, the directory part of a
+// path, and making a rename in a directory durable.
 
 #include <cstring>
 #include <string>
+
+#include <fcntl.h>
+#include <unistd.h>
 
 namespace oasis {
 
@@ -22,6 +26,15 @@ inline std::string directory_of(const std::string& path) {
   if (slash == std::string::npos) return ".";
   if (slash == 0) return "/";
   return path.substr(0, slash);
+}
+
+// Makes the renames in `directory` durable. Best effort: some file systems refuse fsync on a
+// directory, and the data is already safe.
+inline void sync_directory(const std::string& directory) {
+  const int fd = ::open(directory.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+  if (fd < 0) return;
+  ::fsync(fd);
+  ::close(fd);
 }
 
 }  // namespace oasis

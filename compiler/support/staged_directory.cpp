@@ -27,10 +27,7 @@ std::string staging_prefix(const fs::path& target) {
 }
 
 void sync_path(const fs::path& directory) {
-  const int fd = ::open(directory.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
-  if (fd < 0) return;
-  ::fsync(fd);  // best effort: some file systems refuse fsync on directories
-  ::close(fd);
+  sync_directory(directory.string());
 }
 
 // Staging directories of killed writers: their flock is free. A live writer holds it.

@@ -30,18 +30,29 @@ namespace fs = std::filesystem;
 using test::Files;
 using test::snapshot;
 
-// Starts `oasisc compile SPEC -o OUT ...` with stdout and stderr discarded.
-pid_t start_compile(const std::string& spec, const fs::path& out) {
+// Starts `oasisc ARGUMENTS... --progress never` with stdout and stderr discarded.
+pid_t start_oasisc(std::vector<std::string> arguments) {
+  arguments.insert(arguments.begin(), OASISC_PATH);
+  arguments.insert(arguments.end(), {"--progress", "never"});
+  std::vector<char*> argv;
+  for (std::string& argument : arguments)
+    argv.push_back(argument.data());
+  argv.push_back(nullptr);
   const pid_t pid = ::fork();
   if (pid == 0) {
     const int null = ::open("/dev/null", O_WRONLY);
     ::dup2(null, 1);
     ::dup2(null, 2);
-    ::execl(OASISC_PATH, OASISC_PATH, "compile", spec.c_str(), "-o", out.c_str(), "--format",
-            "bin,json,cpp", "--epsilon", "0.2", "--progress", "never", static_cast<char*>(nullptr));
+    ::execv(OASISC_PATH, argv.data());
     ::_exit(127);
   }
   return pid;
+}
+
+// `oasisc compile SPEC -o OUT` of three formats.
+pid_t start_compile(const std::string& spec, const fs::path& out) {
+  return start_oasisc(
+      {"compile", spec, "-o", out.string(), "--format", "bin,json,cpp", "--epsilon", "0.2"});
 }
 
 int wait_for(pid_t pid) {
@@ -192,18 +203,9 @@ std::string chain_aut(std::uint32_t states) {
   return text;
 }
 
-// Starts `oasisc export MODEL --format aut -o OUT` with stdout and stderr discarded.
+// `oasisc export MODEL --format aut -o OUT`: one file.
 pid_t start_export(const fs::path& model, const fs::path& out) {
-  const pid_t pid = ::fork();
-  if (pid == 0) {
-    const int null = ::open("/dev/null", O_WRONLY);
-    ::dup2(null, 1);
-    ::dup2(null, 2);
-    ::execl(OASISC_PATH, OASISC_PATH, "export", model.c_str(), "--format", "aut", "-o", out.c_str(),
-            "--progress", "never", static_cast<char*>(nullptr));
-    ::_exit(127);
-  }
-  return pid;
+  return start_oasisc({"export", model.string(), "--format", "aut", "-o", out.string()});
 }
 
 std::string bytes_of(const fs::path& path) {
@@ -267,18 +269,9 @@ TEST(CompileKill, OneOutputFileIsOldOrNewAndNothingStays) {
   EXPECT_EQ(others(folder, "model.aut"), std::vector<std::string>{});
 }
 
-// Starts `oasisc export MODEL --format prism -o BASE` (a set of files: .tra, .lab, .srew).
+// `oasisc export MODEL --format prism -o BASE`: a set of files (.tra, .lab, .srew).
 pid_t start_prism_export(const fs::path& model, const fs::path& base) {
-  const pid_t pid = ::fork();
-  if (pid == 0) {
-    const int null = ::open("/dev/null", O_WRONLY);
-    ::dup2(null, 1);
-    ::dup2(null, 2);
-    ::execl(OASISC_PATH, OASISC_PATH, "export", model.c_str(), "--format", "prism", "-o",
-            base.c_str(), "--progress", "never", static_cast<char*>(nullptr));
-    ::_exit(127);
-  }
-  return pid;
+  return start_oasisc({"export", model.string(), "--format", "prism", "-o", base.string()});
 }
 
 // The files of the set written to BASE (model.tra, model.lab, ...), without hidden ones.
