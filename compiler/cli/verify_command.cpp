@@ -13,6 +13,7 @@
 #include "oasis/rt/catalog_file.hpp"
 #include "oasis/rt/catalog_validation.hpp"
 #include "oasis/rt/spec_hash.hpp"
+#include "text/printable_text.hpp"
 #include "verify/continuous_check.hpp"
 #include "verify/continuous_json_reader.hpp"
 #include "verify/discrete_catalog_check.hpp"
@@ -89,12 +90,13 @@ int verify_continuous(const VerifyOptions& options, const model::ModelIR& ir, st
     auto data = verify::read_continuous_catalog_json(
         options.result, options.common.load.max_input_bytes, error, &stated);
     if (!data) {
-      std::cerr << options.result << ": error: " << error << '\n';
+      std::cerr << options.result << ": error: " << text::printable_message(error) << '\n';
       return 1;
     }
     const rt::CatalogView view = data->view();
     if (!rt::validate(view, &error)) {
-      std::cerr << options.result << ": error: invalid catalog: " << error << '\n';
+      std::cerr << options.result << ": error: invalid catalog: " << text::printable_message(error)
+                << '\n';
       return 1;
     }
     return check_continuous_view(options, ir, hash, view, &stated);
@@ -110,7 +112,8 @@ int verify_continuous(const VerifyOptions& options, const model::ModelIR& ir, st
 int print_checks(const std::vector<verify::CatalogCheck>& checks) {
   bool all_hold = true;
   for (const verify::CatalogCheck& check : checks) {
-    std::cout << check.item << ": " << check.verdict << '\n';
+    // Names in a verdict come from the catalog file: quoted as every message quotes input.
+    std::cout << text::printable_message(check.item + ": " + check.verdict) << '\n';
     all_hold = all_hold && check.ok;
   }
   return all_hold ? 0 : 1;
@@ -130,7 +133,7 @@ int run_verify(const VerifyOptions& options) {
   const auto result = verify::read_partition_result(options.result, model,
                                                     options.common.load.max_input_bytes, error);
   if (!result) {
-    std::cerr << options.result << ": error: " << error << '\n';
+    std::cerr << options.result << ": error: " << text::printable_message(error) << '\n';
     return 1;
   }
   if (result->approximate) {

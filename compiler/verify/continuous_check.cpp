@@ -6,6 +6,7 @@
 #include <random>
 
 #include "oasis/rt/grid_locator.hpp"
+#include "support/text.hpp"
 #include "verify/guard_reading.hpp"
 #include "verify/number_text.hpp"
 #include "verify/policy_check.hpp"
@@ -380,7 +381,7 @@ std::vector<CatalogCheck> check_continuous_catalog(const model::ModelIR& ir,
                                                    const rt::CatalogView& catalog) {
   std::vector<CatalogCheck> checks;
   Problem names;
-  if (ir.name != catalog.name) names = "the catalog is named '" + std::string(catalog.name) + "'";
+  if (ir.name != catalog.name) names = "the catalog is named " + quoted(catalog.name);
   if (!names && (catalog.num_actions != ir.actions.size() ||
                  catalog.state_dimension != ir.continuous.size() ||
                  catalog.num_abstractions != ir.contexts.size()))

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <optional>
 
+#include "support/text.hpp"
 #include "verify/number_text.hpp"
 #include "verify/policy_check.hpp"
 #include "verify/verifier.hpp"
@@ -26,8 +27,8 @@ struct Failure {
 
 std::optional<Failure> check_names(const model::ExplicitModel& model, const rt::CatalogView& c) {
   if (c.name == nullptr || model.name != c.name)
-    return Failure{"the catalog is named '" + std::string(c.name ? c.name : "") + "', the model '" +
-                   model.name + "'"};
+    return Failure{"the catalog is named " + quoted(c.name ? c.name : "") + ", the model " +
+                   quoted(model.name)};
   if (c.num_states != model.num_states() || c.num_actions != model.num_actions())
     return Failure{"the catalog has " + std::to_string(c.num_states) + " states and " +
                    std::to_string(c.num_actions) + " actions, the model " +
@@ -35,21 +36,21 @@ std::optional<Failure> check_names(const model::ExplicitModel& model, const rt::
                    std::to_string(model.num_actions())};
   for (std::uint32_t a = 0; a < c.num_actions; ++a)
     if (model.actions[a] != c.action_names[a])
-      return Failure{"action " + std::to_string(a) + " is '" + c.action_names[a] +
-                     "' in the catalog, '" + model.actions[a] + "' in the model"};
+      return Failure{"action " + std::to_string(a) + " is " + quoted(c.action_names[a]) +
+                     " in the catalog, " + quoted(model.actions[a]) + " in the model"};
   for (std::uint32_t s = 0; c.state_names != nullptr && s < c.num_states; ++s)
     if (model.states.name(s) != c.state_names[s])
-      return Failure{"state " + std::to_string(s) + " is '" + c.state_names[s] +
-                     "' in the catalog, '" + model.states.name(s) + "' in the model"};
+      return Failure{"state " + std::to_string(s) + " is " + quoted(c.state_names[s]) +
+                     " in the catalog, " + quoted(model.states.name(s)) + " in the model"};
   if (c.num_abstractions != model.contexts.size())
     return Failure{"the catalog has " + std::to_string(c.num_abstractions) +
                    " abstractions, the model " + std::to_string(model.contexts.size()) +
                    " contexts"};
   for (std::uint32_t i = 0; i < c.num_abstractions; ++i)
     if (model.contexts[i].name != c.abstractions[i].context)
-      return Failure{"abstraction " + std::to_string(i) + " is for context '" +
-                     c.abstractions[i].context + "', the model's context " + std::to_string(i) +
-                     " is '" + model.contexts[i].name + "'"};
+      return Failure{"abstraction " + std::to_string(i) + " is for context " +
+                     quoted(c.abstractions[i].context) + ", the model's context " +
+                     std::to_string(i) + " is " + quoted(model.contexts[i].name)};
   return std::nullopt;
 }
 

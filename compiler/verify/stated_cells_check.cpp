@@ -6,6 +6,7 @@
 #include <random>
 #include <string>
 
+#include "support/text.hpp"
 #include "verify/cell_geometry.hpp"
 #include "verify/number_text.hpp"
 
@@ -214,8 +215,8 @@ Problem sample_overlaps(const model::ModelIR& ir, const rt::AbstractionView& abs
 
 CatalogCheck check_abstraction(const model::ModelIR& ir, const rt::AbstractionView& abs,
                                const std::vector<StatedCell>& cells) {
-  CatalogCheck check{"cells of context " + std::string(abs.context) + " as the JSON states them",
-                     "", false};
+  CatalogCheck check{"cells of context " + quoted(abs.context) + " as the JSON states them", "",
+                     false};
   const std::uint64_t expected = rt::partition_cells(abs);
   Problem problem;
   std::string summary;

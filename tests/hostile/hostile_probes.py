@@ -200,6 +200,7 @@ def reading_probes(paths):
     yield [g, "score", paths.long_log], 1, "bytes)"
     yield [c, "verify", os.path.join(paths.source_dir, "specs/discrete_tracking.oasis"),
            paths.long_name_partition], 1, "(10000000 bytes)"
+    yield [c, "verify", paths.long_name_catalog[0], paths.long_name_catalog[1]], 1, "bytes)"
     yield [g, "run", "--dry-run", "--config", paths.deep_yaml], 1, "levels deep"
     yield [g, "run", "--dry-run", "--config", paths.no_bands_yaml], 1, "got an empty list"
     yield [g, "score", paths.nul_log], 1, paths.nul_log
@@ -285,6 +286,14 @@ def prepare_inputs(paths):
             with open(path, "w", encoding="utf-8") as out:
                 json.dump(edited, out)
             paths.bad_cells[name] = (spec, path)
+
+    # A continuous catalog whose context and object names are 10 MB: verify's verdicts quote them.
+    long_named = json.loads(json.dumps(line_json))
+    long_named["abstractions"][0]["context"] = "c" * 10_000_000
+    long_named["name"] = "m" * 10_000_000
+    paths.long_name_catalog = (line_spec, os.path.join(root, "long_name_catalog.json"))
+    with open(paths.long_name_catalog[1], "w", encoding="utf-8") as out:
+        json.dump(long_named, out)
 
     paths.long_token_spec = os.path.join(root, "long_token.oasis")
     write_bytes(paths.long_token_spec, b"mdp m {\n  states s0;\n  actions a; foo " +
