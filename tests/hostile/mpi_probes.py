@@ -26,7 +26,7 @@ import tempfile
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "mpi"))
 
-from mpi_run import mpi_environment  # noqa: E402  (tests/mpi: how the tests run mpirun)
+from mpi_run import chain_aut, mpi_environment  # noqa: E402  (tests/mpi: how the tests run mpirun)
 from probe_harness import judge, report, shown, snapshot  # noqa: E402
 
 NOT_A_NUMBER = ["nan", "inf", "-inf", "1e999", "0x10", "1,5", "twelve", "5\x01"]
@@ -34,15 +34,6 @@ NOT_A_COUNT = ["-1", "1.5", "1e3", "+3", "18446744073709551616"]
 RANKS = 2
 # Text only OpenMPI's own signal handler prints (a rank killed by SIGBUS or SIGSEGV).
 MPI_CRASH_TEXT = ["Caught signal", "[ 0]", "mpirun noticed that process rank"]
-
-
-def chain_aut(path, states):
-    """A chain of `states` states, one transition each: a few bytes per state."""
-    with open(path, "w", encoding="utf-8") as out:
-        out.write(f"des (0,{states},{states})\n")
-        for s in range(states - 1):
-            out.write(f'({s},"a",{s + 1})\n')
-        out.write(f'({states - 1},"a|reward(1)",{states - 1})\n')
 
 
 def prepare_inputs(paths):

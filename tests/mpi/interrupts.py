@@ -26,7 +26,7 @@ import sys
 import time
 from pathlib import Path
 
-from mpi_run import mpi_environment, mpirun, start_work
+from mpi_run import chain_aut, mpi_environment, mpirun, start_work
 
 failures = 0
 
@@ -54,14 +54,6 @@ def grid_spec(path, n):
         lines += [f"  context corner{k} {{", f"    reward x == {cx} & y == {cy} : 1;", "  }"]
     lines += ["  switching stay 0.8;", "  prior uniform;", "}"]
     path.write_text("\n".join(lines) + "\n")
-
-
-def chain_aut(path, states):
-    with open(path, "w", encoding="utf-8") as out:
-        out.write(f"des (0,{states},{states})\n")
-        for s in range(states - 1):
-            out.write(f'({s},"a",{s + 1})\n')
-        out.write(f'({states - 1},"a|reward(1)",{states - 1})\n')
 
 
 def job_processes(root_pid):

@@ -44,3 +44,13 @@ def mpirun(ranks, command, timeout=600, extra_env=None):
     env.update(extra_env or {})
     return subprocess.run(["mpirun", "-np", str(ranks), "--oversubscribe"] + command,
                           capture_output=True, text=True, env=env, timeout=timeout)
+
+
+def chain_aut(path, states):
+    """A chain of `states` states, one transition each (a few bytes per state): a model whose
+    size the tests choose, to read a large file or to cut one."""
+    with open(path, "w", encoding="utf-8") as out:
+        out.write(f"des (0,{states},{states})\n")
+        for s in range(states - 1):
+            out.write(f'({s},"a",{s + 1})\n')
+        out.write(f'({states - 1},"a|reward(1)",{states - 1})\n')

@@ -208,6 +208,22 @@ pid_t start_export(const fs::path& model, const fs::path& out) {
   return start_oasisc({"export", model.string(), "--format", "aut", "-o", out.string()});
 }
 
+// An empty output folder `root`/out, and two models beside it: a small one and one whose copy
+// takes a while to write, so that kills land in every step.
+struct FolderAndModels {
+  fs::path folder;
+  fs::path small;
+  fs::path big;
+};
+
+FolderAndModels output_folder_and_models(const fs::path& root) {
+  FolderAndModels made{root / "out", root / "small.aut", root / "big.aut"};
+  fs::create_directories(made.folder);
+  std::ofstream(made.small, std::ios::binary) << chain_aut(3);
+  std::ofstream(made.big, std::ios::binary) << chain_aut(300000);
+  return made;
+}
+
 std::string bytes_of(const fs::path& path) {
   std::ifstream in(path, std::ios::binary);
   return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
@@ -219,12 +235,7 @@ std::string bytes_of(const fs::path& path) {
 // complete copy may stay, which the next writer of the same file removes.
 TEST(CompileKill, OneOutputFileIsOldOrNewAndNothingStays) {
   const test::ScratchDirectory scratch("oasis_export_kill");
-  const fs::path folder = scratch.path() / "out";
-  fs::create_directories(folder);
-  const fs::path small = scratch.path() / "small.aut";
-  const fs::path big = scratch.path() / "big.aut";
-  std::ofstream(small, std::ios::binary) << chain_aut(3);
-  std::ofstream(big, std::ios::binary) << chain_aut(300000);
+  const auto [folder, small, big] = output_folder_and_models(scratch.path());
   const fs::path out = folder / "model.aut";
 
   ASSERT_EQ(wait_for(start_export(big, out)), 0);
@@ -288,12 +299,7 @@ Files visible_set(const fs::path& folder) {
 // atomic_file_set_test).
 TEST(CompileKill, AFileSetIsWholeAfterTheNextRun) {
   const test::ScratchDirectory scratch("oasis_set_kill");
-  const fs::path folder = scratch.path() / "out";
-  fs::create_directories(folder);
-  const fs::path small = scratch.path() / "small.aut";
-  const fs::path big = scratch.path() / "big.aut";
-  std::ofstream(small, std::ios::binary) << chain_aut(3);
-  std::ofstream(big, std::ios::binary) << chain_aut(300000);
+  const auto [folder, small, big] = output_folder_and_models(scratch.path());
   const fs::path base = folder / "model";
   const fs::path other = folder / "other";
 
