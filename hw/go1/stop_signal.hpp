@@ -1,8 +1,8 @@
 #pragma once
-// SIGINT, SIGTERM and SIGHUP (common/process/ending_signals.hpp) as a request to stop the robot. The handler only stores into a lock-free atomic
-// (async-signal-safe); every Sender polls it once per tick and, when it is set, commands stop then
-// stand and finishes, after which the program can exit. A self-pipe is not needed because the
-// sender thread wakes every tick anyway.
+// SIGINT, SIGTERM and SIGHUP (common/process/ending_signals.hpp) as a request to stop the robot.
+// The handler only stores into a lock-free atomic (async-signal-safe); every Sender polls it once
+// per tick and, when it is set, commands stop then stand and finishes, after which the program can
+// exit. A self-pipe is not needed because the sender thread wakes every tick anyway.
 
 namespace oasis::hw::go1 {
 

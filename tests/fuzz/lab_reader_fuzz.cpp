@@ -32,8 +32,8 @@ Labels read(const std::string& text) {
   DiagnosticEngine diagnostics(sources, messages);
   const FileId file = sources.add("fuzz.lab", text);
   Labels result;
-  result.ok = formats::read_prism_labels(file, diagnostics, kStates, result.initial,
-                                         result.labels, result.found);
+  result.ok = formats::read_prism_labels(file, diagnostics, kStates, result.initial, result.labels,
+                                         result.found);
   FUZZ_REQUIRE(result.ok == (diagnostics.error_count() == 0));
   std::sort(result.initial.begin(), result.initial.end());
   result.initial.erase(std::unique(result.initial.begin(), result.initial.end()),
