@@ -82,6 +82,27 @@ inline int open_input(const std::string& path, struct stat& info, std::string& r
   return fd;
 }
 
+// Reads what `fd` delivers until its end into `text`, at most `max_bytes`; kTooLarge past them,
+// kError (with `reason`) on a read error. Both readers of streams use it: read_input() below,
+// and MappedFile for the pipes it cannot map.
+enum class ReadResult { kWhole, kTooLarge, kError };
+
+inline ReadResult read_to_end(int fd, std::size_t max_bytes, std::string& text,
+                              std::string& reason) {
+  char buffer[1 << 16];
+  for (;;) {
+    const ssize_t got = ::read(fd, buffer, sizeof buffer);
+    if (got < 0 && errno == EINTR) continue;
+    if (got < 0) {
+      reason = reason_of_errno(errno);
+      return ReadResult::kError;
+    }
+    if (got == 0) return ReadResult::kWhole;
+    if (text.size() + static_cast<std::size_t>(got) > max_bytes) return ReadResult::kTooLarge;
+    text.append(buffer, static_cast<std::size_t>(got));
+  }
+}
+
 // The whole input at `path` (at most `max_bytes`), or nothing and `reason`.
 inline std::optional<std::string> read_input(const std::string& path, std::size_t max_bytes,
                                              std::string& reason) {
@@ -91,24 +112,11 @@ inline std::optional<std::string> read_input(const std::string& path, std::size_
   std::string text;
   if (S_ISREG(info.st_mode) && static_cast<std::size_t>(info.st_size) <= max_bytes)
     text.reserve(static_cast<std::size_t>(info.st_size));
-  char buffer[1 << 16];
-  for (;;) {
-    const ssize_t got = ::read(fd, buffer, sizeof buffer);
-    if (got < 0 && errno == EINTR) continue;
-    if (got < 0) {
-      reason = reason_of_errno(errno);
-      ::close(fd);
-      return std::nullopt;
-    }
-    if (got == 0) break;
-    if (text.size() + static_cast<std::size_t>(got) > max_bytes) {
-      reason = "is larger than the limit of " + std::to_string(max_bytes) + " bytes";
-      ::close(fd);
-      return std::nullopt;
-    }
-    text.append(buffer, static_cast<std::size_t>(got));
-  }
+  const ReadResult result = read_to_end(fd, max_bytes, text, reason);
   ::close(fd);
+  if (result == ReadResult::kTooLarge)
+    reason = "is larger than the limit of " + std::to_string(max_bytes) + " bytes";
+  if (result != ReadResult::kWhole) return std::nullopt;
   return text;
 }
 

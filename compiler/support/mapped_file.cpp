@@ -191,22 +191,11 @@ bool MappedFile::open(const std::string& path, std::size_t max_bytes, std::strin
     }
   }
   // Pipes and empty files: read what there is, up to the limit.
-  char buffer[1 << 16];
-  for (;;) {
-    const ssize_t count = ::read(fd.get(), buffer, sizeof buffer);
-    if (count < 0) {
-      if (errno == EINTR) continue;
-      error = files::reason_of_errno(errno);
-      owned_.clear();
-      return false;
-    }
-    if (count == 0) break;
-    if (owned_.size() + static_cast<std::size_t>(count) > max_bytes) {
-      error = too_large_message(max_bytes);
-      owned_.clear();
-      return false;
-    }
-    owned_.append(buffer, static_cast<std::size_t>(count));
+  const files::ReadResult read = files::read_to_end(fd.get(), max_bytes, owned_, error);
+  if (read != files::ReadResult::kWhole) {
+    if (read == files::ReadResult::kTooLarge) error = too_large_message(max_bytes);
+    owned_.clear();
+    return false;
   }
   data_ = owned_.data();
   size_ = owned_.size();
