@@ -2,6 +2,7 @@
 
 #include <bit>
 #include <cstring>
+#include <type_traits>
 
 #include "oasis/rt/catalog_sections.hpp"
 #include "oasis/rt/spec_hash.hpp"
@@ -12,6 +13,17 @@ namespace {
 
 static_assert(std::endian::native == std::endian::little, "catalog files are little-endian");
 
+// A section as kSectionTable describes it, checked when this file compiles: the array's
+// element type and the section's scope must be the table's, and the format this writer
+// writes must have the section.
+template <rt::Section tag, rt::SectionScope scope, typename T>
+constexpr void check_section() {
+  constexpr rt::SectionInfo info = rt::section_info(tag);
+  static_assert(std::is_same_v<T, rt::SectionElementOf<tag>>, "not the table's element type");
+  static_assert(info.scope == scope, "not the table's scope");
+  static_assert(info.first_format <= rt::kCatalogFileFormat, "a section of a later format");
+}
+
 // Collects tagged sections, then lays out the header, the section table and the arrays
 // (catalog_sections.hpp). Sections are written in the order they are added.
 class Builder {
@@ -21,15 +33,26 @@ class Builder {
     std::memcpy(header_.data() + offset, &value, sizeof value);
   }
 
-  template <typename T>
-  void section(rt::Section tag, std::uint32_t abstraction, const T* data, std::size_t count) {
-    std::string bytes(count * sizeof(T), '\0');
-    if (count > 0) std::memcpy(bytes.data(), data, bytes.size());
-    sections_.push_back({tag, abstraction, count, std::move(bytes)});
+  // A catalog-wide section.
+  template <rt::Section tag, typename T>
+  void wide(const T* data, std::size_t count) {
+    check_section<tag, rt::SectionScope::kCatalog, T>();
+    add(tag, rt::kCatalogWide, data, count);
   }
-  template <typename T>
-  void section(rt::Section tag, std::uint32_t abstraction, const std::vector<T>& data) {
-    section(tag, abstraction, data.data(), data.size());
+  template <rt::Section tag, typename T>
+  void wide(const std::vector<T>& data) {
+    wide<tag>(data.data(), data.size());
+  }
+
+  // A section of abstraction i.
+  template <rt::Section tag, typename T>
+  void of_abstraction(std::uint32_t i, const T* data, std::size_t count) {
+    check_section<tag, rt::SectionScope::kAbstraction, T>();
+    add(tag, i, data, count);
+  }
+  template <rt::Section tag, typename T>
+  void of_abstraction(std::uint32_t i, const std::vector<T>& data) {
+    of_abstraction<tag>(i, data.data(), data.size());
   }
 
   std::string finish() {
@@ -64,6 +87,13 @@ class Builder {
   };
 
   template <typename T>
+  void add(rt::Section tag, std::uint32_t abstraction, const T* data, std::size_t count) {
+    std::string bytes(count * sizeof(T), '\0');
+    if (count > 0) std::memcpy(bytes.data(), data, bytes.size());
+    sections_.push_back({tag, abstraction, count, std::move(bytes)});
+  }
+
+  template <typename T>
   static void write(std::string& out, std::size_t offset, T value) {
     std::memcpy(out.data() + offset, &value, sizeof value);
   }
@@ -91,34 +121,34 @@ void add_strings(const model::CatalogData& catalog, Builder& out) {
     add(abstraction.context);
   for (const std::string& variable : catalog.variable_names)
     add(variable);
-  out.section(rt::Section::kNameText, rt::kCatalogWide, text.data(), text.size());
-  out.section(rt::Section::kStringOffsets, rt::kCatalogWide, offsets);
+  out.wide<rt::Section::kNameText>(text.data(), text.size());
+  out.wide<rt::Section::kStringOffsets>(offsets);
 }
 
-void add_csr(const model::CsrData& csr, std::uint32_t abstraction, rt::Section rows,
-             rt::Section targets, rt::Section probabilities, Builder& out) {
+template <rt::Section rows, rt::Section targets, rt::Section probabilities>
+void add_csr(const model::CsrData& csr, std::uint32_t abstraction, Builder& out) {
   if (csr.choice_begin.empty()) return;  // absent: an optional section, or no robust section
-  out.section(rows, abstraction, csr.choice_begin);
-  out.section(targets, abstraction, csr.target);
-  out.section(probabilities, abstraction, csr.probability);
+  out.of_abstraction<rows>(abstraction, csr.choice_begin);
+  out.of_abstraction<targets>(abstraction, csr.target);
+  out.of_abstraction<probabilities>(abstraction, csr.probability);
 }
 
 void add_grid(const model::AbstractionData& abstraction, std::uint32_t i, Builder& out) {
-  out.section(rt::Section::kGridAxes, i, abstraction.grid_axes);
-  out.section(rt::Section::kGridBreakBegin, i, abstraction.grid_break_begin);
-  out.section(rt::Section::kGridBreaks, i, abstraction.grid_breaks);
-  out.section(rt::Section::kCellBlock, i, abstraction.cell_block);
-  out.section(rt::Section::kOutsideBlock, i, &abstraction.outside_block, 1);
-  out.section(rt::Section::kEpsilon, i, &abstraction.epsilon, 1);
+  out.of_abstraction<rt::Section::kGridAxes>(i, abstraction.grid_axes);
+  out.of_abstraction<rt::Section::kGridBreakBegin>(i, abstraction.grid_break_begin);
+  out.of_abstraction<rt::Section::kGridBreaks>(i, abstraction.grid_breaks);
+  out.of_abstraction<rt::Section::kCellBlock>(i, abstraction.cell_block);
+  out.of_abstraction<rt::Section::kOutsideBlock>(i, &abstraction.outside_block, 1);
+  out.of_abstraction<rt::Section::kEpsilon>(i, &abstraction.epsilon, 1);
   if (abstraction.bsp_cell.empty()) return;
   const std::uint32_t counts[2] = {static_cast<std::uint32_t>(abstraction.bsp_cell.size()),
                                    abstraction.bsp_cells};
-  out.section(rt::Section::kBspCounts, i, counts, 2);
-  out.section(rt::Section::kBspNormal, i, abstraction.bsp_normal);
-  out.section(rt::Section::kBspBound, i, abstraction.bsp_bound);
-  out.section(rt::Section::kBspBelow, i, abstraction.bsp_below);
-  out.section(rt::Section::kBspAbove, i, abstraction.bsp_above);
-  out.section(rt::Section::kBspCell, i, abstraction.bsp_cell);
+  out.of_abstraction<rt::Section::kBspCounts>(i, counts, 2);
+  out.of_abstraction<rt::Section::kBspNormal>(i, abstraction.bsp_normal);
+  out.of_abstraction<rt::Section::kBspBound>(i, abstraction.bsp_bound);
+  out.of_abstraction<rt::Section::kBspBelow>(i, abstraction.bsp_below);
+  out.of_abstraction<rt::Section::kBspAbove>(i, abstraction.bsp_above);
+  out.of_abstraction<rt::Section::kBspCell>(i, abstraction.bsp_cell);
 }
 
 }  // namespace
@@ -136,41 +166,41 @@ std::string binary_catalog(const model::CatalogData& catalog) {
   add_strings(catalog, out);
   if (!catalog.variable_names.empty()) {
     const auto dimension = static_cast<std::uint32_t>(catalog.variable_names.size());
-    out.section(rt::Section::kStateDimension, rt::kCatalogWide, &dimension, 1);
+    out.wide<rt::Section::kStateDimension>(&dimension, 1);
   }
   if (catalog.observation == rt::ObservationKind::kMatrix)
-    out.section(rt::Section::kConfusion, rt::kCatalogWide, catalog.confusion);
+    out.wide<rt::Section::kConfusion>(catalog.confusion);
   if (catalog.observation != rt::ObservationKind::kNone ||
       catalog.reward_source != rt::RewardSource::kTrueState) {
     const auto source = static_cast<std::uint32_t>(catalog.reward_source);
-    out.section(rt::Section::kRewardSource, rt::kCatalogWide, &source, 1);
+    out.wide<rt::Section::kRewardSource>(&source, 1);
   }
   if (!catalog.position.empty()) {
-    out.section(rt::Section::kObjectOf, rt::kCatalogWide, catalog.position.object_of);
-    out.section(rt::Section::kObjectSigma, rt::kCatalogWide, catalog.position.sigma);
-    out.section(rt::Section::kObjectDetection, rt::kCatalogWide, catalog.position.detection);
+    out.wide<rt::Section::kObjectOf>(catalog.position.object_of);
+    out.wide<rt::Section::kObjectSigma>(catalog.position.sigma);
+    out.wide<rt::Section::kObjectDetection>(catalog.position.detection);
   }
-  out.section(rt::Section::kSwitching, rt::kCatalogWide, catalog.switching);
-  out.section(rt::Section::kPrior, rt::kCatalogWide, catalog.prior);
+  out.wide<rt::Section::kSwitching>(catalog.switching);
+  out.wide<rt::Section::kPrior>(catalog.prior);
   std::vector<std::uint32_t> blocks;
   for (const model::AbstractionData& abstraction : catalog.abstractions)
     blocks.push_back(abstraction.num_blocks);
-  out.section(rt::Section::kBlockCounts, rt::kCatalogWide, blocks);
+  out.wide<rt::Section::kBlockCounts>(blocks);
   for (std::uint32_t i = 0; i < n; ++i) {
     const model::AbstractionData& abstraction = catalog.abstractions[i];
     if (catalog.variable_names.empty()) {
-      out.section(rt::Section::kBlockOf, i, abstraction.block_of);
+      out.of_abstraction<rt::Section::kBlockOf>(i, abstraction.block_of);
     } else {
       add_grid(abstraction, i, out);
     }
-    out.section(rt::Section::kBlockReward, i, abstraction.block_reward);
-    add_csr(abstraction.quotient, i, rt::Section::kQuotientRows, rt::Section::kQuotientTargets,
-            rt::Section::kQuotientProbabilities, out);
-    out.section(rt::Section::kReward, i, abstraction.reward);
-    out.section(rt::Section::kPolicy, i, abstraction.policy);
-    out.section(rt::Section::kValue, i, abstraction.value);
-    add_csr(abstraction.state_transitions, i, rt::Section::kStateRows, rt::Section::kStateTargets,
-            rt::Section::kStateProbabilities, out);
+    out.of_abstraction<rt::Section::kBlockReward>(i, abstraction.block_reward);
+    add_csr<rt::Section::kQuotientRows, rt::Section::kQuotientTargets,
+            rt::Section::kQuotientProbabilities>(abstraction.quotient, i, out);
+    out.of_abstraction<rt::Section::kReward>(i, abstraction.reward);
+    out.of_abstraction<rt::Section::kPolicy>(i, abstraction.policy);
+    out.of_abstraction<rt::Section::kValue>(i, abstraction.value);
+    add_csr<rt::Section::kStateRows, rt::Section::kStateTargets, rt::Section::kStateProbabilities>(
+        abstraction.state_transitions, i, out);
   }
   return out.finish();
 }

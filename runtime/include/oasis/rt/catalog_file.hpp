@@ -143,11 +143,29 @@ class LoadedCatalog {
     return true;
   }
 
+  // The catalog-wide section `tag` as an array of its element type (kSectionTable), checked
+  // by section_array().
+  template <Section tag>
+  const SectionElementOf<tag>* wide(std::uint64_t expected, bool optional = false) {
+    static_assert(section_info(tag).scope == SectionScope::kCatalog, "a per-abstraction tag");
+    return section_array<SectionElementOf<tag>>(tag, kCatalogWide, expected, optional);
+  }
+
+  // The section `tag` of abstraction i, as wide() reads a catalog-wide one.
+  template <Section tag>
+  const SectionElementOf<tag>* of_abstraction(std::uint32_t i, std::uint64_t expected,
+                                              bool optional = false) {
+    static_assert(section_info(tag).scope == SectionScope::kAbstraction, "a catalog-wide tag");
+    return section_array<SectionElementOf<tag>>(tag, i, expected, optional);
+  }
+
   // The section (tag, abstraction), checked to lie inside the file, aligned, and to hold
   // exactly `expected` elements of T. A missing optional section reads as empty (null).
+  // Messages name it by its kSectionTable name.
   template <typename T>
-  const T* array(Section tag, std::uint32_t abstraction, std::uint64_t expected, const char* what,
-                 bool optional = false) {
+  const T* section_array(Section tag, std::uint32_t abstraction, std::uint64_t expected,
+                         bool optional) {
+    const char* what = section_info(tag).name;
     const Entry* entry = find(tag, abstraction);
     if (entry == nullptr) {
       if (!optional) fail(std::string("section '") + what + "' is missing");
@@ -167,7 +185,7 @@ class LoadedCatalog {
     return reinterpret_cast<const T*>(bytes() + entry->offset);
   }
 
-  // The element count of a section, or 0 when absent (its size is checked by array()).
+  // The element count of a section, or 0 when absent (its size is checked by section_array()).
   std::uint64_t count_of(Section tag, std::uint32_t abstraction) const noexcept {
     const Entry* entry = find(tag, abstraction);
     return entry == nullptr ? 0 : entry->count;
@@ -201,9 +219,8 @@ class LoadedCatalog {
 
   // Format 1: a fixed order of (offset, count) pairs, given their tags here.
   bool read_format1_table() {
-    constexpr std::uint64_t global = sizeof kFormat1CatalogOrder / sizeof *kFormat1CatalogOrder;
-    constexpr std::uint64_t per =
-        sizeof kFormat1AbstractionOrder / sizeof *kFormat1AbstractionOrder;
+    constexpr std::uint64_t global = kFormat1CatalogOrder.size();
+    constexpr std::uint64_t per = kFormat1AbstractionOrder.size();
     const std::uint64_t count = global + std::uint64_t{view_.num_abstractions} * per;
     if (read_at<std::uint32_t>(12) != count ||
         count > (size_ - kCatalogHeaderBytes) / kFormat1EntryBytes) {
@@ -232,7 +249,7 @@ class LoadedCatalog {
       const std::size_t at = kCatalogHeaderBytes + k * kFormat2EntryBytes;
       const Entry entry{read_at<std::uint32_t>(at), read_at<std::uint32_t>(at + 4),
                         read_at<std::uint64_t>(at + 8), read_at<std::uint64_t>(at + 16)};
-      if ((entry.tag & kRequiredSection) != 0 && !known(entry.tag)) {
+      if ((entry.tag & kRequiredSection) != 0 && find_section(entry.tag) == nullptr) {
         return fail("the catalog has a section this runtime does not know (tag " +
                     std::to_string(entry.tag & ~kRequiredSection) + "); it needs a newer runtime");
       }
@@ -244,18 +261,6 @@ class LoadedCatalog {
     return sort_entries();
   }
 
-  static bool known(std::uint32_t tag) noexcept {
-    for (const Section section : kFormat1CatalogOrder)
-      if (static_cast<std::uint32_t>(section) == tag) return true;
-    for (const Section section : kFormat1AbstractionOrder)
-      if (static_cast<std::uint32_t>(section) == tag) return true;
-    for (const Section section : kContinuousSections)
-      if (static_cast<std::uint32_t>(section) == tag) return true;
-    for (const Section section : kObservationSections)
-      if (static_cast<std::uint32_t>(section) == tag) return true;
-    return false;
-  }
-
   // The observation model's sections: a kMatrix model's confusion matrix (present exactly
   // then) and the reward source (absent: the true state's).
   bool parse_observation() {
@@ -264,10 +269,8 @@ class LoadedCatalog {
     const std::uint64_t states = view_.num_states;
     const std::uint64_t cells =
         count_of(Section::kConfusion, kCatalogWide) == 0 && !matrix ? 0 : states * states;
-    obs.confusion =
-        array<double>(Section::kConfusion, kCatalogWide, cells, "confusion matrix", !matrix);
-    const std::uint32_t* source =
-        array<std::uint32_t>(Section::kRewardSource, kCatalogWide, 1, "reward source", true);
+    obs.confusion = wide<Section::kConfusion>(cells, !matrix);
+    const std::uint32_t* source = wide<Section::kRewardSource>(1, true);
     if (!ok_) return false;
     if (source != nullptr) {
       if (*source > static_cast<std::uint32_t>(RewardSource::kObservedState))
@@ -286,11 +289,9 @@ class LoadedCatalog {
     if (sigmas % 3 != 0 || sigmas / 3 >= kExactVariable)
       return fail("position noise: " + std::to_string(sigmas) + " sigma coefficients");
     const std::uint64_t objects = sigmas / 3;
-    noise.sigma = array<double>(Section::kObjectSigma, kCatalogWide, sigmas, "object sigma");
-    noise.detection =
-        array<double>(Section::kObjectDetection, kCatalogWide, objects, "object detection");
-    noise.object_of = array<std::uint32_t>(Section::kObjectOf, kCatalogWide, view_.state_dimension,
-                                           "object of each variable");
+    noise.sigma = wide<Section::kObjectSigma>(sigmas);
+    noise.detection = wide<Section::kObjectDetection>(objects);
+    noise.object_of = wide<Section::kObjectOf>(view_.state_dimension);
     noise.num_objects = static_cast<std::uint32_t>(objects);
     return ok_;
   }
@@ -298,17 +299,15 @@ class LoadedCatalog {
   // Strings: offsets into the NUL-terminated text; each must start inside it and end at a
   // NUL inside it.
   bool parse_strings() {
-    const std::uint32_t* dimension = array<std::uint32_t>(
-        Section::kStateDimension, kCatalogWide,
-        count_of(Section::kStateDimension, kCatalogWide) == 0 ? 0 : 1, "state dimension", true);
+    const std::uint32_t* dimension = wide<Section::kStateDimension>(
+        count_of(Section::kStateDimension, kCatalogWide) == 0 ? 0 : 1, true);
     if (!ok_) return false;
     view_.state_dimension = dimension == nullptr ? 0 : *dimension;
     const std::uint64_t num_strings = 2 + std::uint64_t{view_.num_actions} + view_.num_states +
                                       view_.num_abstractions + view_.state_dimension;
     const std::uint64_t text_size = count_of(Section::kNameText, kCatalogWide);
-    const char* text = array<char>(Section::kNameText, kCatalogWide, text_size, "name text");
-    const std::uint32_t* offsets =
-        array<std::uint32_t>(Section::kStringOffsets, kCatalogWide, num_strings, "string offsets");
+    const char* text = wide<Section::kNameText>(text_size);
+    const std::uint32_t* offsets = wide<Section::kStringOffsets>(num_strings);
     if (!ok_ || text == nullptr || text[text_size - 1] != '\0') return fail("malformed name text");
     names_.resize(num_strings);
     for (std::uint64_t i = 0; i < num_strings; ++i) {
@@ -329,9 +328,8 @@ class LoadedCatalog {
   // A continuous abstraction's grid and cell map, each count checked before it is used.
   void parse_grid(std::uint32_t i, AbstractionView& a) {
     const std::uint64_t d = count_of(Section::kGridAxes, i);
-    a.grid.axes = array<std::uint32_t>(Section::kGridAxes, i, d, "grid axes");
-    a.grid.break_begin =
-        array<std::uint32_t>(Section::kGridBreakBegin, i, d + 1, "grid break offsets");
+    a.grid.axes = of_abstraction<Section::kGridAxes>(i, d);
+    a.grid.break_begin = of_abstraction<Section::kGridBreakBegin>(i, d + 1);
     if (!ok_ || d == 0 || d > UINT32_MAX - 1) {
       if (ok_) fail("a continuous abstraction without a grid");
       return;
@@ -341,16 +339,14 @@ class LoadedCatalog {
       if (a.grid.break_begin[k + 1] < a.grid.break_begin[k])
         return static_cast<void>(fail("grid break offsets decrease"));
     }
-    a.grid.breaks =
-        array<double>(Section::kGridBreaks, i, a.grid.break_begin[d], "grid breakpoints");
+    a.grid.breaks = of_abstraction<Section::kGridBreaks>(i, a.grid.break_begin[d]);
     if (!ok_) return;
     if (!validate_grid(a.grid, view_.state_dimension))
       return static_cast<void>(fail("malformed grid in abstraction " + std::to_string(i)));
     if (count_of(Section::kBspCounts, i) != 0 && !parse_bsp(i, a)) return;
-    a.cell_block = array<std::uint32_t>(Section::kCellBlock, i, partition_cells(a), "cell blocks");
-    const std::uint32_t* outside =
-        array<std::uint32_t>(Section::kOutsideBlock, i, 1, "outside block");
-    const double* epsilon = array<double>(Section::kEpsilon, i, 1, "epsilon", true);
+    a.cell_block = of_abstraction<Section::kCellBlock>(i, partition_cells(a));
+    const std::uint32_t* outside = of_abstraction<Section::kOutsideBlock>(i, 1);
+    const double* epsilon = of_abstraction<Section::kEpsilon>(i, 1, true);
     if (!ok_) return;
     a.outside_block = *outside;
     a.epsilon = epsilon == nullptr ? 0.0 : *epsilon;
@@ -359,35 +355,34 @@ class LoadedCatalog {
   // A polytope abstraction's BSP (its counts first, then arrays of those sizes); its shape is
   // checked by validate() with the rest of the view.
   bool parse_bsp(std::uint32_t i, AbstractionView& a) {
-    const std::uint32_t* counts = array<std::uint32_t>(Section::kBspCounts, i, 2, "BSP counts");
+    const std::uint32_t* counts = of_abstraction<Section::kBspCounts>(i, 2);
     if (!ok_) return false;
     const std::uint64_t nodes = counts[0];
     if (nodes == 0 || counts[1] == 0)
       return fail("an empty BSP in abstraction " + std::to_string(i));
     a.bsp.num_nodes = counts[0];
     a.bsp.num_cells = counts[1];
-    a.bsp.normal = array<double>(Section::kBspNormal, i, nodes * a.grid.dimension, "BSP normals");
-    a.bsp.bound = array<double>(Section::kBspBound, i, nodes, "BSP bounds");
-    a.bsp.below = array<std::uint32_t>(Section::kBspBelow, i, nodes, "BSP below");
-    a.bsp.above = array<std::uint32_t>(Section::kBspAbove, i, nodes, "BSP above");
-    a.bsp.cell = array<std::uint32_t>(Section::kBspCell, i, nodes, "BSP cells");
+    a.bsp.normal = of_abstraction<Section::kBspNormal>(i, nodes * a.grid.dimension);
+    a.bsp.bound = of_abstraction<Section::kBspBound>(i, nodes);
+    a.bsp.below = of_abstraction<Section::kBspBelow>(i, nodes);
+    a.bsp.above = of_abstraction<Section::kBspAbove>(i, nodes);
+    a.bsp.cell = of_abstraction<Section::kBspCell>(i, nodes);
     return ok_;
   }
 
   // A CSR relation: its rows, targets and probabilities. Absent (all three sections missing
   // or empty) when `optional`; then the view's pointers stay null.
-  bool parse_transitions(Section rows_tag, Section targets_tag, Section probabilities_tag,
-                         std::uint32_t abstraction, std::uint64_t rows, TransitionsCsr& csr,
+  template <Section rows_tag, Section targets_tag, Section probabilities_tag>
+  bool parse_transitions(std::uint32_t abstraction, std::uint64_t rows, TransitionsCsr& csr,
                          bool optional) {
     const std::uint64_t edges = count_of(targets_tag, abstraction);
     if (optional && count_of(rows_tag, abstraction) == 0 && edges == 0 &&
         count_of(probabilities_tag, abstraction) == 0)
       return ok_;
     if (edges > UINT32_MAX) return fail("too many edges");
-    csr.choice_begin = array<std::uint32_t>(rows_tag, abstraction, rows + 1, "transition rows");
-    csr.target = array<std::uint32_t>(targets_tag, abstraction, edges, "transition targets");
-    csr.probability =
-        array<double>(probabilities_tag, abstraction, edges, "transition probabilities");
+    csr.choice_begin = of_abstraction<rows_tag>(abstraction, rows + 1);
+    csr.target = of_abstraction<targets_tag>(abstraction, edges);
+    csr.probability = of_abstraction<probabilities_tag>(abstraction, edges);
     csr.num_edges = static_cast<std::uint32_t>(edges);
     return ok_;
   }
@@ -402,28 +397,26 @@ class LoadedCatalog {
     if (view_.state_dimension > 0) {
       parse_grid(i, a);
     } else {
-      a.block_of = array<std::uint32_t>(Section::kBlockOf, i, states, "block_of");
+      a.block_of = of_abstraction<Section::kBlockOf>(i, states);
     }
-    a.block_reward = array<double>(Section::kBlockReward, i, a.num_blocks, "block_reward");
-    if (!parse_transitions(Section::kQuotientRows, Section::kQuotientTargets,
-                           Section::kQuotientProbabilities, i, cells, a.quotient, true))
+    a.block_reward = of_abstraction<Section::kBlockReward>(i, a.num_blocks);
+    if (!parse_transitions<Section::kQuotientRows, Section::kQuotientTargets,
+                           Section::kQuotientProbabilities>(i, cells, a.quotient, true))
       return;
-    a.reward = array<double>(Section::kReward, i, cells, "reward");
-    a.policy = array<std::uint32_t>(Section::kPolicy, i, a.num_blocks, "policy");
-    a.value = array<double>(Section::kValue, i, a.num_blocks, "value");
-    parse_transitions(Section::kStateRows, Section::kStateTargets, Section::kStateProbabilities, i,
-                      states * actions, a.state_transitions, true);
+    a.reward = of_abstraction<Section::kReward>(i, cells);
+    a.policy = of_abstraction<Section::kPolicy>(i, a.num_blocks);
+    a.value = of_abstraction<Section::kValue>(i, a.num_blocks);
+    parse_transitions<Section::kStateRows, Section::kStateTargets, Section::kStateProbabilities>(
+        i, states * actions, a.state_transitions, true);
   }
 
   void parse() {
     ok_ = true;
     if (!parse_header() || !parse_strings() || !parse_observation()) return;
     const std::uint32_t n = view_.num_abstractions;
-    view_.switching =
-        array<double>(Section::kSwitching, kCatalogWide, std::uint64_t{n} * n, "switching");
-    view_.prior = array<double>(Section::kPrior, kCatalogWide, n, "prior");
-    const std::uint32_t* blocks =
-        array<std::uint32_t>(Section::kBlockCounts, kCatalogWide, n, "block counts");
+    view_.switching = wide<Section::kSwitching>(std::uint64_t{n} * n);
+    view_.prior = wide<Section::kPrior>(n);
+    const std::uint32_t* blocks = wide<Section::kBlockCounts>(n);
     if (!ok_) return;
     abstractions_.assign(n, AbstractionView{});
     for (std::uint32_t i = 0; i < n && ok_; ++i)

@@ -31,11 +31,18 @@
 //
 // Format 1 (the first files, still read): each entry is 16 bytes, u64 offset and u64 count,
 // in a fixed order: the five catalog-wide sections, then per abstraction the eleven of
-// kFormat1AbstractionOrder.
+// kFormat1AbstractionOrder (both derived from kSectionTable's format-1 positions).
+//
+// kSectionTable below describes every section once: its tag, name, scope, element type,
+// whether it is required (the tag's kRequiredSection bit) and the first format that has it.
+// A new section is a new Section value and a new row (runtime/README.md, "Adding a catalog
+// field").
 #pragma once
 
+#include <array>
 #include <cstddef>
 #include <cstdint>
+#include <iterator>
 
 namespace oasis {
 namespace rt {
@@ -106,35 +113,186 @@ enum class Section : std::uint32_t {
   kBspCell = kRequiredSection | 43,    ///< u32 [num_nodes]
 };
 
-/// Every section this runtime understands beyond the format-1 ones.
-inline constexpr Section kContinuousSections[] = {
-    Section::kStateDimension, Section::kGridAxes,  Section::kGridBreakBegin,
-    Section::kGridBreaks,     Section::kCellBlock, Section::kOutsideBlock,
-    Section::kEpsilon,        Section::kBspCounts, Section::kBspNormal,
-    Section::kBspBound,       Section::kBspBelow,  Section::kBspAbove,
-    Section::kBspCell};
+/// Where a section belongs: the catalog as a whole (its table entry's abstraction is
+/// kCatalogWide), or one abstraction (one entry per abstraction that has it).
+enum class SectionScope : std::uint8_t { kCatalog, kAbstraction };
 
-/// The observation model's sections (format 2 and later).
-inline constexpr Section kObservationSections[] = {Section::kConfusion, Section::kRewardSource,
-                                                   Section::kObjectOf, Section::kObjectSigma,
-                                                   Section::kObjectDetection};
+/// The type of a section's elements (little-endian in the file).
+enum class SectionElement : std::uint8_t { kU32, kF64, kChar };
+
+/// The C++ type of a SectionElement, for the loader and the writer.
+template <SectionElement element>
+struct SectionElementType;
+template <>
+struct SectionElementType<SectionElement::kU32> {
+  using type = std::uint32_t;
+};
+template <>
+struct SectionElementType<SectionElement::kF64> {
+  using type = double;
+};
+template <>
+struct SectionElementType<SectionElement::kChar> {
+  using type = char;
+};
+
+/// SectionInfo::format1_position of a section that format 1 does not have.
+inline constexpr std::uint32_t kNotInFormat1 = 0xFFFFFFFFu;
+
+/// One row of kSectionTable: everything a reader or a writer needs to know about a tag.
+struct SectionInfo {
+  Section tag;
+  /// What the loader's messages call the section ("array 'NAME' has ..."); the quotient's
+  /// and the state model's transition sections share theirs ("transition rows", ...).
+  const char* name;
+  SectionScope scope;
+  SectionElement element;
+  /// The first file format that has the section.
+  std::uint32_t first_format;
+  /// Format 1 only: the entry's place in its fixed table, among the catalog-wide entries or
+  /// among one abstraction's (kNotInFormat1 for a section added later).
+  std::uint32_t format1_position;
+
+  /// A reader that does not know a required section refuses the file.
+  constexpr bool required() const noexcept {
+    return (static_cast<std::uint32_t>(tag) & kRequiredSection) != 0;
+  }
+};
+
+namespace detail {
+
+// Rows of kSectionTable, by scope (format1_position: kNotInFormat1 unless format 1 has it).
+constexpr SectionInfo wide(Section tag, const char* name, SectionElement element,
+                           std::uint32_t first_format,
+                           std::uint32_t format1_position = kNotInFormat1) noexcept {
+  return {tag, name, SectionScope::kCatalog, element, first_format, format1_position};
+}
+constexpr SectionInfo each(Section tag, const char* name, SectionElement element,
+                           std::uint32_t first_format,
+                           std::uint32_t format1_position = kNotInFormat1) noexcept {
+  return {tag, name, SectionScope::kAbstraction, element, first_format, format1_position};
+}
+
+/// Every section of the file format, one row per Section tag (checked below and in
+/// tests/unit/runtime/catalog_sections_test.cpp). The loader (catalog_file.hpp) takes from
+/// it which tags it knows, the format-1 table order, each array's element type and its name;
+/// the compiler's writer (codegen/binary_catalog.cpp) the element type and scope it writes.
+/// Columns: scope (wide: catalog-wide; each: per abstraction), tag, name, element type, first
+/// format, format-1 position.
+// clang-format off
+inline constexpr SectionInfo kSectionRows[] = {
+    wide(Section::kNameText,              "name text",                SectionElement::kChar, 1, 0),
+    wide(Section::kStringOffsets,         "string offsets",           SectionElement::kU32,  1, 1),
+    wide(Section::kSwitching,             "switching",                SectionElement::kF64,  1, 2),
+    wide(Section::kPrior,                 "prior",                    SectionElement::kF64,  1, 3),
+    wide(Section::kBlockCounts,           "block counts",             SectionElement::kU32,  1, 4),
+    each(Section::kBlockOf,               "block_of",                 SectionElement::kU32,  1, 0),
+    each(Section::kBlockReward,           "block_reward",             SectionElement::kF64,  1, 1),
+    each(Section::kQuotientRows,          "transition rows",          SectionElement::kU32,  1, 2),
+    each(Section::kQuotientTargets,       "transition targets",       SectionElement::kU32,  1, 3),
+    each(Section::kQuotientProbabilities, "transition probabilities", SectionElement::kF64,  1, 4),
+    each(Section::kReward,                "reward",                   SectionElement::kF64,  1, 5),
+    each(Section::kPolicy,                "policy",                   SectionElement::kU32,  1, 6),
+    each(Section::kValue,                 "value",                    SectionElement::kF64,  1, 7),
+    each(Section::kStateRows,             "transition rows",          SectionElement::kU32,  1, 8),
+    each(Section::kStateTargets,          "transition targets",       SectionElement::kU32,  1, 9),
+    each(Section::kStateProbabilities,    "transition probabilities", SectionElement::kF64,  1, 10),
+    wide(Section::kStateDimension,        "state dimension",          SectionElement::kU32,  2),
+    wide(Section::kConfusion,             "confusion matrix",         SectionElement::kF64,  2),
+    wide(Section::kRewardSource,          "reward source",            SectionElement::kU32,  2),
+    wide(Section::kObjectOf,              "object of each variable",  SectionElement::kU32,  2),
+    wide(Section::kObjectSigma,           "object sigma",             SectionElement::kF64,  2),
+    wide(Section::kObjectDetection,       "object detection",         SectionElement::kF64,  2),
+    each(Section::kGridAxes,              "grid axes",                SectionElement::kU32,  2),
+    each(Section::kGridBreakBegin,        "grid break offsets",       SectionElement::kU32,  2),
+    each(Section::kGridBreaks,            "grid breakpoints",         SectionElement::kF64,  2),
+    each(Section::kCellBlock,             "cell blocks",              SectionElement::kU32,  2),
+    each(Section::kOutsideBlock,          "outside block",            SectionElement::kU32,  2),
+    each(Section::kEpsilon,               "epsilon",                  SectionElement::kF64,  2),
+    each(Section::kBspCounts,             "BSP counts",               SectionElement::kU32,  2),
+    each(Section::kBspNormal,             "BSP normals",              SectionElement::kF64,  2),
+    each(Section::kBspBound,              "BSP bounds",               SectionElement::kF64,  2),
+    each(Section::kBspBelow,              "BSP below",                SectionElement::kU32,  2),
+    each(Section::kBspAbove,              "BSP above",                SectionElement::kU32,  2),
+    each(Section::kBspCell,               "BSP cells",                SectionElement::kU32,  2),
+};
+// clang-format on
+
+}  // namespace detail
+
+/// The rows of detail::kSectionRows (written there beside the helpers that make them).
+inline constexpr const auto& kSectionTable = detail::kSectionRows;
+
+inline constexpr std::size_t kSectionCount = std::size(kSectionTable);
+
+/// The row of `tag`, or null for a tag this runtime does not know (a raw tag from a file).
+constexpr const SectionInfo* find_section(std::uint32_t tag) noexcept {
+  for (const SectionInfo& info : kSectionTable)
+    if (static_cast<std::uint32_t>(info.tag) == tag) return &info;
+  return nullptr;
+}
+
+/// The row of a tag this runtime knows (every Section has one).
+constexpr const SectionInfo& section_info(Section tag) noexcept {
+  return *find_section(static_cast<std::uint32_t>(tag));
+}
+
+/// The C++ type of a section's elements.
+template <Section tag>
+using SectionElementOf = typename SectionElementType<section_info(tag).element>::type;
+
+namespace detail {
+
+constexpr std::size_t format1_count(SectionScope scope) noexcept {
+  std::size_t count = 0;
+  for (const SectionInfo& info : kSectionTable)
+    if (info.format1_position != kNotInFormat1 && info.scope == scope) ++count;
+  return count;
+}
+
+// The format-1 sections of `scope` in table order (the sections at their positions).
+template <std::size_t count>
+constexpr std::array<Section, count> format1_order(SectionScope scope) noexcept {
+  std::array<Section, count> order{};
+  for (const SectionInfo& info : kSectionTable)
+    if (info.format1_position != kNotInFormat1 && info.scope == scope)
+      order[info.format1_position] = info.tag;
+  return order;
+}
+
+// Each tag once; each format-1 position of a scope once and below the scope's count; format
+// 1's sections are those of the first format.
+constexpr bool section_table_is_consistent() noexcept {
+  for (std::size_t a = 0; a < kSectionCount; ++a) {
+    const SectionInfo& row = kSectionTable[a];
+    if ((row.format1_position != kNotInFormat1) != (row.first_format == 1)) return false;
+    if (row.first_format < kOldestCatalogFileFormat || row.first_format > kCatalogFileFormat)
+      return false;
+    if (row.format1_position != kNotInFormat1 && row.format1_position >= format1_count(row.scope))
+      return false;
+    for (std::size_t b = a + 1; b < kSectionCount; ++b) {
+      const SectionInfo& other = kSectionTable[b];
+      if (other.tag == row.tag) return false;
+      if (other.scope == row.scope && other.format1_position == row.format1_position &&
+          row.format1_position != kNotInFormat1)
+        return false;
+    }
+  }
+  return true;
+}
+
+}  // namespace detail
+
+static_assert(detail::section_table_is_consistent(),
+              "kSectionTable: a tag twice, or format-1 positions that are not 0, 1, 2, ...");
 
 /// The catalog-wide sections of a format-1 file, in table order.
-inline constexpr Section kFormat1CatalogOrder[] = {Section::kNameText, Section::kStringOffsets,
-                                                   Section::kSwitching, Section::kPrior,
-                                                   Section::kBlockCounts};
+inline constexpr auto kFormat1CatalogOrder =
+    detail::format1_order<detail::format1_count(SectionScope::kCatalog)>(SectionScope::kCatalog);
 /// The per-abstraction sections of a format-1 file, in table order.
-inline constexpr Section kFormat1AbstractionOrder[] = {Section::kBlockOf,
-                                                       Section::kBlockReward,
-                                                       Section::kQuotientRows,
-                                                       Section::kQuotientTargets,
-                                                       Section::kQuotientProbabilities,
-                                                       Section::kReward,
-                                                       Section::kPolicy,
-                                                       Section::kValue,
-                                                       Section::kStateRows,
-                                                       Section::kStateTargets,
-                                                       Section::kStateProbabilities};
+inline constexpr auto kFormat1AbstractionOrder =
+    detail::format1_order<detail::format1_count(SectionScope::kAbstraction)>(
+        SectionScope::kAbstraction);
 
 }  // namespace rt
 }  // namespace oasis
