@@ -1,7 +1,7 @@
 #include <unistd.h>
 
 #include "cli/commands.hpp"
-#include "cli/number_options.hpp"
+#include "command_line/number_options.hpp"
 
 namespace oasis::cli {
 

@@ -12,8 +12,8 @@
 #include <set>
 
 #include "cli/commands.hpp"
-#include "cli/number_options.hpp"
-#include "cli/output_names.hpp"
+#include "command_line/number_options.hpp"
+#include "command_line/output_names.hpp"
 #include "codegen/catalog_files.hpp"
 #include "model/catalog_data.hpp"
 #include "oasis/rt/catalog_sections.hpp"

@@ -12,7 +12,7 @@
 #include <unistd.h>
 
 #include "cli/commands.hpp"
-#include "cli/number_options.hpp"
+#include "command_line/number_options.hpp"
 #include "fit/csv_table.hpp"
 #include "fit/depth_noise_fit.hpp"
 #include "fit/forward_algorithm.hpp"

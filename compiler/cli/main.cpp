@@ -9,8 +9,8 @@
 #include <CLI/CLI.hpp>
 
 #include "cli/commands.hpp"
-#include "cli/empty_values.hpp"
-#include "cli/memory_option.hpp"
+#include "command_line/empty_values.hpp"
+#include "command_line/memory_option.hpp"
 #include "support/gmp_allocation.hpp"
 #include "support/interrupt_cleanup.hpp"
 #include "support/standard_output.hpp"

@@ -13,7 +13,7 @@
 #include "bisim/quotient.hpp"
 #include "cli/commands.hpp"
 #include "cli/label_options.hpp"
-#include "cli/number_options.hpp"
+#include "command_line/number_options.hpp"
 #include "cli/quotient_output.hpp"
 #include "files/output_names.hpp"
 #include "formats/aut_writer.hpp"

@@ -8,7 +8,7 @@
 
 #include "cli/commands.hpp"
 #include "cli/label_options.hpp"
-#include "cli/number_options.hpp"
+#include "command_line/number_options.hpp"
 #include "model/catalog_data.hpp"
 #include "oasis/rt/catalog_file.hpp"
 #include "oasis/rt/catalog_validation.hpp"

@@ -3,7 +3,7 @@
 #include <algorithm>
 
 #include "frontend/checker.hpp"
-#include "frontend/input_validation.hpp"
+#include "support/input_validation.hpp"
 #include "frontend/lexer.hpp"
 #include "frontend/parser.hpp"
 

@@ -10,8 +10,8 @@
 #include <sstream>
 #include <string>
 
-#include "cli/number_options.hpp"
-#include "cli/output_names.hpp"
+#include "command_line/number_options.hpp"
+#include "command_line/output_names.hpp"
 #include "codegen/catalog_files.hpp"
 #include "distributed/context_spreading.hpp"
 #include "input/model_loader.hpp"

@@ -5,7 +5,7 @@
 //
 // The command line follows oasisc's rules, from the same pieces: usage errors exit 2 (CLI11's
 // own codes never reach the shell), no option takes an empty value, numbers pass
-// tools/cli/number_options.hpp, --memory-budget (per rank) ends in "out of memory" rather than
+// common/command_line/number_options.hpp, --memory-budget (per rank) ends in "out of memory" rather than
 // the OOM killer, and SIGINT, SIGTERM and SIGHUP take the unfinished output with them.
 
 #include <csignal>
@@ -16,9 +16,9 @@
 #include <string>
 #include <thread>
 
-#include "cli/empty_values.hpp"
-#include "cli/memory_budget.hpp"
-#include "cli/memory_option.hpp"
+#include "command_line/empty_values.hpp"
+#include "command_line/memory_budget.hpp"
+#include "command_line/memory_option.hpp"
 #include "mpi_cli/commands.hpp"
 #include "process/ending_signals.hpp"
 #include "support/gmp_allocation.hpp"

@@ -14,7 +14,7 @@
 #include <string>
 #include <vector>
 
-#include "cli/number_options.hpp"
+#include "command_line/number_options.hpp"
 #include "distributed/distributed_reader.hpp"
 #include "distributed/partition_output.hpp"
 #include "distributed/quotient_output.hpp"

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <filesystem>
 
-#include "frontend/input_validation.hpp"
+#include "support/input_validation.hpp"
 #include "prism/checker.hpp"
 #include "prism/lexer.hpp"
 #include "prism/parser.hpp"
@@ -18,7 +18,7 @@ std::optional<model::ExplicitModel> load_program_text(FileId file, const std::st
                                                       DiagnosticEngine& diagnostics,
                                                       const LoadOptions& options) {
   const std::size_t errors_before = diagnostics.error_count();
-  if (!frontend::validate_input(file, diagnostics)) return std::nullopt;
+  if (!validate_input(file, diagnostics)) return std::nullopt;
   const std::vector<Token> tokens = lex(file, diagnostics);
   const ast::Program tree = parse(tokens, diagnostics);
   // Semantic errors on a tree with syntax errors are mostly echoes of them: stop here.

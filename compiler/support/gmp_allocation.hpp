@@ -2,7 +2,7 @@
 // GMP that throws std::bad_alloc instead of aborting.
 //
 // GMP's own allocation functions print "GNU MP: Cannot allocate memory" and call abort()
-// when malloc fails: under a memory budget (tools/cli/memory_budget.hpp) any large exact
+// when malloc fails: under a memory budget (common/command_line/memory_budget.hpp) any large exact
 // computation, ours or CGAL's, would crash the process instead of ending in main's
 // "oasisc: error: out of memory". The functions installed here throw std::bad_alloc instead,
 // as cvc5 and other C++ users of GMP do.

@@ -9,8 +9,8 @@
 #include <CLI/CLI.hpp>
 
 #include "app/commands.hpp"
-#include "cli/empty_values.hpp"
-#include "cli/memory_option.hpp"
+#include "command_line/empty_values.hpp"
+#include "command_line/memory_option.hpp"
 #include "perception/out_of_memory.hpp"
 #include "settings/settings_error.hpp"
 

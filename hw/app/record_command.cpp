@@ -10,7 +10,7 @@
 #include "app/robot_link.hpp"
 #include "app/session.hpp"
 #include "camera/recording_writer.hpp"
-#include "cli/number_options.hpp"
+#include "command_line/number_options.hpp"
 #include "settings/settings.hpp"
 
 namespace oasis::hw::app {

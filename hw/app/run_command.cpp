@@ -12,7 +12,7 @@
 #include "app/control_loop.hpp"
 #include "app/profile_controller.hpp"
 #include "app/session.hpp"
-#include "cli/number_options.hpp"
+#include "command_line/number_options.hpp"
 #include "go1/endpoint.hpp"
 #include "go1/sender.hpp"
 #include "go1/stop_signal.hpp"

@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "app/commands.hpp"
-#include "cli/number_options.hpp"
+#include "command_line/number_options.hpp"
 #include "log/log_error.hpp"
 #include "log/step_log_reader.hpp"
 #include "log/table2_metrics.hpp"

@@ -17,7 +17,7 @@
 #include "app/profile_controller.hpp"
 #include "app/session.hpp"
 #include "app/sim_trial.hpp"
-#include "cli/number_options.hpp"
+#include "command_line/number_options.hpp"
 #include "log/step_log_writer.hpp"
 #include "log/table2_metrics.hpp"
 #include "log/table2_report.hpp"

@@ -1,6 +1,6 @@
 #pragma once
 // The statistics of the paper's Table II (the Go1 treat experiment), computed from step logs.
-// The per-step definitions are oasis::metrics' (tools/metrics/context_metrics.hpp), the same
+// The per-step definitions are oasis::metrics' (common/metrics/context_metrics.hpp), the same
 // that score Table I; only the units and the sources differ:
 //
 //  * accuracy: fraction of steps whose ML abstraction (StepRecord::abstraction) equals

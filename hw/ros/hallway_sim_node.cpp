@@ -21,8 +21,8 @@
 
 #include <CLI/CLI.hpp>
 
-#include "cli/empty_values.hpp"
-#include "cli/number_options.hpp"
+#include "command_line/empty_values.hpp"
+#include "command_line/number_options.hpp"
 #include "go1/planar_pose.hpp"
 #include "go1/stop_signal.hpp"
 #include "perception/treat_holder.hpp"

@@ -4,7 +4,7 @@ and asserts its exit status (2 for usage, 1 for a bad input), that the message n
 culprit (the option, the file), that it is a few lines at most, that the program neither crashed
 nor hung, and that nothing was written outside the scratch folder. Classes covered so far:
   numbers   every number option of the three programs passes one rule
-            (tools/cli/number_options.hpp): NaN, infinities, signs on counts, out of range;
+            (common/command_line/number_options.hpp): NaN, infinities, signs on counts, out of range;
   outputs   file names that would leave the output folder, folders that cannot be made;
   claims    a fit whose fragment `oasisc check` would refuse; an empty log scored; a continuous
             catalog JSON whose stated cells overlap or are degenerate (verify must fail it);

@@ -3,7 +3,7 @@
 Each probe asserts the job's exit status (2 for usage, 1 for a bad input), that the message
 names the culprit, that it is a few lines at most and holds no crash text (no OpenMPI
 backtrace), and that nothing was written outside the scratch folder. Classes:
-  numbers   every number option passes tools/cli/number_options.hpp: NaN, infinities, signs
+  numbers   every number option passes common/command_line/number_options.hpp: NaN, infinities, signs
             on counts, out of range (CLI11's own exit codes 104-109 never reach the shell);
   empty     no option takes an empty value;
   usage     a missing command or option, an unknown one;

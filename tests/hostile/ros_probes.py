@@ -4,7 +4,7 @@
 rules as the other programs (hostile_probes.py, probe_harness.py):
   usage     exit 2 for every usage error (CLI11's own codes 104-109 never leak), an unknown
             option, --params without --bag;
-  numbers   --steps and --master-timeout-ms through tools/cli/number_options.hpp: no sign, no
+  numbers   --steps and --master-timeout-ms through common/command_line/number_options.hpp: no sign, no
             exponent, nothing past 2^64 - 1, nothing out of range;
   empty     an empty value is refused on every option (-o '' or --log '' never mean "none");
   budget    --memory-budget as in every program;

@@ -13,9 +13,9 @@
 
 #include <CLI/CLI.hpp>
 
-#include "cli/empty_values.hpp"
-#include "cli/memory_option.hpp"
-#include "cli/number_options.hpp"
+#include "command_line/empty_values.hpp"
+#include "command_line/memory_option.hpp"
+#include "command_line/number_options.hpp"
 #include "frontend/load_spec.hpp"
 #include "model/catalog_data.hpp"
 #include "model/explorer.hpp"

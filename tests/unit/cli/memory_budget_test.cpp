@@ -3,7 +3,7 @@
 // budget (their shadow memory), so the asan test preset leaves these tests out by name
 // (CMakePresets.json); run there by hand, they fail and say why.
 
-#include "cli/memory_budget.hpp"
+#include "command_line/memory_budget.hpp"
 
 #include <cstdio>
 #include <filesystem>

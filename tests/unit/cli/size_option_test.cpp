@@ -1,4 +1,4 @@
-// Size options (--max-input-size, --max-spec-size) pass one rule (tools/cli/number_options.hpp,
+// Size options (--max-input-size, --max-spec-size) pass one rule (common/command_line/number_options.hpp,
 // size_text): CLI11 alone took "-1" as 2^64 - 1 bytes, which turned the limit off (issue 37).
 
 #include <string>

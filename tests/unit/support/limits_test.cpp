@@ -16,7 +16,7 @@
 #include "../../support/run_oasisc.hpp"
 #include "../../support/scratch_files.hpp"
 #include "../../support/spec_models.hpp"
-#include "cli/memory_budget.hpp"
+#include "command_line/memory_budget.hpp"
 #include "support/parallel.hpp"
 
 namespace {

@@ -1,9 +1,9 @@
-#include "frontend/input_validation.hpp"
+#include "support/input_validation.hpp"
 
 #include <cstdint>
 #include <string_view>
 
-namespace oasis::frontend {
+namespace oasis {
 namespace {
 
 // Length of the well-formed UTF-8 sequence at `i`, or 0 when it is malformed
@@ -53,4 +53,4 @@ bool validate_input(FileId file, DiagnosticEngine& diagnostics) {
   return true;
 }
 
-}  // namespace oasis::frontend
+}  // namespace oasis

@@ -1,4 +1,4 @@
-#include "cli/memory_budget.hpp"
+#include "command_line/memory_budget.hpp"
 
 #include <algorithm>
 #include <array>

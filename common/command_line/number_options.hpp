@@ -1,4 +1,4 @@
-// tools/cli/number_options.hpp: the one rule every number given on a command line of oasisc,
+// common/command_line/number_options.hpp: the one rule every number given on a command line of oasisc,
 // oasis-sim and oasis-go1 passes (CLI11 validators, checked on the text before CLI11 converts it).
 //
 // Why not CLI11's own: PositiveNumber, NonNegativeNumber and Range let "nan" through (every

@@ -1,9 +1,9 @@
-#include "cli/memory_option.hpp"
+#include "command_line/memory_option.hpp"
 
 #include <iostream>
 #include <vector>
 
-#include "cli/memory_budget.hpp"
+#include "command_line/memory_budget.hpp"
 
 namespace oasis::cli {
 namespace {
