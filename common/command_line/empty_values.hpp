@@ -1,4 +1,5 @@
-// common/command_line/empty_values.hpp: an empty value is an error on every option of every program.
+// common/command_line/empty_values.hpp: an empty value is an error on every option of every
+// program.
 //
 // Why: an option's value is kept in a string (or a number) whose empty state means "not
 // given", so `--catalog ''`, `-o ''` or `--json ''` silently meant the default, where the

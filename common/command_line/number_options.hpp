@@ -1,5 +1,6 @@
-// common/command_line/number_options.hpp: the one rule every number given on a command line of oasisc,
-// oasis-sim and oasis-go1 passes (CLI11 validators, checked on the text before CLI11 converts it).
+// common/command_line/number_options.hpp: the one rule every number given on a command line of
+// oasisc, oasis-sim and oasis-go1 passes (CLI11 validators, checked on the text before CLI11
+// converts it).
 //
 // Why not CLI11's own: PositiveNumber, NonNegativeNumber and Range let "nan" through (every
 // comparison with NaN is false), an unsigned option takes "-1" as 2^64 - 1, and a range error

@@ -8,8 +8,8 @@
 //   several inputs whose outputs get the same name (a/x.aut and b/x.aut both to DIR/x.json):
 //   the second replaces the first, and the first result is lost without a word.
 // plain_file_name_problem() refuses the first; first_shared_output() finds the second, so that
-// a command refuses it before any work, naming both inputs. common/command_line/output_names.hpp makes
-// the first a CLI11 check.
+// a command refuses it before any work, naming both inputs. common/command_line/output_names.hpp
+// makes the first a CLI11 check.
 #pragma once
 
 #include <cstddef>

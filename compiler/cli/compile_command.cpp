@@ -12,9 +12,9 @@
 #include <set>
 
 #include "cli/commands.hpp"
+#include "codegen/catalog_files.hpp"
 #include "command_line/number_options.hpp"
 #include "command_line/output_names.hpp"
-#include "codegen/catalog_files.hpp"
 #include "model/catalog_data.hpp"
 #include "oasis/rt/catalog_sections.hpp"
 #include "oasis/rt/spec_hash.hpp"

@@ -3,9 +3,9 @@
 #include <algorithm>
 
 #include "frontend/checker.hpp"
-#include "support/input_validation.hpp"
 #include "frontend/lexer.hpp"
 #include "frontend/parser.hpp"
+#include "support/input_validation.hpp"
 
 namespace oasis::frontend {
 

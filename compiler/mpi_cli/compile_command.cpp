@@ -10,9 +10,9 @@
 #include <sstream>
 #include <string>
 
+#include "codegen/catalog_files.hpp"
 #include "command_line/number_options.hpp"
 #include "command_line/output_names.hpp"
-#include "codegen/catalog_files.hpp"
 #include "distributed/context_spreading.hpp"
 #include "input/model_loader.hpp"
 #include "mpi_cli/commands.hpp"

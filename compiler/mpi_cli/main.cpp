@@ -5,8 +5,8 @@
 //
 // The command line follows oasisc's rules, from the same pieces: usage errors exit 2 (CLI11's
 // own codes never reach the shell), no option takes an empty value, numbers pass
-// common/command_line/number_options.hpp, --memory-budget (per rank) ends in "out of memory" rather than
-// the OOM killer, and SIGINT, SIGTERM and SIGHUP take the unfinished output with them.
+// common/command_line/number_options.hpp, --memory-budget (per rank) ends in "out of memory" rather
+// than the OOM killer, and SIGINT, SIGTERM and SIGHUP take the unfinished output with them.
 
 #include <csignal>
 #include <iostream>

@@ -3,10 +3,10 @@
 #include <algorithm>
 #include <filesystem>
 
-#include "support/input_validation.hpp"
 #include "prism/checker.hpp"
 #include "prism/lexer.hpp"
 #include "prism/parser.hpp"
+#include "support/input_validation.hpp"
 
 namespace oasis::prism {
 

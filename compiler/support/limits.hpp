@@ -68,7 +68,7 @@ inline constexpr std::uint32_t kDefaultMaxStates = 20'000'000;
 // Diagnostics shown before a command stops (--max-errors).
 inline constexpr std::size_t kDefaultMaxErrors = 20;
 
-// The memory a command may allocate (--memory-budget): common/command_line/memory_budget.hpp, shared by
-// the three programs.
+// The memory a command may allocate (--memory-budget): common/command_line/memory_budget.hpp,
+// shared by the three programs.
 
 }  // namespace oasis::limits

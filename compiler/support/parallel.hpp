@@ -21,8 +21,8 @@ inline std::size_t thread_count(unsigned jobs, std::size_t items) {
 
 // Calls work(i) once for every i in [0, items), on up to thread_count(jobs, items) threads,
 // the calling one included; returns when all are done. If work(i) throws (std::bad_alloc when
-// the memory budget runs out, common/command_line/memory_budget.hpp), no further item is started and the
-// first exception is rethrown here once every thread has stopped; an exception escaping a
+// the memory budget runs out, common/command_line/memory_budget.hpp), no further item is started
+// and the first exception is rethrown here once every thread has stopped; an exception escaping a
 // std::thread would std::terminate the process instead. A thread that cannot be started
 // leaves its share to the others.
 template <class Work>

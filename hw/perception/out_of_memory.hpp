@@ -3,8 +3,8 @@
 // makes malloc fail); OpenCV, which throws a cv::Exception with code StsNoMem ("Failed to
 // allocate N bytes") instead; a thread that cannot get its stack. oasis-go1 and oasis-ros
 // report them all with the out-of-memory message of every program
-// (common/command_line/memory_option.hpp), never with OpenCV's or TBB's own text. C++17-clean: the ROS
-// edge includes it.
+// (common/command_line/memory_option.hpp), never with OpenCV's or TBB's own text. C++17-clean: the
+// ROS edge includes it.
 #include <exception>
 #include <new>
 #include <string_view>

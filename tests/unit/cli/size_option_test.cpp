@@ -1,5 +1,6 @@
-// Size options (--max-input-size, --max-spec-size) pass one rule (common/command_line/number_options.hpp,
-// size_text): CLI11 alone took "-1" as 2^64 - 1 bytes, which turned the limit off (issue 37).
+// Size options (--max-input-size, --max-spec-size) pass one rule
+// (common/command_line/number_options.hpp, size_text): CLI11 alone took "-1" as 2^64 - 1 bytes,
+// which turned the limit off (issue 37).
 
 #include <string>
 
