@@ -4,14 +4,17 @@
 
 #include "settings/checks.hpp"
 #include "settings/schema.hpp"
-#include "settings/schema_reader.hpp"
+#include "settings/settings_visitors.hpp"
+#include "yaml_schema/codecs.hpp"
+#include "yaml_schema/schema_reader.hpp"
 
 namespace oasis::hw::ros_node {
 namespace {
 
-using settings::detail::EnumCodec;
-using settings::detail::MillisecondsCodec;
-using settings::detail::TextCodec;
+using yaml_schema::BoolCodec;
+using yaml_schema::EnumCodec;
+using yaml_schema::MillisecondsCodec;
+using yaml_schema::TextCodec;
 
 const EnumCodec<InputMode> kModeCodec{
     {{"camera", InputMode::kCamera}, {"detections", InputMode::kDetections}}};
@@ -41,7 +44,7 @@ void describe_ros(V& v, S& s, const TopicCodec& topic) {
                 "camera (images through our perception) or detections (your tracker's output)");
         v.value("input_timeout_ms", s.input_timeout, MillisecondsCodec{50, 5000},
                 "no new decision this long after the last one's period: a zero Twist");
-        v.value("use_odom", s.use_odom, settings::detail::BoolCodec{},
+        v.value("use_odom", s.use_odom, BoolCodec{},
                 "the pose from the odom topic; false: integrate our own commands");
         v.value("base_frame", s.base_frame, TextCodec{}, "REP-105 body frame");
         v.value("odom_frame", s.odom_frame, TextCodec{}, "REP-105 odometry frame");
@@ -65,7 +68,7 @@ NodeSettings parse_node_settings(std::string_view yaml_text, std::string_view or
                                  const TopicNameRule& is_topic_name) {
   NodeSettings values;
   const TopicCodec topic{&is_topic_name};
-  settings::detail::parse_with_schema(
+  yaml_schema::parse_with_schema<settings::detail::SettingsVisitors>(
       yaml_text, origin, values,
       [&topic](auto& visitor, auto& node) {
         settings::detail::describe(visitor, node.go1);
@@ -77,7 +80,7 @@ NodeSettings parse_node_settings(std::string_view yaml_text, std::string_view or
 }
 
 NodeSettings load_node_settings(const std::string& file, const TopicNameRule& is_topic_name) {
-  return parse_node_settings(settings::detail::read_yaml_file(file), file, is_topic_name);
+  return parse_node_settings(yaml_schema::read_yaml_file(file), file, is_topic_name);
 }
 
 std::string to_string(InputMode mode) {

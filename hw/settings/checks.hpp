@@ -7,15 +7,11 @@
 #include <vector>
 
 #include "settings/settings.hpp"
+#include "yaml_schema/cross_problem.hpp"
 
 namespace oasis::hw::settings::detail {
 
-// A problem between two keys: reported at `key` if the file wrote it, else at `other_key`.
-struct CrossProblem {
-  std::string key;
-  std::string other_key;
-  std::string message;
-};
+using yaml_schema::CrossProblem;
 
 // Every cross-key problem of settings whose keys are each valid on their own.
 std::vector<CrossProblem> cross_check(const Go1Settings& settings);

@@ -5,7 +5,7 @@
 #include <map>
 
 #include "settings/schema.hpp"
-#include "settings/schema_flattener.hpp"
+#include "yaml_schema/schema_flattener.hpp"
 
 namespace oasis::hw::settings {
 

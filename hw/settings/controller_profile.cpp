@@ -8,18 +8,18 @@
 #include <string>
 
 #include "settings/profile_schema.hpp"
-#include "settings/schema_reader.hpp"
-#include "settings/schema_writer.hpp"
 #include "settings/settings_error.hpp"
 #include "settings/shipped_profiles.hpp"
+#include "yaml_schema/schema_reader.hpp"
+#include "yaml_schema/schema_writer.hpp"
 
 namespace oasis::hw::settings {
 namespace {
 
 constexpr std::string_view kSections = "description:, kind:, catalog:, filter:, evidence:";
 
-std::vector<detail::CrossProblem> profile_problems(const ControllerProfile& profile) {
-  std::vector<detail::CrossProblem> problems;
+std::vector<yaml_schema::CrossProblem> profile_problems(const ControllerProfile& profile) {
+  std::vector<yaml_schema::CrossProblem> problems;
   if (profile.kind == ControllerKind::kOracle && profile.catalog == ProfileCatalog::kFullState)
     problems.push_back({"catalog", "kind", "the oracle runs on the session's catalog"});
   return problems;
@@ -73,7 +73,7 @@ ControllerProfile parse_controller_profile(std::string_view yaml_text, std::stri
   ControllerProfile profile;
   profile.name = std::move(name);
   profile.origin = std::string(file_name);
-  detail::parse_with_schema(
+  yaml_schema::parse_with_schema(
       yaml_text, file_name, profile,
       [](auto& visitor, auto& values) { detail::describe_profile(visitor, values); },
       profile_problems, kSections);
@@ -81,7 +81,7 @@ ControllerProfile parse_controller_profile(std::string_view yaml_text, std::stri
 }
 
 ControllerProfile load_controller_profile(const std::filesystem::path& file) {
-  return parse_controller_profile(detail::read_yaml_file(file), file.string(),
+  return parse_controller_profile(yaml_schema::read_yaml_file(file), file.string(),
                                   file.stem().string());
 }
 
@@ -107,8 +107,9 @@ ControllerProfile find_controller_profile(std::string_view name_or_path, std::st
 }
 
 std::string profile_to_yaml(const ControllerProfile& profile) {
-  detail::Writer writer{"# Controller profile \"" + profile.name +
-                        "\" (hw/config/controllers/README.md), written by profile_to_yaml().\n"};
+  yaml_schema::Writer writer{
+      "# Controller profile \"" + profile.name +
+      "\" (hw/config/controllers/README.md), written by profile_to_yaml().\n"};
   detail::describe_profile(writer, profile);
   return writer.text();
 }

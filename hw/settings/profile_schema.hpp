@@ -2,8 +2,8 @@
 // reader, the writer and the checks, as schema.hpp is for the settings.
 #pragma once
 
-#include "settings/codecs.hpp"
 #include "settings/controller_profile.hpp"
+#include "settings/go1_codecs.hpp"
 
 namespace oasis::hw::settings::detail {
 

@@ -1,9 +1,11 @@
-// parse_settings() and load_settings(): the schema reader (schema_reader.hpp) walks
-// schema.hpp over the file, then the checks across keys run (checks.hpp).
+// parse_settings() and load_settings(): the schema reader (yaml_schema/schema_reader.hpp, with
+// the settings' own entries: settings_visitors.hpp) walks schema.hpp over the file, then the
+// checks across keys run (checks.hpp).
 
 #include "settings/checks.hpp"
 #include "settings/schema.hpp"
-#include "settings/schema_reader.hpp"
+#include "settings/settings_visitors.hpp"
+#include "yaml_schema/schema_reader.hpp"
 
 namespace oasis::hw::settings {
 namespace {
@@ -18,7 +20,7 @@ constexpr const char* kMovedToProfile =
 
 Go1Settings parse_settings(std::string_view yaml_text, std::string_view file_name) {
   Go1Settings settings = default_settings();
-  detail::parse_with_schema(
+  yaml_schema::parse_with_schema<detail::SettingsVisitors>(
       yaml_text, file_name, settings,
       [](auto& visitor, auto& values) { detail::describe(visitor, values); },
       [](const Go1Settings& values) { return detail::cross_check(values); },
@@ -31,7 +33,7 @@ Go1Settings parse_settings(std::string_view yaml_text, std::string_view file_nam
 }
 
 Go1Settings load_settings(const std::filesystem::path& file) {
-  return parse_settings(detail::read_yaml_file(file), file.string());
+  return parse_settings(yaml_schema::read_yaml_file(file), file.string());
 }
 
 }  // namespace oasis::hw::settings

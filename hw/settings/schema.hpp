@@ -11,7 +11,7 @@
 
 #include <numbers>
 
-#include "settings/codecs.hpp"
+#include "settings/go1_codecs.hpp"
 #include "settings/settings.hpp"
 
 namespace oasis::hw::settings::detail {

@@ -1,44 +1,14 @@
-// What is wrong with a settings file: every problem found, each in the compiler format
-//   FILE:LINE:COL: error: KEY: MESSAGE
-// followed by the offending source line and a caret under the column.
+// The settings' errors are the schema engine's (yaml_schema/settings_error.hpp): every problem
+// of a settings file, in the compiler format. Named here so that users of the settings need
+// not know the engine.
 #pragma once
 
-#include <stdexcept>
-#include <string>
-#include <vector>
+#include "yaml_schema/settings_error.hpp"
 
 namespace oasis::hw::settings {
 
-struct Diagnostic {
-  int line = 0;     // 1-based; 0: the problem has no place in the file (a missing file, a default)
-  int column = 0;   // 1-based
-  std::string key;  // dotted path, "robot.port"; empty for the file as a whole
-  std::string message;      // lower-case fragment: "expected an integer in 1..65535, got \"80x2\""
-  std::string source_line;  // the file's line `line`, for the caret; empty if none
-
-  // Written out, not defaulted: the hallway world (hw/sim), which hw/ros's ROS-facing files
-  // include, reaches this header, and those files compile as C++17.
-  bool operator==(const Diagnostic& other) const {
-    return line == other.line && column == other.column && key == other.key &&
-           message == other.message && source_line == other.source_line;
-  }
-  bool operator!=(const Diagnostic& other) const { return !(*this == other); }
-};
-
-// FILE:LINE:COL: error: KEY: MESSAGE, then the source line and a caret (if known).
-std::string format_diagnostic(const std::string& file, const Diagnostic& diagnostic);
-
-class SettingsError : public std::runtime_error {
- public:
-  // what() is every diagnostic formatted, in order of position in the file.
-  SettingsError(std::string file, std::vector<Diagnostic> diagnostics);
-
-  const std::string& file() const { return file_; }
-  const std::vector<Diagnostic>& diagnostics() const { return diagnostics_; }
-
- private:
-  std::string file_;
-  std::vector<Diagnostic> diagnostics_;
-};
+using yaml_schema::Diagnostic;
+using yaml_schema::format_diagnostic;
+using yaml_schema::SettingsError;
 
 }  // namespace oasis::hw::settings

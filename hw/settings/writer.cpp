@@ -1,9 +1,9 @@
-// settings_to_yaml(): the schema writer (schema_writer.hpp) prints every key of schema.hpp with
+// settings_to_yaml(): the schema writer (settings_visitors.hpp) prints every key of schema.hpp with
 // its value and comment. Its output for default_settings() is hw/config/go1.yaml, byte for byte
 // (a test holds the two together).
 
 #include "settings/schema.hpp"
-#include "settings/schema_writer.hpp"
+#include "settings/settings_visitors.hpp"
 
 namespace oasis::hw::settings {
 
@@ -20,7 +20,7 @@ constexpr std::string_view kBanner =
 }  // namespace detail
 
 std::string settings_to_yaml(const Go1Settings& settings) {
-  detail::Writer writer{std::string(detail::kBanner)};
+  detail::SettingsWriter writer{std::string(detail::kBanner)};
   detail::describe(writer, settings);
   return writer.text();
 }

@@ -13,7 +13,7 @@
 #include <vector>
 
 #include "perception/depth_noise.hpp"
-#include "settings/settings_error.hpp"
+#include "yaml_schema/settings_error.hpp"
 
 namespace oasis::hw::sim {
 
@@ -115,7 +115,8 @@ struct HallwayScenario {
 };
 
 // Reads a scenario file; absent keys keep their defaults, unknown keys and values out of range
-// are errors. Throws settings::SettingsError (FILE:LINE:COL: error: KEY: MESSAGE, every problem).
+// are errors. Throws yaml_schema::SettingsError (FILE:LINE:COL: error: KEY: MESSAGE, every
+// problem).
 HallwayScenario load_scenario(const std::filesystem::path& file);
 HallwayScenario parse_scenario(std::string_view yaml_text, std::string_view file_name);
 

@@ -1,20 +1,20 @@
 // load_scenario(), parse_scenario(), scenario_to_yaml(), differing_keys(): the schema reader,
-// writer and flattener of hw/settings walk scenario_schema.hpp.
+// writer and flattener of hw/yaml_schema walk scenario_schema.hpp.
 
 #include <map>
 #include <utility>
 
-#include "settings/schema_flattener.hpp"
-#include "settings/schema_reader.hpp"
-#include "settings/schema_writer.hpp"
 #include "sim/scenario_schema.hpp"
+#include "yaml_schema/schema_flattener.hpp"
+#include "yaml_schema/schema_reader.hpp"
+#include "yaml_schema/schema_writer.hpp"
 
 namespace oasis::hw::sim {
 
 namespace detail {
 namespace {
 
-using settings::detail::CrossProblem;
+using yaml_schema::CrossProblem;
 
 constexpr std::string_view kBanner =
     "# The hallway scenario of `oasis-go1 sim` (hw/sim/README.md), written by\n"
@@ -26,8 +26,8 @@ void check_order(double low, double high, std::string low_key, std::string high_
                  std::vector<CrossProblem>& problems) {
   if (low <= high) return;
   problems.push_back({low_key, high_key,
-                      settings::detail::format_real(low) + " is above " + high_key + " (" +
-                          settings::detail::format_real(high) + ")"});
+                      yaml_schema::format_real(low) + " is above " + high_key + " (" +
+                          yaml_schema::format_real(high) + ")"});
 }
 
 }  // namespace
@@ -66,7 +66,7 @@ std::vector<CrossProblem> cross_check(const HallwayScenario& s) {
   if (s.treat.hand_offs_max > 0 && needed > s.trial.duration_s)
     problems.push_back({"treat.hand_offs_max", "trial.duration_s",
                         std::to_string(s.treat.hand_offs_max) + " hand-offs need " +
-                            settings::detail::format_real(needed) +
+                            yaml_schema::format_real(needed) +
                             " s (first_after_s + last_before_s + gaps), more than the trial"});
   return problems;
 }
@@ -75,7 +75,7 @@ std::vector<CrossProblem> cross_check(const HallwayScenario& s) {
 
 HallwayScenario parse_scenario(std::string_view yaml_text, std::string_view file_name) {
   HallwayScenario scenario;
-  settings::detail::parse_with_schema(
+  yaml_schema::parse_with_schema(
       yaml_text, file_name, scenario,
       [](auto& visitor, auto& values) { detail::describe(visitor, values); },
       [](const HallwayScenario& values) { return detail::cross_check(values); },
@@ -84,17 +84,17 @@ HallwayScenario parse_scenario(std::string_view yaml_text, std::string_view file
 }
 
 HallwayScenario load_scenario(const std::filesystem::path& file) {
-  return parse_scenario(settings::detail::read_yaml_file(file), file.string());
+  return parse_scenario(yaml_schema::read_yaml_file(file), file.string());
 }
 
 std::string scenario_to_yaml(const HallwayScenario& scenario) {
-  settings::detail::Writer writer{std::string(detail::kBanner)};
+  yaml_schema::Writer writer{std::string(detail::kBanner)};
   detail::describe(writer, scenario);
   return writer.text();
 }
 
 std::vector<std::string> differing_keys(const HallwayScenario& a, const HallwayScenario& b) {
-  settings::detail::SchemaFlattener flat_a, flat_b;
+  yaml_schema::SchemaFlattener flat_a, flat_b;
   detail::describe(flat_a, a);
   detail::describe(flat_b, b);
   std::vector<std::string> keys;

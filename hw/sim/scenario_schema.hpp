@@ -1,25 +1,25 @@
 // The YAML layout of HallwayScenario, written once: every section and key in file order, the
 // field it sets, its codec (type and range) and its comment. The reader, the writer and the
-// comparison are visitors of describe() (hw/settings/schema_reader.hpp, schema_writer.hpp),
+// comparison are visitors of describe() (hw/yaml_schema/schema_reader.hpp, schema_writer.hpp),
 // so a key cannot exist in one and not in the others.
 #pragma once
 
 #include <string>
 #include <vector>
 
-#include "settings/checks.hpp"
-#include "settings/codecs.hpp"
 #include "sim/scenario.hpp"
+#include "yaml_schema/codecs.hpp"
+#include "yaml_schema/cross_problem.hpp"
 
 namespace oasis::hw::sim::detail {
 
-using settings::detail::closed;
-using settings::detail::IntegerCodec;
-using settings::detail::non_negative;
-using settings::detail::positive;
-using settings::detail::RealCodec;
+using yaml_schema::closed;
+using yaml_schema::IntegerCodec;
+using yaml_schema::non_negative;
+using yaml_schema::positive;
+using yaml_schema::RealCodec;
 
-inline const settings::detail::EnumCodec<HandOffStyle> kHandOffCodec{
+inline const yaml_schema::EnumCodec<HandOffStyle> kHandOffCodec{
     {{"meet", HandOffStyle::kMeet}, {"instant", HandOffStyle::kInstant}}};
 
 inline RealCodec<double> probability() {
@@ -159,6 +159,6 @@ void describe(V& v, S& s) {
 }
 
 // The problems between keys of a scenario whose keys are each valid on their own.
-std::vector<settings::detail::CrossProblem> cross_check(const HallwayScenario& scenario);
+std::vector<yaml_schema::CrossProblem> cross_check(const HallwayScenario& scenario);
 
 }  // namespace oasis::hw::sim::detail

@@ -6,16 +6,16 @@
 #include <string>
 
 #include "fuzz_target.hpp"
-#include "settings/settings_error.hpp"
 #include "sim/scenario.hpp"
 #include "sim/scenario_schema.hpp"
+#include "yaml_schema/settings_error.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   using namespace oasis::hw;
   sim::HallwayScenario scenario;
   try {
     scenario = sim::parse_scenario(oasis::fuzz::text_of(data, size), "fuzz.yaml");
-  } catch (const settings::SettingsError& error) {
+  } catch (const yaml_schema::SettingsError& error) {
     FUZZ_REQUIRE(std::string(error.what()).find("fuzz.yaml") != std::string::npos);
     return 0;
   }
@@ -24,7 +24,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     const sim::HallwayScenario back =
         sim::parse_scenario(sim::scenario_to_yaml(scenario), "written.yaml");
     FUZZ_REQUIRE(sim::differing_keys(scenario, back).empty());
-  } catch (const settings::SettingsError& error) {
+  } catch (const yaml_schema::SettingsError& error) {
     oasis::fuzz::broken(error.what(), __FILE__, __LINE__);  // accepted, written, refused
   }
   return 0;

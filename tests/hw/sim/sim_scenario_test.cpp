@@ -6,9 +6,9 @@
 
 #include <gtest/gtest.h>
 
-#include "settings/schema_reader.hpp"
-#include "settings/settings_error.hpp"
 #include "sim/scenario.hpp"
+#include "yaml_schema/schema_reader.hpp"
+#include "yaml_schema/settings_error.hpp"
 
 namespace oasis::hw::sim {
 namespace {
@@ -19,7 +19,7 @@ using Keys = std::vector<std::string>;
 std::string error_of(const std::string& yaml) {
   try {
     parse_scenario(yaml, "hallway.yaml");
-  } catch (const settings::SettingsError& e) {
+  } catch (const yaml_schema::SettingsError& e) {
     return e.what();
   }
   return "";
@@ -31,7 +31,7 @@ TEST(SimScenario, HallwayYamlLoadsToTheDefaults) {
 
 TEST(SimScenario, HallwayYamlIsTheDefaultsPrintedWithEveryKey) {
   const std::string expected = scenario_to_yaml(HallwayScenario{});
-  if (settings::detail::read_yaml_file(OASIS_SHIPPED_HALLWAY_YAML) == expected) return;
+  if (yaml_schema::read_yaml_file(OASIS_SHIPPED_HALLWAY_YAML) == expected) return;
   const std::string fresh = std::filesystem::absolute("hallway.yaml.expected").string();
   std::ofstream(fresh, std::ios::binary) << expected;
   ADD_FAILURE() << OASIS_SHIPPED_HALLWAY_YAML << " is not scenario_to_yaml(HallwayScenario{}).\n"

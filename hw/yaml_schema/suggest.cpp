@@ -1,9 +1,9 @@
-#include "settings/suggest.hpp"
+#include "yaml_schema/suggest.hpp"
 
 #include <algorithm>
 #include <cctype>
 
-namespace oasis::hw::settings::detail {
+namespace oasis::hw::yaml_schema {
 
 namespace {
 
@@ -54,4 +54,4 @@ std::optional<std::string> closest_candidate(std::string_view word,
   return best;
 }
 
-}  // namespace oasis::hw::settings::detail
+}  // namespace oasis::hw::yaml_schema

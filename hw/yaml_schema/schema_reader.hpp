@@ -1,8 +1,10 @@
-// The schema reader shared by every YAML file of hw/ (the oasis-go1 settings, the hallway
-// scenario of hw/sim): yaml-cpp builds the node tree, the Reader visitor walks a schema's
-// describe() over it, and every problem becomes a Diagnostic at the node's line and column.
-// A schema is a function template describe(visitor, values) calling section() and value()
-// (and, for the Go1 settings, bands() and actions()); see schema.hpp.
+// The schema reader shared by every YAML file of hw/ (the oasis-go1 settings, the controller
+// profiles, the hallway scenario of hw/sim): yaml-cpp builds the node tree, the Reader visitor
+// walks a schema's describe() over it, and every problem becomes a Diagnostic at the node's
+// line and column. A schema is a function template describe(visitor, values) calling
+// section() and value(); a schema with entries of its own kind (the Go1 settings' colour bands
+// and action table) reads them with visitors derived from KeyLister and Reader, which it
+// passes to parse_with_schema() (hw/settings/settings_visitors.hpp).
 #pragma once
 
 #include <algorithm>
@@ -17,12 +19,12 @@
 #include <yaml-cpp/depthguard.h>  // YAML::DeepRecursion: yaml.h does not include it
 #include <yaml-cpp/yaml.h>
 
-#include "settings/checks.hpp"
-#include "settings/codecs.hpp"
-#include "settings/settings_error.hpp"
-#include "settings/suggest.hpp"
+#include "yaml_schema/codecs.hpp"
+#include "yaml_schema/cross_problem.hpp"
+#include "yaml_schema/settings_error.hpp"
+#include "yaml_schema/suggest.hpp"
 
-namespace oasis::hw::settings::detail {
+namespace oasis::hw::yaml_schema {
 
 std::vector<std::string> split_lines(std::string_view text);
 std::string in_quotes(std::string_view text);
@@ -49,31 +51,25 @@ class KeyLister {
   void value(std::string_view key, const T&, const Codec&, std::string_view) {
     add(key);
   }
-  template <class T>
-  void bands(std::string_view key, const T&, std::string_view) {
-    add(key);
-  }
-  template <class T>
-  void actions(std::string_view key, const T&, std::string_view) {
-    add(key);
-  }
 
   std::vector<std::string> paths;
 
- private:
+ protected:
   void add(std::string_view key) {
     std::string path;
     for (const std::string& part : prefix_)
       path += part + ".";
     paths.push_back(path + std::string(key));
   }
+
+ private:
   std::vector<std::string> prefix_;
 };
 
 // Every key path of a schema: `describe(lister)` walks it.
-template <class Describe>
+template <class Lister = KeyLister, class Describe>
 std::vector<std::string> schema_paths(Describe&& describe) {
-  KeyLister lister;
+  Lister lister;
   describe(lister);
   return lister.paths;
 }
@@ -94,8 +90,9 @@ class Reader {
         schema_paths_(std::move(schema_paths)),
         moved_(std::move(moved)) {}
 
-  // `describe(visitor)` walks the schema with this reader as the visitor; `sections` lists the
-  // top-level keys for the message when the file is not a mapping ("robot:, limits:, ...").
+  // `describe()` walks the schema with this reader (or the visitor derived from it) as the
+  // visitor; `sections` lists the top-level keys for the message when the file is not a
+  // mapping ("robot:, limits:, ...").
   template <class Describe>
   void read(const YAML::Node& root, Describe&& describe, std::string_view sections) {
     if (!root.IsMap()) {
@@ -105,7 +102,7 @@ class Reader {
       return;
     }
     if (!open("", root)) return;
-    describe(*this);
+    describe();
     close();
   }
 
@@ -127,54 +124,6 @@ class Reader {
     if (entry) read_scalar(path_of(key), *entry, field, codec);
   }
 
-  void bands(std::string_view key, std::vector<HsvBand>& field, std::string_view) {
-    const std::optional<Entry> entry = take(key);
-    if (!entry) return;
-    const std::string path = path_of(key);
-    const YAML::Node& node = entry->value;
-    if (!node.IsSequence() || node.size() == 0) {
-      error(at(*entry), path,
-            "expected a list of HSV bands such as [{low: [0, 120, 70], high: [10, 255, 255]}], "
-            "got " +
-                what_node_is(node));
-      return;
-    }
-    std::vector<HsvBand> bands;
-    bool all_ok = true;
-    std::size_t index = 0;
-    for (const YAML::Node& item : node) {
-      const std::string item_path = path + "[" + std::to_string(index++) + "]";
-      HsvBand band;
-      const bool ok = read_band(item_path, item, band);
-      all_ok = all_ok && ok;
-      bands.push_back(band);
-    }
-    if (all_ok) field = std::move(bands);
-  }
-
-  void actions(std::string_view key, std::vector<ActionVelocity>& field, std::string_view) {
-    const std::optional<Entry> entry = take(key);
-    if (!entry) return;
-    const std::string path = path_of(key);
-    if (!open(path, entry->value)) return;
-    std::vector<ActionVelocity> actions;
-    bool all_ok = true;
-    for (const Entry& action : accept_every_key()) {
-      ActionVelocity parsed{action.key, {}};
-      const bool ok = read_action(path + "." + action.key, action, parsed);
-      all_ok = all_ok && ok;
-      actions.push_back(parsed);
-    }
-    close();
-    if (all_ok && actions.empty()) {
-      error(at(*entry), path,
-            "expected at least one action: a mapping of action name -> {forward, lateral, "
-            "yaw_rate}");
-    } else if (all_ok) {
-      field = std::move(actions);
-    }
-  }
-
   // ---- results ----
 
   // Reports a cross-key problem at whichever of its two keys the file wrote.
@@ -190,7 +139,9 @@ class Reader {
 
   const std::vector<Diagnostic>& diagnostics() const { return diagnostics_; }
 
- private:
+ protected:
+  // For the visitors derived from this one: the entries of the mapping being read, taken by
+  // key, and where to report.
   struct Frame {
     std::string path;
     std::vector<Entry> entries;
@@ -320,74 +271,7 @@ class Reader {
     return false;
   }
 
-  bool read_band(const std::string& path, const YAML::Node& item, HsvBand& band) {
-    if (!open(path, item)) return false;
-    bool ok = true;
-    for (const std::string_view bound : {"low", "high"}) {
-      const std::optional<Entry> entry = take(bound);
-      if (!entry) {
-        error(item.Mark(), path,
-              "missing " + std::string(bound) + ": a band is {low: [h, s, v], high: [h, s, v]}");
-        ok = false;
-      } else if (!read_hsv(path + "." + std::string(bound), *entry,
-                           bound == "low" ? band.low : band.high)) {
-        ok = false;
-      }
-    }
-    close();
-    if (!ok) return false;
-    const std::string problem = band_problem(band);
-    if (problem.empty()) return true;
-    error(item.Mark(), path, problem);
-    return false;
-  }
-
-  bool read_hsv(const std::string& path, const Entry& entry, cv::Scalar& hsv) {
-    const YAML::Node& node = entry.value;
-    if (!node.IsSequence() || node.size() != 3) {
-      error(at(entry), path,
-            "expected [hue, saturation, value] such as [0, 120, 70], got " + what_node_is(node));
-      return false;
-    }
-    constexpr std::string_view kChannels[] = {"a hue", "a saturation", "a value"};
-    constexpr int kMax[] = {179, 255, 255};
-    bool ok = true;
-    for (int c = 0; c < 3; ++c) {
-      const YAML::Node element = node[static_cast<std::size_t>(c)];
-      const IntegerCodec<int> codec{0, kMax[c]};
-      int channel = 0;
-      if (element.IsScalar() && codec.parse(element.Scalar(), channel)) {
-        hsv[c] = channel;
-        continue;
-      }
-      error(element.Mark(), path,
-            "expected " + std::string(kChannels[c]) + " in 0.." + std::to_string(kMax[c]) +
-                ", got " + what_node_is(element));
-      ok = false;
-    }
-    return ok;
-  }
-
-  bool read_action(const std::string& path, const Entry& entry, ActionVelocity& action) {
-    if (!is_action_name(entry.key)) {
-      error(entry.key_mark, path,
-            "an action name is a letter or _ followed by letters, digits or _, as in the spec");
-      return false;
-    }
-    if (!open(path, entry.value, /*null_is_empty=*/true)) return false;
-    float* components[] = {&action.velocity.forward, &action.velocity.lateral,
-                           &action.velocity.yaw_rate};
-    bool ok = true;
-    for (std::size_t c = 0; c < 3; ++c) {
-      const std::optional<Entry> component = take(kActionComponents[c]);
-      if (component && !read_scalar(path_of(kActionComponents[c]), *component, *components[c],
-                                    RealCodec<float>{}))
-        ok = false;
-    }
-    close();
-    return ok;
-  }
-
+ private:
   std::vector<std::string> lines_;
   std::vector<std::string> schema_paths_;
   std::vector<std::pair<std::string, std::string>> moved_;
@@ -413,12 +297,19 @@ inline std::optional<std::size_t> second_document_line(std::string_view yaml_tex
   return std::nullopt;
 }
 
+// The visitors a plain schema is read with; a schema with entries of its own kind passes a
+// struct naming visitors derived from these.
+struct PlainVisitors {
+  using Lister = KeyLister;
+  using Reader = yaml_schema::Reader;
+};
+
 // Parses `yaml_text` into `values` (which start as the defaults) through the schema.
 // `cross_check(values)` returns the CrossProblems between keys; it runs only when every key is
 // valid on its own, since a failed key's default would only add confusing follow-up errors.
 // Throws SettingsError with every problem found.
 // `moved` lists keys of earlier versions and where they went (see Reader).
-template <class Values, class Describe, class CrossCheck>
+template <class Visitors = PlainVisitors, class Values, class Describe, class CrossCheck>
 void parse_with_schema(std::string_view yaml_text, std::string_view file_name, Values& values,
                        Describe&& describe, CrossCheck&& cross_check, std::string_view sections,
                        std::vector<std::pair<std::string, std::string>> moved = {}) {
@@ -455,14 +346,16 @@ void parse_with_schema(std::string_view yaml_text, std::string_view file_name, V
                                 {}}});
 
   const Values defaults = values;
-  Reader reader(yaml_text, schema_paths([&](auto& lister) { describe(lister, defaults); }),
-                std::move(moved));
+  typename Visitors::Reader reader(
+      yaml_text,
+      schema_paths<typename Visitors::Lister>([&](auto& lister) { describe(lister, defaults); }),
+      std::move(moved));
   reader.read(
-      document, [&](auto& visitor) { describe(visitor, values); }, sections);
+      document, [&] { describe(reader, values); }, sections);
   if (reader.diagnostics().empty())
     for (const CrossProblem& problem : cross_check(values))
       reader.report(problem);
   if (!reader.diagnostics().empty()) throw SettingsError(file, reader.diagnostics());
 }
 
-}  // namespace oasis::hw::settings::detail
+}  // namespace oasis::hw::yaml_schema

@@ -2,8 +2,10 @@
 //   expected()         what a valid value looks like, for messages ("an integer in 1..65535")
 //   parse(text, out)   true and `out` set if `text` is a valid value (range included)
 //   format(value)      YAML text that parse() reads back to the same value
-// and optionally suggest(text), a close valid spelling. One codec instance per key, in
-// schema.hpp; the reader, the writer and the checks all go through it, so they cannot disagree.
+// and optionally spellings(), the valid words a misspelt value is compared with. One codec
+// instance per key, in a schema; the reader, the writer and the checks all go through it, so
+// they cannot disagree. These are the codecs every schema may use; a schema adds its own
+// (hw/settings/go1_codecs.hpp).
 #pragma once
 
 #include <chrono>
@@ -15,9 +17,7 @@
 #include <utility>
 #include <vector>
 
-#include "settings/settings.hpp"
-
-namespace oasis::hw::settings::detail {
+namespace oasis::hw::yaml_schema {
 
 // Strict number parsing: the whole text, decimal, no spaces. A leading '+' is allowed.
 bool parse_int64(std::string_view text, std::int64_t& out);
@@ -180,7 +180,7 @@ struct EnumCodec {
   }
 };
 
-// A dotted-quad IPv4 address (the Go1 speaks IPv4 only; names are not resolved).
+// A dotted-quad IPv4 address; names are not resolved.
 struct Ipv4Codec {
   std::string expected() const { return "a dotted-quad IPv4 address such as 192.168.123.161"; }
   bool parse(std::string_view text, std::string& out) const;
@@ -193,29 +193,6 @@ struct TextCodec {
   std::string format(const std::string& value) const { return yaml_string(value); }
 };
 
-// "linked", or a path to a .bin catalog file.
-struct CatalogCodec {
-  std::string expected() const { return "linked, or a path to a .bin catalog file"; }
-  bool parse(std::string_view text, std::string& out) const;
-  std::string format(const std::string& value) const { return yaml_string(value); }
-};
-
-// "linked", "any", or a path to a .oasis spec: what a catalog must have been compiled from.
-struct CatalogSpecCodec {
-  std::string expected() const { return "linked, any, or a path to a .oasis spec"; }
-  bool parse(std::string_view text, std::string& out) const;
-  std::string format(const std::string& value) const { return yaml_string(value); }
-};
-
-// A controller profile: the name of a shipped one (hw/config/controllers/), or a path to a
-// .yaml profile (controller_profile.hpp).
-struct ControllerCodec {
-  std::string expected() const;
-  bool parse(std::string_view text, std::string& out) const;
-  std::string format(const std::string& value) const { return yaml_string(value); }
-  std::vector<std::string> spellings() const;
-};
-
 // The dotted path of `key` inside the sections `prefix` ("robot", "port" -> "robot.port"), as
 // errors and comparisons name keys.
 inline std::string dotted_key(const std::vector<std::string>& prefix, std::string_view key) {
@@ -225,12 +202,4 @@ inline std::string dotted_key(const std::vector<std::string>& prefix, std::strin
   return text + std::string(key);
 }
 
-// "synthetic", "camera", or "recorded:DIR".
-struct SourceCodec {
-  std::string expected() const { return "synthetic, camera, or recorded:DIR"; }
-  bool parse(std::string_view text, FrameSourceSetting& out) const;
-  std::string format(const FrameSourceSetting& value) const;
-  std::vector<std::string> spellings() const { return {"synthetic", "camera"}; }
-};
-
-}  // namespace oasis::hw::settings::detail
+}  // namespace oasis::hw::yaml_schema

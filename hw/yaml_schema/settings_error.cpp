@@ -1,4 +1,4 @@
-#include "settings/settings_error.hpp"
+#include "yaml_schema/settings_error.hpp"
 
 #include <algorithm>
 #include <string>
@@ -6,7 +6,7 @@
 
 #include "text/printable_text.hpp"
 
-namespace oasis::hw::settings {
+namespace oasis::hw::yaml_schema {
 
 namespace {
 
@@ -60,4 +60,4 @@ SettingsError::SettingsError(std::string file, std::vector<Diagnostic> diagnosti
       file_(std::move(file)),
       diagnostics_(in_file_order(std::move(diagnostics))) {}
 
-}  // namespace oasis::hw::settings
+}  // namespace oasis::hw::yaml_schema

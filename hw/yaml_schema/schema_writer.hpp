@@ -1,32 +1,21 @@
 // The schema writer shared by every YAML file of hw/: the Writer visitor prints every key of a
 // schema's describe() with its value and comment, sections as nested mappings, top-level items
-// separated by blank lines. Files written by it are read back by schema_reader.hpp.
+// separated by blank lines. Files written by it are read back by schema_reader.hpp. A schema
+// with entries of its own kind writes them with a visitor derived from this one.
 #pragma once
 
 #include <algorithm>
-#include <cmath>
 #include <string>
 #include <string_view>
 #include <utility>
 #include <vector>
 
-#include "settings/codecs.hpp"
+#include "yaml_schema/codecs.hpp"
 
-namespace oasis::hw::settings::detail {
+namespace oasis::hw::yaml_schema {
 
 // Comments start in this column (0-based) unless the text is longer.
 constexpr std::size_t kCommentColumn = 40;
-
-inline std::string channel_text(double value) {
-  if (value == std::floor(value) && std::fabs(value) < 1e9)
-    return std::to_string(static_cast<long long>(value));
-  return format_real(value);
-}
-
-inline std::string hsv_text(const cv::Scalar& hsv) {
-  return "[" + channel_text(hsv[0]) + ", " + channel_text(hsv[1]) + ", " + channel_text(hsv[2]) +
-         "]";
-}
 
 class Writer {
  public:
@@ -38,43 +27,13 @@ class Writer {
     begin_item();
     comment_block(comment);
     add(std::string(key) + ":", "");
-    ++depth_;
-    body();
-    --depth_;
+    nested(body);
   }
 
   template <class T, class Codec>
   void value(std::string_view key, const T& field, const Codec& codec, std::string_view comment) {
     begin_item();
     add(std::string(key) + ": " + codec.format(field), comment);
-  }
-
-  void bands(std::string_view key, const std::vector<HsvBand>& bands, std::string_view comment) {
-    add(std::string(key) + ":", comment);
-    ++depth_;
-    for (const HsvBand& band : bands)
-      add("- {low: " + hsv_text(band.low) + ", high: " + hsv_text(band.high) + "}", "");
-    --depth_;
-  }
-
-  void actions(std::string_view key, const std::vector<ActionVelocity>& actions,
-               std::string_view comment) {
-    begin_item();
-    comment_block(comment);
-    add(std::string(key) + ":", "");
-    std::size_t width = 0;
-    for (const ActionVelocity& entry : actions)
-      width = std::max(width, yaml_string(entry.action).size());
-    ++depth_;
-    for (const ActionVelocity& entry : actions) {
-      std::string name = yaml_string(entry.action) + ":";
-      name.resize(width + 1, ' ');
-      const go1::VelocityCommand& v = entry.velocity;
-      add(name + " {forward: " + format_real(v.forward) + ", lateral: " + format_real(v.lateral) +
-              ", yaw_rate: " + format_real(v.yaw_rate) + "}",
-          "");
-    }
-    --depth_;
   }
 
   std::string text() const {
@@ -90,12 +49,7 @@ class Writer {
     return out;
   }
 
- private:
-  struct Line {
-    std::string text;
-    std::string comment;
-  };
-
+ protected:
   // Top-level items are separated by a blank line.
   void begin_item() {
     if (depth_ == 0) lines_.push_back({"", ""});
@@ -113,6 +67,20 @@ class Writer {
     lines_.push_back({indent() + std::move(text), std::string(comment)});
   }
 
+  // Writes what `body()` adds one level deeper.
+  template <class Body>
+  void nested(Body&& body) {
+    ++depth_;
+    body();
+    --depth_;
+  }
+
+ private:
+  struct Line {
+    std::string text;
+    std::string comment;
+  };
+
   std::string indent() const { return std::string(2 * depth_, ' '); }
 
   std::string banner_;
@@ -120,4 +88,4 @@ class Writer {
   std::size_t depth_ = 0;
 };
 
-}  // namespace oasis::hw::settings::detail
+}  // namespace oasis::hw::yaml_schema

@@ -8,9 +8,9 @@
 #include <utility>
 #include <vector>
 
-#include "settings/codecs.hpp"
+#include "yaml_schema/codecs.hpp"
 
-namespace oasis::hw::settings::detail {
+namespace oasis::hw::yaml_schema {
 
 class SchemaFlattener {
  public:
@@ -38,4 +38,4 @@ class SchemaFlattener {
   std::vector<std::string> prefix_;
 };
 
-}  // namespace oasis::hw::settings::detail
+}  // namespace oasis::hw::yaml_schema

@@ -6,7 +6,7 @@
 #include <string_view>
 #include <vector>
 
-namespace oasis::hw::settings::detail {
+namespace oasis::hw::yaml_schema {
 
 // Edit distance counting an insertion, a deletion, a substitution or a swap of two adjacent
 // characters as one edit (optimal string alignment), ignoring ASCII case.
@@ -17,4 +17,4 @@ std::size_t edit_distance(std::string_view a, std::string_view b);
 std::optional<std::string> closest_candidate(std::string_view word,
                                              const std::vector<std::string>& candidates);
 
-}  // namespace oasis::hw::settings::detail
+}  // namespace oasis::hw::yaml_schema

@@ -1,6 +1,6 @@
 // The helpers of schema_reader.hpp that need no template.
 
-#include "settings/schema_reader.hpp"
+#include "yaml_schema/schema_reader.hpp"
 
 #include <cstddef>
 #include <filesystem>
@@ -9,7 +9,7 @@
 
 #include "files/input_file.hpp"
 
-namespace oasis::hw::settings::detail {
+namespace oasis::hw::yaml_schema {
 
 std::vector<std::string> split_lines(std::string_view text) {
   std::vector<std::string> lines;
@@ -82,4 +82,4 @@ std::string read_yaml_file(const std::filesystem::path& file) {
   return std::move(*text);
 }
 
-}  // namespace oasis::hw::settings::detail
+}  // namespace oasis::hw::yaml_schema
