@@ -9,7 +9,7 @@ namespace {
 
 constexpr int kQuantumBits = 48;  // probabilities are multiples of 2^-48
 
-// The constants of the tolerance (gaussian_axis.hpp says where each comes from): the error of
+// The constants of the tolerance (grid_gaussian_axis.hpp says where each comes from): the error of
 // one tail evaluation, 1e-14, and a bound on the truncated mass, 1e-12 > P(|Z| >= 7.2).
 Rational tail_error() {
   return Rational(1, 100'000'000'000'000L);

@@ -1,6 +1,6 @@
 #pragma once
 // The syntax tree of a PRISM program, as written: names unresolved, nothing evaluated.
-// program_checker.cpp resolves and lowers it.
+// checker.cpp resolves and lowers it (expressions: expression_lowering.cpp).
 
 #include <optional>
 #include <string>

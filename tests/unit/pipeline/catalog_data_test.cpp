@@ -120,7 +120,7 @@ TEST(CatalogData, SpecHashIsFnv1a64) {
             rt::spec_hash(text));
 }
 
-// oasisc hashes the bytes its front end or reader parsed, once (cli/model_loader.cpp): the
+// oasisc hashes the bytes its front end or reader parsed, once (input/model_loader.cpp): the
 // catalog it writes carries rt::spec_hash of the input file, for a spec and an import alike.
 TEST(CatalogData, ACompiledCatalogCarriesTheHashOfItsInputsBytes) {
   const test::ScratchDirectory scratch("oasis_spec_hash");
