@@ -43,7 +43,7 @@ struct SenderOptions {
   bool check_state_crc = true;
   // The SDK example sends every 2 ms and its comment allows 1-10 ms (NOTES §1 "Rate").
   double rate_hz = 500.0;
-  std::chrono::milliseconds watchdog_timeout{200};
+  std::chrono::milliseconds watchdog_timeout = kDefaultWatchdogTimeout;
   std::chrono::milliseconds stop_hold{300};
   std::chrono::milliseconds shutdown_stand_hold{100};
   MotionLimits limits;

@@ -8,6 +8,11 @@
 
 namespace oasis::hw::go1 {
 
+// How long the robot may go without a fresh command before it is stopped: the sender's default
+// (SenderOptions::watchdog_timeout; robot.watchdog_ms in oasis-go1's settings). One control
+// period of the Go1 treat spec (0.2 s), so the loops repeat their command between decisions.
+inline constexpr std::chrono::milliseconds kDefaultWatchdogTimeout{200};
+
 enum class SafetyAction { kPass, kStop, kStand };
 
 class Watchdog {

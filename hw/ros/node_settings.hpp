@@ -14,6 +14,7 @@
 #include <string>
 #include <string_view>
 
+#include "go1/watchdog.hpp"
 #include "ros/input_topics.hpp"
 #include "settings/settings.hpp"
 
@@ -24,8 +25,9 @@ struct RosSettings {
   RosTopics topics;
   // The fail-safe: a decision is repeated on cmd_vel every loop.keepalive_ms for one control
   // period; when no new one comes for this long after that, the node publishes a zero Twist
-  // (and repeats it), as the Go1 sender's watchdog stops the robot 200 ms after the loop stalls.
-  std::chrono::milliseconds input_timeout{200};
+  // (and repeats it), as the Go1 sender's watchdog stops the robot go1::kDefaultWatchdogTimeout
+  // after the loop stalls.
+  std::chrono::milliseconds input_timeout = go1::kDefaultWatchdogTimeout;
   // True: the robot's pose comes from `topics.odom` (needed to hold an unseen person's place
   // while the robot moves). False: the node integrates its own commands, as a dry run does.
   bool use_odom = true;

@@ -45,9 +45,9 @@ enum class MissingHuman {
   kOutside,   // a position outside the spec's domain, so the filter locates them "outside"
 };
 
-// The sender's own defaults (go1/sender.hpp), the watchdog's 200 ms included: between its 5 Hz
-// decisions the loop repeats the current command every loop.keepalive_ms (50 ms), so the
-// watchdog fires only when the loop stalls, and the robot stops 200 ms after it did.
+// The sender's own defaults (go1/sender.hpp), go1::kDefaultWatchdogTimeout included: between
+// its 5 Hz decisions the loop repeats the current command every loop.keepalive_ms (50 ms), so
+// the watchdog fires only when the loop stalls, and the robot stops one timeout after it did.
 go1::SenderOptions default_link_options();
 
 // Where frames come from.

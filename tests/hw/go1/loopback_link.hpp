@@ -6,13 +6,14 @@
 
 #include "go1/endpoint.hpp"
 #include "go1/sender.hpp"
+#include "go1/watchdog.hpp"
 
 namespace oasis::hw::go1::test {
 
 using Clock = std::chrono::steady_clock;
 using std::chrono::milliseconds;
 
-constexpr milliseconds kWatchdogTimeout{200};
+constexpr milliseconds kWatchdogTimeout = kDefaultWatchdogTimeout;  // loopback_options keeps it
 constexpr milliseconds kSchedulingMargin{50};
 constexpr milliseconds kStopHold{100};
 
