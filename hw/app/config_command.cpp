@@ -6,7 +6,7 @@
 #include <string>
 
 #include "app/commands.hpp"
-#include "app/session.hpp"
+#include "loop/session.hpp"
 #include "settings/controller_profile.hpp"
 #include "settings/settings.hpp"
 
@@ -33,7 +33,7 @@ CommandRunner add_config_command(CLI::App& app) {
           settings::find_controller_profile(*controller, "--controller"));
       return 0;
     }
-    std::cout << settings::settings_to_yaml(settings_or_defaults(*file));
+    std::cout << settings::settings_to_yaml(loop::settings_or_defaults(*file));
     return 0;
   };
 }

@@ -9,6 +9,7 @@
 #include <CLI/CLI.hpp>
 
 #include "app/commands.hpp"
+#include "app/print_error.hpp"
 #include "command_line/empty_values.hpp"
 #include "command_line/memory_option.hpp"
 #include "perception/out_of_memory.hpp"
@@ -49,7 +50,7 @@ int main(int argc, char** argv) {
     return status == 0 ? 0 : 2;  // bad usage, distinct from 1 (an error in the input)
   }
   const std::optional<std::uint64_t> budget =
-      oasis::cli::apply_memory_budget_option(app, memory_budget, "oasis-go1");
+      oasis::cli::apply_memory_budget_option(app, memory_budget, oasis::hw::app::kProgram);
   if (!budget) return 2;
   try {
     for (const CLI::App* command : app.get_subcommands())
@@ -58,9 +59,9 @@ int main(int argc, char** argv) {
     // The robot was stopped on the way out (the loop's watchdog and the link's destructor).
     // OpenCV says it ran out of memory in its own words (perception/out_of_memory.hpp).
     if (oasis::hw::is_out_of_memory(e))
-      oasis::cli::report_out_of_memory("oasis-go1", *budget);
+      oasis::cli::report_out_of_memory(oasis::hw::app::kProgram, *budget);
     else
-      std::cerr << "oasis-go1: error: " << e.what() << '\n';
+      oasis::hw::app::print_error(e.what());
   }
   return 1;
 }

@@ -7,10 +7,10 @@
 #include <variant>
 
 #include "app/commands.hpp"
-#include "app/robot_link.hpp"
-#include "app/session.hpp"
 #include "camera/recording_writer.hpp"
 #include "command_line/number_options.hpp"
+#include "loop/robot_link.hpp"
+#include "loop/session.hpp"
 #include "settings/settings.hpp"
 
 namespace oasis::hw::app {
@@ -25,17 +25,17 @@ struct RecordRequest {
 };
 
 int record(const RecordRequest& request) {
-  settings::Go1Settings settings = settings_or_defaults(request.config);
-  settings.source = source_option(request.source);
-  const SessionCatalog catalog(settings.loop.catalog, settings.loop.catalog_spec);
-  DryRunLink standing;
-  SessionSource source = open_source(settings, catalog.view(), standing);
+  settings::Go1Settings settings = loop::settings_or_defaults(request.config);
+  settings.source = loop::source_option(request.source);
+  const loop::SessionCatalog catalog(settings.loop.catalog, settings.loop.catalog_spec);
+  loop::DryRunLink standing;
+  loop::SessionSource source = loop::open_source(settings, catalog.view(), standing);
   camera::RecordingWriter writer(request.folder, request.replace ? camera::ExistingFolder::kReplace
                                                                  : camera::ExistingFolder::kRefuse);
   for (std::uint64_t k = 0; k < request.frames; ++k) {
     NextFrame next = source.source->next();
     if (const SourceStop* stop = std::get_if<SourceStop>(&next)) {
-      if (stop->kind == SourceStop::Kind::kFailure) throw SetupError(stop->reason);
+      if (stop->kind == SourceStop::Kind::kFailure) throw loop::SetupError(stop->reason);
       break;
     }
     writer.write(std::get<Frame>(next),

@@ -9,16 +9,17 @@
 #include <string>
 
 #include "app/commands.hpp"
-#include "app/control_loop.hpp"
-#include "app/profile_controller.hpp"
-#include "app/session.hpp"
 #include "command_line/number_options.hpp"
 #include "go1/endpoint.hpp"
 #include "go1/sender.hpp"
 #include "go1/stop_signal.hpp"
+#include "go1/watchdog.hpp"
 #include "log/step_log_writer.hpp"
 #include "log/table2_metrics.hpp"
 #include "log/table2_report.hpp"
+#include "loop/control_loop.hpp"
+#include "loop/profile_controller.hpp"
+#include "loop/session.hpp"
 #include "settings/settings.hpp"
 
 namespace oasis::hw::app {
@@ -41,8 +42,8 @@ struct RunRequest {
 };
 
 settings::Go1Settings effective_settings(const RunRequest& request) {
-  settings::Go1Settings result = settings_or_defaults(request.config);
-  if (!request.source.empty()) result.source = source_option(request.source);
+  settings::Go1Settings result = loop::settings_or_defaults(request.config);
+  if (!request.source.empty()) result.source = loop::source_option(request.source);
   if (!request.catalog.empty()) result.loop.catalog = request.catalog;
   if (!request.catalog_spec.empty()) result.loop.catalog_spec = request.catalog_spec;
   if (!request.controller.empty()) result.loop.controller = request.controller;
@@ -52,21 +53,21 @@ settings::Go1Settings effective_settings(const RunRequest& request) {
       result.link.robot = go1::parse_endpoint(
           has_port ? request.robot : request.robot + ':' + std::to_string(result.link.robot.port));
     } catch (const std::exception& e) {
-      throw SetupError(std::string("--robot: ") + e.what());
+      throw loop::SetupError(std::string("--robot: ") + e.what());
     }
   }
   return result;
 }
 
-const char* end_text(LoopEnd end) {
+const char* end_text(loop::LoopEnd end) {
   switch (end) {
-    case LoopEnd::kStepLimit:
+    case loop::LoopEnd::kStepLimit:
       return "step limit reached";
-    case LoopEnd::kSourceEnded:
+    case loop::LoopEnd::kSourceEnded:
       return "the frame source ended";
-    case LoopEnd::kSourceFailed:
+    case loop::LoopEnd::kSourceFailed:
       return "the frame source failed";
-    case LoopEnd::kStopRequested:
+    case loop::LoopEnd::kStopRequested:
       return "stop signal";
   }
   return "?";
@@ -97,32 +98,33 @@ void print_score(const std::vector<log::StepRecord>& records) {
 
 int run_session(const RunRequest& request) {
   const settings::Go1Settings settings = effective_settings(request);
-  const SessionCatalog catalog(settings.loop.catalog, settings.loop.catalog_spec);
-  const settings::ControllerProfile profile = robot_profile(settings.loop.controller);
-  const std::unique_ptr<LoopController> controller =
-      make_controller(profile, {catalog.view(), controller_settings(settings, catalog.view()), {}});
+  const loop::SessionCatalog catalog(settings.loop.catalog, settings.loop.catalog_spec);
+  const settings::ControllerProfile profile = loop::robot_profile(settings.loop.controller);
+  const std::unique_ptr<loop::LoopController> controller = loop::make_controller(
+      profile, {catalog.view(), loop::controller_settings(settings, catalog.view()), {}});
 
   go1::install_stop_signal_handlers();
-  std::unique_ptr<RobotLink> link = open_link(settings, request.dry_run || request.replay,
-                                              std::chrono::milliseconds(request.robot_timeout_ms));
-  SessionSource source = open_source(settings, catalog.view(), *link);
+  std::unique_ptr<loop::RobotLink> link =
+      loop::open_link(settings, request.dry_run || request.replay,
+                      std::chrono::milliseconds(request.robot_timeout_ms));
+  loop::SessionSource source = loop::open_source(settings, catalog.view(), *link);
   std::optional<log::StepLogWriter> log_writer;
   if (!request.log_path.empty()) log_writer.emplace(request.log_path);
 
   Perception perception(settings.perception);
   std::vector<log::StepRecord> records;
-  LoopParts parts{*source.source,
-                  perception,
-                  *controller,
-                  *link,
-                  source.truth,
-                  [&](const log::StepRecord& record) {
-                    if (log_writer) log_writer->write(record);
-                    if (!request.quiet) print_step(record);
-                    records.push_back(record);
-                  },
-                  [] { return go1::stop_signal_received(); }};
-  LoopOptions options;
+  loop::LoopParts parts{*source.source,
+                        perception,
+                        *controller,
+                        *link,
+                        source.truth,
+                        [&](const log::StepRecord& record) {
+                          if (log_writer) log_writer->write(record);
+                          if (!request.quiet) print_step(record);
+                          records.push_back(record);
+                        },
+                        [] { return go1::stop_signal_received(); }};
+  loop::LoopOptions options;
   options.period_s = 1.0 / settings.loop.rate_hz;
   options.keepalive_s = std::chrono::duration<double>(settings.loop.keepalive).count();
   options.realtime = source.realtime_only || !(request.fast || request.replay);
@@ -132,9 +134,9 @@ int run_session(const RunRequest& request) {
             << source.description << "; " << link->describe()
             << (options.realtime ? "" : "; as fast as it computes") << '\n';
 
-  LoopResult result;
+  loop::LoopResult result;
   try {
-    result = run_loop(parts, options);
+    result = loop::run_loop(parts, options);
   } catch (...) {
     link->shut_down();
     throw;
@@ -147,13 +149,13 @@ int run_session(const RunRequest& request) {
             << (request.dry_run || request.replay ? "" : "; the robot was told to stop and stand")
             << '\n';
   if (!request.quiet) print_score(records);
-  if (result.end == LoopEnd::kStopRequested && go1::received_stop_signal() != 0) {
+  if (result.end == loop::LoopEnd::kStopRequested && go1::received_stop_signal() != 0) {
     // Die of the signal, as a program interrupted should, now that the robot stands.
     std::cout.flush();
     go1::restore_default_signal_handlers();
     std::raise(go1::received_stop_signal());
   }
-  return result.end == LoopEnd::kSourceFailed ? 1 : 0;
+  return result.end == loop::LoopEnd::kSourceFailed ? 1 : 0;
 }
 
 void add_common_options(CLI::App& command, RunRequest& request) {
@@ -204,8 +206,10 @@ CommandRunner add_run_command(CLI::App& app) {
                     "clock, run each step as soon as the last is done");
   command->footer(
       "Without --dry-run the robot must answer within --robot-timeout-ms, or nothing starts. "
-      "The robot stops within 200 ms when the loop stalls, and on Ctrl-C, SIGTERM or SIGHUP it "
-      "is told to stop, then to stand.");
+      "The robot stops within " +
+      std::to_string(go1::kDefaultWatchdogTimeout.count()) +
+      " ms when the loop stalls, and on Ctrl-C, SIGTERM or SIGHUP it is told to stop, then to "
+      "stand.");
   return [request] {
     if (request->fast && !request->dry_run)
       throw std::invalid_argument("--fast needs --dry-run: a robot moves in real time");

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "app/commands.hpp"
+#include "app/print_error.hpp"
 #include "command_line/number_options.hpp"
 #include "log/log_error.hpp"
 #include "log/step_log_reader.hpp"
@@ -33,7 +34,7 @@ int score(const ScoreRequest& request) {
       for (const std::string& warning : step_log.warnings)
         std::cerr << warning << '\n';  // already "FILE:LINE: warning: ..."
       if (step_log.records.empty()) {  // nothing to score is an error, not a table of zeros
-        std::cerr << path << ": error: the log has no steps to score\n";
+        print_error("the log has no steps to score", path);
         return 1;
       }
       trials.push_back(log::score_trial(step_log.records, options));
@@ -42,7 +43,7 @@ int score(const ScoreRequest& request) {
     std::cerr << e.what() << '\n';
     return 1;
   } catch (const std::invalid_argument& e) {  // a log whose time does not advance
-    std::cerr << "oasis-go1: error: " << e.what() << '\n';
+    print_error(e.what());
     return 1;
   }
   const log::Table2Summary summary = log::summarize_trials(trials);

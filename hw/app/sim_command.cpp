@@ -14,13 +14,13 @@
 #include <vector>
 
 #include "app/commands.hpp"
-#include "app/profile_controller.hpp"
-#include "app/session.hpp"
-#include "app/sim_trial.hpp"
 #include "command_line/number_options.hpp"
 #include "log/step_log_writer.hpp"
 #include "log/table2_metrics.hpp"
 #include "log/table2_report.hpp"
+#include "loop/profile_controller.hpp"
+#include "loop/session.hpp"
+#include "loop/sim_trial.hpp"
 #include "sim/trial_svg.hpp"
 
 namespace oasis::hw::app {
@@ -55,9 +55,9 @@ std::string trial_name(const std::string& controller, int trial) {
   return text;
 }
 
-SimTrialSetup trial_setup(const SimRequest& request, const settings::Go1Settings& settings,
-                          const rt::CatalogView& catalog) {
-  SimTrialSetup setup;
+loop::SimTrialSetup trial_setup(const SimRequest& request, const settings::Go1Settings& settings,
+                                const rt::CatalogView& catalog) {
+  loop::SimTrialSetup setup;
   setup.scenario =
       request.scenario.empty() ? sim::HallwayScenario{} : sim::load_scenario(request.scenario);
   setup.path = request.perception == "rendered" ? sim::ObservationPath::kRendered
@@ -66,13 +66,13 @@ SimTrialSetup trial_setup(const SimRequest& request, const settings::Go1Settings
   setup.intrinsics = settings.camera.intrinsics;
   setup.depth_scale_m_per_unit = settings.camera.depth_scale_m_per_unit;
   setup.perception = settings.perception;
-  setup.controller = controller_settings(settings, catalog);
+  setup.controller = loop::controller_settings(settings, catalog);
   setup.max_steps = request.steps;
   return setup;
 }
 
-void write_outputs(const SimRequest& request, const std::string& name, const SimTrialResult& result,
-                   double hallway_width_m) {
+void write_outputs(const SimRequest& request, const std::string& name,
+                   const loop::SimTrialResult& result, double hallway_width_m) {
   if (!request.logs.empty()) {
     log::StepLogWriter writer(std::filesystem::path(request.logs) / (name + ".jsonl"));
     for (const log::StepRecord& record : result.records)
@@ -83,13 +83,13 @@ void write_outputs(const SimRequest& request, const std::string& name, const Sim
                                sim::trial_svg(result.trace, name, hallway_width_m));
 }
 
-log::Table2Summary run_controller(const SimRequest& request, const SimTrialSetup& setup,
+log::Table2Summary run_controller(const SimRequest& request, const loop::SimTrialSetup& setup,
                                   const rt::CatalogView& catalog,
                                   const settings::ControllerProfile& profile) {
   std::vector<log::TrialScore> scores;
   for (int trial = 0; trial < request.trials; ++trial) {
-    const SimTrialResult result =
-        run_sim_trial(catalog, setup, profile, trial_seed(request.seed, trial));
+    const loop::SimTrialResult result =
+        loop::run_sim_trial(catalog, setup, profile, trial_seed(request.seed, trial));
     write_outputs(request, trial_name(profile.name, trial), result, setup.scenario.hallway.width_m);
     log::ScoreOptions options;
     options.period_s = setup.period_s;
@@ -111,7 +111,7 @@ std::vector<settings::ControllerProfile> requested_profiles(const SimRequest& re
     try {
       profiles.push_back(settings::find_controller_profile(name, "--controllers"));
     } catch (const std::invalid_argument& e) {
-      throw SetupError(e.what());
+      throw loop::SetupError(e.what());
     }
   }
   return profiles;
@@ -125,8 +125,8 @@ void make_output_folders(const SimRequest& request) {
     std::error_code error;
     std::filesystem::create_directories(*folder, error);
     if (error)
-      throw SetupError(std::string(option) + ": cannot create the folder " + *folder + ": " +
-                       error.message());
+      throw loop::SetupError(std::string(option) + ": cannot create the folder " + *folder + ": " +
+                             error.message());
   }
 }
 
@@ -145,17 +145,17 @@ int simulate(const SimRequest& request) {
   }
   const std::vector<settings::ControllerProfile> profiles = requested_profiles(request);
   make_output_folders(request);
-  settings::Go1Settings settings = settings_or_defaults(request.config);
+  settings::Go1Settings settings = loop::settings_or_defaults(request.config);
   if (!request.catalog.empty()) settings.loop.catalog = request.catalog;
   if (!request.catalog_spec.empty()) settings.loop.catalog_spec = request.catalog_spec;
-  const SessionCatalog catalog(settings.loop.catalog, settings.loop.catalog_spec);
+  const loop::SessionCatalog catalog(settings.loop.catalog, settings.loop.catalog_spec);
   if (!request.quiet && !request.json)
     std::cerr << "oasis-go1 sim: " << catalog.describe() << "; " << request.trials
               << " trial(s) from seed " << request.seed << "; perception " << request.perception
               << '\n';
 
   // The no-attention catalog, loaded when a controller runs on it.
-  std::optional<SessionCatalog> full_state;
+  std::optional<loop::SessionCatalog> full_state;
   nlohmann::ordered_json json = nlohmann::ordered_json::object();
   for (const settings::ControllerProfile& profile : profiles) {
     const bool full_state_catalog = profile.catalog == settings::ProfileCatalog::kFullState;

@@ -29,7 +29,7 @@ struct CmdVelLink::State {
   bool stopping = false;
   std::optional<Clock::time_point> last_decision;
   go1::VelocityCommand current;
-  app::DryRunLink integrated;  // the pose when there is no odometry
+  loop::DryRunLink integrated;  // the pose when there is no odometry
   std::uint64_t fail_safe_stops = 0;
   bool stopped_by_fail_safe = false;
   std::thread repeater;

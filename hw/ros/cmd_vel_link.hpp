@@ -15,19 +15,20 @@
 #include <optional>
 #include <string>
 
-#include "app/robot_link.hpp"
+#include "go1/watchdog.hpp"
+#include "loop/robot_link.hpp"
 #include "ros/ros_session.hpp"
 
 namespace oasis::hw::ros_node {
 
 struct CmdVelOptions {
   std::string topic = "cmd_vel";
-  double period_s = 0.2;                         // the loop's control period
-  std::chrono::milliseconds keepalive{50};       // loop.keepalive_ms
-  std::chrono::milliseconds input_timeout{200};  // ros.input_timeout_ms
+  double period_s = 0.2;                    // the loop's control period
+  std::chrono::milliseconds keepalive{50};  // loop.keepalive_ms
+  std::chrono::milliseconds input_timeout = go1::kDefaultWatchdogTimeout;  // ros.input_timeout_ms
 };
 
-class CmdVelLink final : public app::RobotLink {
+class CmdVelLink final : public loop::RobotLink {
  public:
   // `odometry`: the robot's pose when the frame being decided on was taken; when it returns
   // nothing (no odometry, or use_odom off), the link integrates its own commands, as a dry run.

@@ -28,6 +28,7 @@
 #include "perception/treat_holder.hpp"
 #include "process/ending_signals.hpp"
 #include "ros/hallway_sim_topics.hpp"
+#include "ros/print_error.hpp"
 #include "ros/ros_session.hpp"
 #include "settings/settings.hpp"
 #include "settings/settings_error.hpp"
@@ -372,7 +373,7 @@ int main(int argc, char** argv) {
   } catch (const oasis::hw::settings::SettingsError& e) {
     std::cerr << e.what() << '\n';  // FILE:LINE:COL: error: KEY: MESSAGE, for each problem
   } catch (const std::exception& e) {
-    std::cerr << kProgram << ": error: " << e.what() << '\n';
+    print_error(kProgram, e.what());
   }
   return 1;
 }

@@ -16,9 +16,6 @@
 
 #include <CLI/CLI.hpp>
 
-#include "app/control_loop.hpp"
-#include "app/profile_controller.hpp"
-#include "app/session.hpp"
 #include "command_line/empty_values.hpp"
 #include "command_line/memory_option.hpp"
 #include "command_line/number_options.hpp"
@@ -26,6 +23,9 @@
 #include "log/step_log_writer.hpp"
 #include "log/table2_metrics.hpp"
 #include "log/table2_report.hpp"
+#include "loop/control_loop.hpp"
+#include "loop/profile_controller.hpp"
+#include "loop/session.hpp"
 #include "perception/out_of_memory.hpp"
 #include "perception/perception.hpp"
 #include "perception/tag_visibility.hpp"
@@ -34,6 +34,7 @@
 #include "ros/cmd_vel_link.hpp"
 #include "ros/last_resort_stop.hpp"
 #include "ros/node_settings.hpp"
+#include "ros/print_error.hpp"
 #include "ros/ros_session.hpp"
 #include "ros/topic_inputs.hpp"
 
@@ -64,7 +65,7 @@ void report_error(const std::exception& error, const NodeRequest& request,
   if (is_out_of_memory(error))
     cli::report_out_of_memory(kProgram, request.memory_budget);
   else
-    std::cerr << kProgram << ": error: " << error.what() << after << '\n';
+    print_error(kProgram, error.what() + after);
 }
 
 // Seconds since the epoch on the wall clock, as ROS stamps are (comparable on one machine).
@@ -135,8 +136,8 @@ void print_parameter_errors(const settings::SettingsError& error, const RosSessi
     std::string parameter = diagnostic.key;
     for (char& c : parameter)
       if (c == '.') c = '/';
-    std::cerr << "oasis-ros: error: parameter ~" << parameter << " (" << session.node_name() << "/"
-              << parameter << "): " << diagnostic.message << '\n';
+    print_error(kProgram, "parameter ~" + parameter + " (" + session.node_name() + "/" + parameter +
+                              "): " + diagnostic.message);
   }
 }
 
@@ -147,13 +148,13 @@ void print_step(const log::StepRecord& record) {
 }
 
 // What the loop runs, from the settings: the catalog, the profile and its controller. Throws
-// settings::SettingsError or app::SetupError.
+// settings::SettingsError or loop::SetupError.
 struct Assembly {
   explicit Assembly(NodeSettings node_settings) : settings(std::move(node_settings)) {
     catalog.emplace(settings.go1.loop.catalog, settings.go1.loop.catalog_spec);
-    profile = app::robot_profile(settings.go1.loop.controller);
-    controller = app::make_controller(
-        profile, {catalog->view(), app::controller_settings(settings.go1, catalog->view()), {}});
+    profile = loop::robot_profile(settings.go1.loop.controller);
+    controller = loop::make_controller(
+        profile, {catalog->view(), loop::controller_settings(settings.go1, catalog->view()), {}});
   }
 
   TopicInputOptions input_options() const {
@@ -166,15 +167,15 @@ struct Assembly {
   double period_s() const { return 1.0 / settings.go1.loop.rate_hz; }
 
   NodeSettings settings;
-  std::optional<app::SessionCatalog> catalog;
+  std::optional<loop::SessionCatalog> catalog;
   settings::ControllerProfile profile;
-  std::unique_ptr<app::LoopController> controller;
+  std::unique_ptr<loop::LoopController> controller;
 };
 
 // The loop over the feed's observations: perception (or the detections), the controller, the
 // link; every step logged, printed and handed to `publish`.
 struct Drive {
-  app::LoopResult result;
+  loop::LoopResult result;
   std::vector<log::StepRecord> records;
   // Per step, in milliseconds of the wall clock: from the observation's stamp to the moment the
   // loop took it (the transport: serialising, sending, matching by stamp) and to the moment its
@@ -197,36 +198,36 @@ std::string latency_summary(std::vector<double> latencies_ms) {
   return text;
 }
 
-Drive drive(Assembly& assembly, FeedFrames& frames, app::RobotLink& link,
+Drive drive(Assembly& assembly, FeedFrames& frames, loop::RobotLink& link,
             const NodeRequest& request,
             const std::function<void(const log::StepRecord&, double)>& publish) {
   ObservedPerception perception(frames, assembly.settings.go1);
   std::optional<log::StepLogWriter> log_writer;
   if (!request.log_path.empty()) log_writer.emplace(request.log_path);
   Drive drive;
-  app::LoopParts parts{frames,
-                       perception,
-                       *assembly.controller,
-                       link,
-                       [&frames]() -> std::optional<log::GroundTruth> {
-                         return frames.current() ? frames.current()->truth : std::nullopt;
-                       },
-                       [&](const log::StepRecord& record) {
-                         const double stamp_s = frames.current()->stamp_s;
-                         drive.received_ms.push_back((frames.received_s() - stamp_s) * 1000.0);
-                         drive.latencies_ms.push_back((wall_clock_s() - stamp_s) * 1000.0);
-                         if (log_writer) log_writer->write(record);
-                         if (!request.quiet) print_step(record);
-                         if (publish) publish(record, frames.current()->stamp_s);
-                         drive.records.push_back(record);
-                       },
-                       [] { return go1::stop_signal_received(); }};
-  app::LoopOptions options;
+  loop::LoopParts parts{frames,
+                        perception,
+                        *assembly.controller,
+                        link,
+                        [&frames]() -> std::optional<log::GroundTruth> {
+                          return frames.current() ? frames.current()->truth : std::nullopt;
+                        },
+                        [&](const log::StepRecord& record) {
+                          const double stamp_s = frames.current()->stamp_s;
+                          drive.received_ms.push_back((frames.received_s() - stamp_s) * 1000.0);
+                          drive.latencies_ms.push_back((wall_clock_s() - stamp_s) * 1000.0);
+                          if (log_writer) log_writer->write(record);
+                          if (!request.quiet) print_step(record);
+                          if (publish) publish(record, frames.current()->stamp_s);
+                          drive.records.push_back(record);
+                        },
+                        [] { return go1::stop_signal_received(); }};
+  loop::LoopOptions options;
   options.period_s = assembly.period_s();
   options.keepalive_s = std::chrono::duration<double>(assembly.settings.go1.loop.keepalive).count();
   options.realtime = false;  // the input's pace is the loop's; the link repeats between steps
   options.max_steps = request.steps;
-  drive.result = app::run_loop(parts, options);
+  drive.result = loop::run_loop(parts, options);
   return drive;
 }
 
@@ -246,7 +247,7 @@ void raise_received_signal() {
 }
 
 std::string description(const Assembly& assembly, const InputFeed& feed,
-                        const app::RobotLink& link) {
+                        const loop::RobotLink& link) {
   return assembly.catalog->describe() + "; controller " + assembly.profile.name + " (" +
          settings::profile_summary(assembly.profile) + "); " + feed.describe() + "; " +
          link.describe();
@@ -330,7 +331,7 @@ int run_node(const NodeRequest& request, int argc, char** argv) {
 
 // A replay's robot: nothing is sent; the pose is the bag's odometry of the observation, or,
 // without one, the commands integrated as a dry run does.
-class ReplayLink final : public app::RobotLink {
+class ReplayLink final : public loop::RobotLink {
  public:
   explicit ReplayLink(const FeedFrames& frames) : frames_(frames) {}
   void command(const go1::VelocityCommand& velocity, double time_s) override {
@@ -345,7 +346,7 @@ class ReplayLink final : public app::RobotLink {
 
  private:
   const FeedFrames& frames_;
-  app::DryRunLink dry_run_;
+  loop::DryRunLink dry_run_;
 };
 
 int replay_bag(const NodeRequest& request) {
@@ -421,12 +422,11 @@ int main(int argc, char** argv) {
     return status == 0 ? 0 : 2;  // bad usage, distinct from 1 (an error in the input)
   }
   if (!request.params_path.empty() && request.bag_path.empty()) {
-    std::cerr << "oasis-ros: error: --params goes with --bag; a live node reads the ROS "
-                 "parameters\n";
+    print_error(kProgram, "--params goes with --bag; a live node reads the ROS parameters");
     return 2;
   }
   const std::optional<std::uint64_t> budget =
-      oasis::cli::apply_memory_budget_option(app, memory_budget, "oasis-ros");
+      oasis::cli::apply_memory_budget_option(app, memory_budget, kProgram);
   if (!budget) return 2;
   request.memory_budget = *budget;
   try {

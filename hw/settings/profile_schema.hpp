@@ -45,7 +45,7 @@ void describe_profile(V& v, P& p) {
       });
   v.section(
       "evidence",
-      "The camera's treat tag beyond the reward (hw/app/attention_controller.hpp). The defaults\n"
+      "The camera's treat tag beyond the reward (hw/loop/attention_controller.hpp). The defaults\n"
       "are the paper's: the tag decides the reward and nothing else.",
       [&] {
         v.value("treat_sighting", p.evidence.treat_sighting,

@@ -12,10 +12,10 @@
 #include <optional>
 #include <vector>
 
-#include "app/attention_controller.hpp"
-#include "app/loop_controller.hpp"
+#include "loop/attention_controller.hpp"
+#include "loop/loop_controller.hpp"
 
-namespace oasis::hw::app {
+namespace oasis::hw::loop {
 
 class OracleController final : public LoopController {
  public:
@@ -39,4 +39,4 @@ class OracleController final : public LoopController {
   std::uint32_t context_ = 0;
 };
 
-}  // namespace oasis::hw::app
+}  // namespace oasis::hw::loop

@@ -1,10 +1,10 @@
 #pragma once
 // The controller settings oasis-go1 runs with by default: the spec's action velocities as the
 // shipped settings give them (hw/config/go1.yaml), for the linked Go1 catalog.
-#include "app/attention_controller.hpp"
+#include "loop/attention_controller.hpp"
 #include "settings/settings.hpp"
 
-namespace oasis::hw::app {
+namespace oasis::hw::loop {
 
 inline ControllerSettings spec_settings(const rt::CatalogView& catalog) {
   ControllerSettings settings;
@@ -12,4 +12,4 @@ inline ControllerSettings spec_settings(const rt::CatalogView& catalog) {
   return settings;
 }
 
-}  // namespace oasis::hw::app
+}  // namespace oasis::hw::loop

@@ -7,9 +7,9 @@
 #include "oasis/rt/catalog_view.hpp"
 #include "perception/treat_holder.hpp"
 
-namespace oasis::hw::app {
+namespace oasis::hw::loop {
 
 // The index of the context, if the catalog has it.
 std::optional<std::uint32_t> context_index(const rt::CatalogView& catalog, TreatHolder holder);
 
-}  // namespace oasis::hw::app
+}  // namespace oasis::hw::loop

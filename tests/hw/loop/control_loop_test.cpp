@@ -4,7 +4,7 @@
 //
 // Timing as in tests/hw/go1/go1_link_test.cpp: "within 200 ms" allows kSchedulingMargin on
 // top, for a late tick on a loaded 2-core machine (also under ASan).
-#include "app/control_loop.hpp"
+#include "loop/control_loop.hpp"
 
 #include <chrono>
 #include <cmath>
@@ -18,13 +18,13 @@
 
 #include <gtest/gtest.h>
 
-#include "app/go1_link.hpp"
-#include "app/synthetic_world.hpp"
 #include "go1/fake_go1.hpp"
 #include "go1_treat_catalog.hpp"
+#include "loop/go1_link.hpp"
+#include "loop/synthetic_world.hpp"
 #include "spec_controller_settings.hpp"
 
-namespace oasis::hw::app {
+namespace oasis::hw::loop {
 namespace {
 
 using std::chrono::milliseconds;
@@ -268,4 +268,4 @@ TEST(ControlLoop, APerceptionExceptionEndsTheLoopAndTheWatchdogStopsTheRobot) {
 }
 
 }  // namespace
-}  // namespace oasis::hw::app
+}  // namespace oasis::hw::loop

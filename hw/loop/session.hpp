@@ -10,16 +10,16 @@
 #include <stdexcept>
 #include <string>
 
-#include "app/attention_controller.hpp"
-#include "app/robot_link.hpp"
 #include "log/step_record.hpp"
+#include "loop/attention_controller.hpp"
+#include "loop/robot_link.hpp"
 #include "oasis/rt/catalog_file.hpp"
 #include "perception/frame.hpp"
 #include "perception/treat_holder.hpp"
 #include "settings/controller_profile.hpp"
 #include "settings/settings.hpp"
 
-namespace oasis::hw::app {
+namespace oasis::hw::loop {
 
 // An error that ends oasis-go1 with status 1 before (or instead of) running the loop.
 class SetupError : public std::runtime_error {
@@ -83,4 +83,4 @@ struct SessionSource {
 SessionSource open_source(const settings::Go1Settings& settings, const rt::CatalogView& catalog,
                           RobotLink& link);
 
-}  // namespace oasis::hw::app
+}  // namespace oasis::hw::loop

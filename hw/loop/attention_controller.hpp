@@ -19,15 +19,15 @@
 #include <string>
 #include <vector>
 
-#include "app/loop_controller.hpp"
 #include "go1/motion_limits.hpp"
 #include "go1/planar_pose.hpp"
 #include "log/step_record.hpp"
+#include "loop/loop_controller.hpp"
 #include "oasis/rt/attention_filter.hpp"
 #include "oasis/rt/catalog_view.hpp"
 #include "perception/perception.hpp"
 
-namespace oasis::hw::app {
+namespace oasis::hw::loop {
 
 struct ControllerSettings {
   rt::FilterOptions filter;
@@ -88,4 +88,4 @@ class AttentionController final : public LoopController {
 // The words the log uses for a filter status.
 std::string status_name(rt::StepStatus status);
 
-}  // namespace oasis::hw::app
+}  // namespace oasis::hw::loop

@@ -5,10 +5,10 @@
 #include <memory>
 #include <string>
 
-#include "app/robot_link.hpp"
 #include "go1/sender.hpp"
+#include "loop/robot_link.hpp"
 
-namespace oasis::hw::app {
+namespace oasis::hw::loop {
 
 class Go1Link final : public RobotLink {
  public:
@@ -38,4 +38,4 @@ class Go1Link final : public RobotLink {
   std::unique_ptr<go1::Sender> sender_;
 };
 
-}  // namespace oasis::hw::app
+}  // namespace oasis::hw::loop

@@ -8,11 +8,11 @@
 #include <memory>
 #include <optional>
 
-#include "app/attention_controller.hpp"
-#include "app/loop_controller.hpp"
+#include "loop/attention_controller.hpp"
+#include "loop/loop_controller.hpp"
 #include "settings/controller_profile.hpp"
 
-namespace oasis::hw::app {
+namespace oasis::hw::loop {
 
 // `base` with the profile's filter options and tag evidence.
 ControllerSettings with_profile(ControllerSettings base,
@@ -31,4 +31,4 @@ struct ControllerInputs {
 std::unique_ptr<LoopController> make_controller(const settings::ControllerProfile& profile,
                                                 const ControllerInputs& inputs);
 
-}  // namespace oasis::hw::app
+}  // namespace oasis::hw::loop

@@ -1,6 +1,6 @@
 // The loop's decision step on the linked Go1 catalog: the state vector, the filter's belief,
 // the action and its velocity.
-#include "app/attention_controller.hpp"
+#include "loop/attention_controller.hpp"
 
 #include <cmath>
 #include <string>
@@ -10,7 +10,7 @@
 #include "go1_treat_catalog.hpp"
 #include "spec_controller_settings.hpp"
 
-namespace oasis::hw::app {
+namespace oasis::hw::loop {
 namespace {
 
 PerceptionResult seen_at(double x1, double y1, double x2, double y2, double reward) {
@@ -195,4 +195,4 @@ TEST(AttentionController, AnUnknownRewardIsNotTakenForZero) {
 }
 
 }  // namespace
-}  // namespace oasis::hw::app
+}  // namespace oasis::hw::loop

@@ -10,7 +10,7 @@
 #include "go1/planar_pose.hpp"
 #include "log/step_record.hpp"
 
-namespace oasis::hw::app {
+namespace oasis::hw::loop {
 
 class RobotLink {
  public:
@@ -47,4 +47,4 @@ class DryRunLink final : public RobotLink {
   double current_since_s_ = 0.0;
 };
 
-}  // namespace oasis::hw::app
+}  // namespace oasis::hw::loop

@@ -1,11 +1,11 @@
-#include "app/synthetic_world.hpp"
+#include "loop/synthetic_world.hpp"
 
 #include <stdexcept>
 #include <utility>
 
 #include "perception/synthetic_renderer.hpp"
 
-namespace oasis::hw::app {
+namespace oasis::hw::loop {
 
 SyntheticWorld::SyntheticWorld(SyntheticWorldSettings settings, PoseProvider robot_pose)
     : settings_(std::move(settings)), robot_pose_(std::move(robot_pose)) {
@@ -46,4 +46,4 @@ NextFrame SyntheticWorld::next() {
   return render_scene(scene, settings_.render, time_s);
 }
 
-}  // namespace oasis::hw::app
+}  // namespace oasis::hw::loop

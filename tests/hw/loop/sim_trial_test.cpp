@@ -1,6 +1,6 @@
 // `oasis-go1 sim`'s trials: oasis-go1's loop on the hallway world, on both observation paths,
 // with logs that the step-log reader and the Table II score take as they take a robot's.
-#include "app/sim_trial.hpp"
+#include "loop/sim_trial.hpp"
 
 #include <filesystem>
 #include <stdexcept>
@@ -8,14 +8,14 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
-#include "app/treat_contexts.hpp"
 #include "go1_treat_catalog.hpp"
 #include "log/step_log_reader.hpp"
 #include "log/step_log_writer.hpp"
 #include "log/table2_metrics.hpp"
+#include "loop/treat_contexts.hpp"
 #include "spec_controller_settings.hpp"
 
-namespace oasis::hw::app {
+namespace oasis::hw::loop {
 namespace {
 
 SimTrialSetup setup_for(sim::ObservationPath path, std::optional<std::uint64_t> steps = {}) {
@@ -100,4 +100,4 @@ TEST(SimTrial, ControllersAreTheShippedProfiles) {
 }
 
 }  // namespace
-}  // namespace oasis::hw::app
+}  // namespace oasis::hw::loop

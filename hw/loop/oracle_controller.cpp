@@ -1,8 +1,8 @@
-#include "app/oracle_controller.hpp"
+#include "loop/oracle_controller.hpp"
 
 #include <utility>
 
-namespace oasis::hw::app {
+namespace oasis::hw::loop {
 
 OracleController::OracleController(const rt::CatalogView& catalog,
                                    const ControllerSettings& settings, TruthProvider truth)
@@ -35,4 +35,4 @@ log::StepRecord OracleController::decide(const PerceptionResult& seen, double ti
   return chosen;
 }
 
-}  // namespace oasis::hw::app
+}  // namespace oasis::hw::loop

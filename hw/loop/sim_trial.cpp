@@ -1,12 +1,12 @@
-#include "app/sim_trial.hpp"
+#include "loop/sim_trial.hpp"
 
 #include <stdexcept>
 
-#include "app/control_loop.hpp"
-#include "app/robot_link.hpp"
-#include "app/treat_contexts.hpp"
+#include "loop/control_loop.hpp"
+#include "loop/robot_link.hpp"
+#include "loop/treat_contexts.hpp"
 
-namespace oasis::hw::app {
+namespace oasis::hw::loop {
 namespace {
 
 struct Contexts {
@@ -102,4 +102,4 @@ SimTrialResult run_sim_trial(const rt::CatalogView& catalog, const SimTrialSetup
   return result;
 }
 
-}  // namespace oasis::hw::app
+}  // namespace oasis::hw::loop

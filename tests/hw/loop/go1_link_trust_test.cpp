@@ -7,11 +7,11 @@
 
 #include <gtest/gtest.h>
 
-#include "app/go1_link.hpp"
 #include "go1/high_state.hpp"
 #include "go1/udp_socket.hpp"
+#include "loop/go1_link.hpp"
 
-namespace oasis::hw::app {
+namespace oasis::hw::loop {
 namespace {
 
 using std::chrono::milliseconds;
@@ -86,4 +86,4 @@ TEST(Go1LinkTrust, AStrangersStateIsNotTheRobotAnswering) {
 }
 
 }  // namespace
-}  // namespace oasis::hw::app
+}  // namespace oasis::hw::loop

@@ -1,8 +1,8 @@
-#include "app/treat_contexts.hpp"
+#include "loop/treat_contexts.hpp"
 
 #include <cstring>
 
-namespace oasis::hw::app {
+namespace oasis::hw::loop {
 
 std::optional<std::uint32_t> context_index(const rt::CatalogView& catalog, TreatHolder holder) {
   const char* name = holder == TreatHolder::kHuman1 ? "human1_holds_treat" : "human2_holds_treat";
@@ -11,4 +11,4 @@ std::optional<std::uint32_t> context_index(const rt::CatalogView& catalog, Treat
   return std::nullopt;
 }
 
-}  // namespace oasis::hw::app
+}  // namespace oasis::hw::loop

@@ -1,22 +1,22 @@
-#include "app/session.hpp"
+#include "loop/session.hpp"
 
 #include <cstdint>
 #include <filesystem>
 #include <optional>
 #include <stdexcept>
 
-#include "app/go1_link.hpp"
-#include "app/synthetic_world.hpp"
-#include "app/treat_contexts.hpp"
 #include "camera/camera_error.hpp"
 #include "camera/live_camera.hpp"
 #include "camera/recorded_source.hpp"
 #include "files/input_file.hpp"
 #include "go1/link_error.hpp"
 #include "go1_treat_catalog.hpp"
+#include "loop/go1_link.hpp"
+#include "loop/synthetic_world.hpp"
+#include "loop/treat_contexts.hpp"
 #include "oasis/rt/spec_hash.hpp"
 
-namespace oasis::hw::app {
+namespace oasis::hw::loop {
 namespace {
 
 SessionSource synthetic_source(const settings::Go1Settings& settings,
@@ -201,4 +201,4 @@ SessionSource open_source(const settings::Go1Settings& settings, const rt::Catal
   throw SetupError("unknown frame source");
 }
 
-}  // namespace oasis::hw::app
+}  // namespace oasis::hw::loop

@@ -1,10 +1,10 @@
-#include "app/profile_controller.hpp"
+#include "loop/profile_controller.hpp"
 
 #include <stdexcept>
 
-#include "app/oracle_controller.hpp"
+#include "loop/oracle_controller.hpp"
 
-namespace oasis::hw::app {
+namespace oasis::hw::loop {
 
 ControllerSettings with_profile(ControllerSettings base,
                                 const settings::ControllerProfile& profile) {
@@ -31,4 +31,4 @@ std::unique_ptr<LoopController> make_controller(const settings::ControllerProfil
                                                with_profile(inputs.settings, profile));
 }
 
-}  // namespace oasis::hw::app
+}  // namespace oasis::hw::loop

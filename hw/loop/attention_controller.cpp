@@ -1,4 +1,4 @@
-#include "app/attention_controller.hpp"
+#include "loop/attention_controller.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -6,9 +6,9 @@
 #include <stdexcept>
 #include <utility>
 
-#include "app/treat_contexts.hpp"
+#include "loop/treat_contexts.hpp"
 
-namespace oasis::hw::app {
+namespace oasis::hw::loop {
 namespace {
 
 constexpr std::size_t kStateDimension = 4;  // x1 y1 x2 y2, specs/go1_treat.oasis
@@ -178,4 +178,4 @@ log::StepRecord AttentionController::decide(const PerceptionResult& seen, double
   return record;
 }
 
-}  // namespace oasis::hw::app
+}  // namespace oasis::hw::loop

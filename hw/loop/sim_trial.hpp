@@ -8,14 +8,14 @@
 #include <optional>
 #include <vector>
 
-#include "app/profile_controller.hpp"
 #include "log/step_record.hpp"
+#include "loop/profile_controller.hpp"
 #include "perception/perception.hpp"
 #include "sim/hallway_world.hpp"
 #include "sim/scenario.hpp"
 #include "sim/trial_svg.hpp"
 
-namespace oasis::hw::app {
+namespace oasis::hw::loop {
 
 struct SimTrialSetup {
   sim::HallwayScenario scenario;
@@ -37,4 +37,4 @@ struct SimTrialResult {
 SimTrialResult run_sim_trial(const rt::CatalogView& catalog, const SimTrialSetup& setup,
                              const settings::ControllerProfile& controller, std::uint64_t seed);
 
-}  // namespace oasis::hw::app
+}  // namespace oasis::hw::loop

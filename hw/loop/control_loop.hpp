@@ -2,12 +2,13 @@
 // The loop of oasis-go1: frame -> perception -> filter -> policy -> robot, once per control
 // period (0.2 s, the spec's `period`).
 //
-// Freshness. The Go1 sender's watchdog stops the robot when no command came for 200 ms, the
-// length of one control period, so the loop cannot feed it only once per decision. Between
-// decisions it repeats the current decision every `keepalive_s` (50 ms): a command is "fresh"
-// when the loop that made it is still running. Anything that stalls the loop - a camera that
-// stops delivering, a perception step that hangs, a debugger - stops the repeats, and the
-// robot stops 200 ms after the last one.
+// Freshness. The Go1 sender's watchdog stops the robot when no command came for
+// go1::kDefaultWatchdogTimeout, the length of one control period, so the loop cannot feed it
+// only once per decision. Between decisions it repeats the current decision every
+// `keepalive_s` (50 ms): a command is "fresh" when the loop that made it is still running.
+// Anything that stalls the loop - a camera that stops delivering, a perception step that
+// hangs, a debugger - stops the repeats, and the robot stops one watchdog timeout after the
+// last one.
 //
 // Real time or not. On a robot the loop paces itself on the steady clock and `time_s` is wall
 // time since the start. On recordings and synthetic dry runs it can run as fast as it computes
@@ -18,13 +19,13 @@
 #include <optional>
 #include <string>
 
-#include "app/loop_controller.hpp"
-#include "app/robot_link.hpp"
 #include "log/step_record.hpp"
+#include "loop/loop_controller.hpp"
+#include "loop/robot_link.hpp"
 #include "perception/frame.hpp"
 #include "perception/perception_stage.hpp"
 
-namespace oasis::hw::app {
+namespace oasis::hw::loop {
 
 struct LoopOptions {
   double period_s = 0.2;
@@ -58,4 +59,4 @@ struct LoopResult {
 // end). Throws std::invalid_argument for a non-positive period or keep-alive.
 LoopResult run_loop(LoopParts& parts, const LoopOptions& options);
 
-}  // namespace oasis::hw::app
+}  // namespace oasis::hw::loop

@@ -1,6 +1,6 @@
 // The closed-loop synthetic world: frames follow the robot's pose, the treat follows the
 // schedule, and the truth it reports matches the geometry.
-#include "app/synthetic_world.hpp"
+#include "loop/synthetic_world.hpp"
 
 #include <cmath>
 #include <numbers>
@@ -10,7 +10,7 @@
 
 #include "perception/perception.hpp"
 
-namespace oasis::hw::app {
+namespace oasis::hw::loop {
 namespace {
 
 TEST(PlanarPose, FramesRotateTranslateAndInvert) {
@@ -77,4 +77,4 @@ TEST(SyntheticWorld, RefusesAMissingPoseProvider) {
 }
 
 }  // namespace
-}  // namespace oasis::hw::app
+}  // namespace oasis::hw::loop

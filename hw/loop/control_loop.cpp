@@ -1,11 +1,11 @@
-#include "app/control_loop.hpp"
+#include "loop/control_loop.hpp"
 
 #include <chrono>
 #include <stdexcept>
 #include <thread>
 #include <variant>
 
-namespace oasis::hw::app {
+namespace oasis::hw::loop {
 namespace {
 
 using Clock = std::chrono::steady_clock;
@@ -82,4 +82,4 @@ LoopResult run_loop(LoopParts& parts, const LoopOptions& options) {
   return result;
 }
 
-}  // namespace oasis::hw::app
+}  // namespace oasis::hw::loop

@@ -7,7 +7,7 @@
 #include "log/step_record.hpp"
 #include "perception/perception_result.hpp"
 
-namespace oasis::hw::app {
+namespace oasis::hw::loop {
 
 class LoopController {
  public:
@@ -17,4 +17,4 @@ class LoopController {
                                  const go1::Pose& robot) = 0;
 };
 
-}  // namespace oasis::hw::app
+}  // namespace oasis::hw::loop

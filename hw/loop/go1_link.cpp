@@ -1,9 +1,9 @@
-#include "app/go1_link.hpp"
+#include "loop/go1_link.hpp"
 
 #include <sstream>
 #include <thread>
 
-namespace oasis::hw::app {
+namespace oasis::hw::loop {
 
 Go1Link::Go1Link(go1::SenderOptions options)
     : options_(options), sender_(std::make_unique<go1::Sender>(std::move(options))) {}
@@ -58,4 +58,4 @@ std::string Go1Link::describe() const {
   return text.str();
 }
 
-}  // namespace oasis::hw::app
+}  // namespace oasis::hw::loop

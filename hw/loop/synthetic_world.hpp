@@ -18,7 +18,7 @@
 #include "perception/synthetic_scene.hpp"
 #include "perception/treat_holder.hpp"
 
-namespace oasis::hw::app {
+namespace oasis::hw::loop {
 
 struct HandOff {
   double at_s = 0.0;  // world time of the hand-off
@@ -63,4 +63,4 @@ class SyntheticWorld final : public FrameSource {
   std::optional<WorldTruth> last_truth_;
 };
 
-}  // namespace oasis::hw::app
+}  // namespace oasis::hw::loop
