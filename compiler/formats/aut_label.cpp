@@ -2,18 +2,12 @@
 
 #include <vector>
 
+#include "support/text.hpp"
+
 namespace oasis::formats {
 namespace {
 
 constexpr std::string_view kRewardOpen = "reward(";
-
-std::string_view trim(std::string_view text) {
-  while (!text.empty() && (text.front() == ' ' || text.front() == '\t'))
-    text.remove_prefix(1);
-  while (!text.empty() && (text.back() == ' ' || text.back() == '\t'))
-    text.remove_suffix(1);
-  return text;
-}
 
 // The parts of a multi-action: split at '|' outside parentheses, as mCRL2 does.
 std::vector<std::string_view> split_parts(std::string_view label) {
@@ -33,7 +27,7 @@ std::vector<std::string_view> split_parts(std::string_view label) {
 }
 
 bool is_reward_part(std::string_view part) {
-  part = trim(part);
+  part = trim_blanks(part);
   return part.size() > kRewardOpen.size() && part.substr(0, kRewardOpen.size()) == kRewardOpen &&
          part.back() == ')';
 }
@@ -75,7 +69,7 @@ std::optional<std::string> aut_action_problem(std::string_view action) {
   }
   if (depth != 0) return quoted + " has unbalanced parentheses";
   for (std::string_view part : split_parts(action)) {
-    if (trim(part).empty()) return quoted + " has an empty multi-action part";
+    if (trim_blanks(part).empty()) return quoted + " has an empty multi-action part";
     if (is_reward_part(part))
       return quoted + " has a part 'reward(...)' that would read as a reward";
   }
@@ -91,18 +85,18 @@ std::optional<AutLabel> parse_aut_label(std::string_view label, std::string& err
   std::optional<std::string_view> reward_text;
   for (std::string_view part : parts) {
     if (!is_reward_part(part)) {
-      action_parts.push_back(trim(part));
+      action_parts.push_back(trim_blanks(part));
       continue;
     }
     if (reward_text) {
       error = "label '" + std::string(label) + "' has two reward parts";
       return std::nullopt;
     }
-    part = trim(part);
+    part = trim_blanks(part);
     reward_text = part.substr(kRewardOpen.size(), part.size() - kRewardOpen.size() - 1);
   }
   if (!reward_text) return AutLabel{std::string(label), Rational(0)};  // e.g. "myreward(1)"
-  const std::optional<Rational> reward = parse_rational(trim(*reward_text));
+  const std::optional<Rational> reward = parse_rational(trim_blanks(*reward_text));
   if (!reward) {
     error = "reward '" + std::string(*reward_text) + "' in label '" + std::string(label) +
             "' is not a number";

@@ -10,17 +10,10 @@
 #include <vector>
 
 #include "formats/prism_parts.hpp"
+#include "support/text.hpp"
 
 namespace oasis::formats {
 namespace {
-
-std::string_view trim(std::string_view text) {
-  while (!text.empty() && TextScanner::is_blank(text.front()))
-    text.remove_prefix(1);
-  while (!text.empty() && TextScanner::is_blank(text.back()))
-    text.remove_suffix(1);
-  return text;
-}
 
 class StatesReader {
  public:
@@ -56,9 +49,9 @@ class StatesReader {
       return false;
     }
     std::string_view names = line.substr(0, close);
-    while (!trim(names).empty()) {
+    while (!trim_blanks(names).empty()) {
       const std::size_t comma = names.find(',');
-      states_.variables.emplace_back(trim(names.substr(0, comma)));
+      states_.variables.emplace_back(trim_blanks(names.substr(0, comma)));
       if (states_.variables.back().empty()) {
         scan_.error_here("empty variable name");
         return false;
@@ -103,7 +96,7 @@ class StatesReader {
     const char* stop = start;
     while (stop < scan_.end() && *stop != ',' && *stop != ')' && *stop != '\n')
       ++stop;
-    const std::string_view text = trim({start, static_cast<std::size_t>(stop - start)});
+    const std::string_view text = trim_blanks({start, static_cast<std::size_t>(stop - start)});
     scan_.seek(stop);
     if (text == "true" || text == "false") {
       value = text == "true" ? 1 : 0;

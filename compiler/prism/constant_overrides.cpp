@@ -7,14 +7,6 @@
 namespace oasis::prism {
 namespace {
 
-std::string_view trim(std::string_view text) {
-  while (!text.empty() && (text.front() == ' ' || text.front() == '\t'))
-    text.remove_prefix(1);
-  while (!text.empty() && (text.back() == ' ' || text.back() == '\t'))
-    text.remove_suffix(1);
-  return text;
-}
-
 bool is_name(std::string_view text) {
   if (text.empty() || (text[0] >= '0' && text[0] <= '9')) return false;
   return std::all_of(text.begin(), text.end(), [](char c) {
@@ -27,14 +19,14 @@ bool is_name(std::string_view text) {
 std::vector<ConstantOverride> read_constant_overrides(std::string_view text,
                                                       DiagnosticEngine& diagnostics) {
   std::vector<ConstantOverride> result;
-  while (!trim(text).empty()) {
+  while (!trim_blanks(text).empty()) {
     const std::size_t comma = text.find(',');
-    const std::string_view entry = trim(text.substr(0, comma));
+    const std::string_view entry = trim_blanks(text.substr(0, comma));
     text = comma == std::string_view::npos ? std::string_view() : text.substr(comma + 1);
     const std::size_t equals = entry.find('=');
-    const std::string_view name = trim(entry.substr(0, equals));
+    const std::string_view name = trim_blanks(entry.substr(0, equals));
     const std::string_view value =
-        equals == std::string_view::npos ? "" : trim(entry.substr(equals + 1));
+        equals == std::string_view::npos ? "" : trim_blanks(entry.substr(equals + 1));
     if (equals == std::string_view::npos || !is_name(name) || value.empty()) {
       diagnostics.plain_error("--const: expected NAME=VALUE, as in N=4,p=0.1, not " +
                               quoted(entry));

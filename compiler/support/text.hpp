@@ -1,5 +1,5 @@
 #pragma once
-// Small text helpers shared by diagnostics and emitters.
+// Small text helpers shared by diagnostics, readers and emitters.
 
 #include <string>
 #include <string_view>
@@ -24,6 +24,17 @@ inline std::string escape_double_quoted(std::string_view text) {
     out += c;
   }
   return out;
+}
+
+// `text` without the spaces and tabs at either end: how the line-based readers (.aut labels,
+// PRISM's .sta files, --const values) read a field.
+inline std::string_view trim_blanks(std::string_view text) {
+  const auto blank = [](char c) { return c == ' ' || c == '\t'; };
+  while (!text.empty() && blank(text.front()))
+    text.remove_prefix(1);
+  while (!text.empty() && blank(text.back()))
+    text.remove_suffix(1);
+  return text;
 }
 
 }  // namespace oasis
