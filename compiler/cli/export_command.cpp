@@ -6,7 +6,7 @@
 
 #include "cli/commands.hpp"
 #include "formats/aut_writer.hpp"
-#include "formats/prism_writer.hpp"
+#include "formats/explicit_writer.hpp"
 
 namespace oasis::cli {
 namespace {

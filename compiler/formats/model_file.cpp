@@ -6,7 +6,7 @@
 #include <system_error>
 
 #include "formats/aut_reader.hpp"
-#include "formats/prism_reader.hpp"
+#include "formats/explicit_reader.hpp"
 
 namespace oasis::formats {
 namespace {

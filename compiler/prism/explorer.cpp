@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "formats/distribution_collector.hpp"
-#include "formats/prism_reader.hpp"
+#include "formats/explicit_reader.hpp"
 #include "model/state_store.hpp"
 #include "model/valuation_text.hpp"
 #include "support/double_range.hpp"

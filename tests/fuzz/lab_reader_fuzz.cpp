@@ -1,4 +1,4 @@
-// PRISM's .lab file alone (formats/prism_labels.cpp), for a model of kStates states. Labels
+// PRISM's .lab file alone (formats/explicit_labels.cpp), for a model of kStates states. Labels
 // are atomic propositions, so beyond memory safety: labels read xor an error; an accepted
 // file names each label once (so at most one "init"), with printable, non-empty names; every
 // state and label index is in range; "init" gives exactly the initial states; and the labels
@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "formats/prism_parts.hpp"
+#include "formats/explicit_parts.hpp"
 #include "fuzz_target.hpp"
 
 namespace {

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "formats/prism_reader.hpp"
+#include "formats/explicit_reader.hpp"
 #include "fuzz_target.hpp"
 #include "model/explicit_model.hpp"
 

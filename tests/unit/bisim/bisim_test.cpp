@@ -16,7 +16,7 @@
 #include "bisim/refinement.hpp"
 #include "formats/aut_writer.hpp"
 #include "formats/model_file.hpp"
-#include "formats/prism_writer.hpp"
+#include "formats/explicit_writer.hpp"
 #include "frontend/load_spec.hpp"
 #include "model/explorer.hpp"
 #include "verify/verifier.hpp"

@@ -12,9 +12,9 @@
 
 #include "../../support/scratch_directory.hpp"
 #include "bisim/refinement.hpp"
+#include "formats/explicit_reader.hpp"
+#include "formats/explicit_writer.hpp"
 #include "formats/model_file.hpp"
-#include "formats/prism_reader.hpp"
-#include "formats/prism_writer.hpp"
 #include "model/state_labels.hpp"
 #include "verify/verifier.hpp"
 

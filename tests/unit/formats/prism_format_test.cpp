@@ -8,9 +8,9 @@
 
 #include "../../support/scratch_directory.hpp"
 #include "bisim/refinement.hpp"
+#include "formats/explicit_reader.hpp"
+#include "formats/explicit_writer.hpp"
 #include "formats/model_file.hpp"
-#include "formats/prism_reader.hpp"
-#include "formats/prism_writer.hpp"
 
 namespace oasis::formats {
 namespace {

@@ -1,0 +1,130 @@
+// The .lab file: its labels are the model's atomic propositions, and "init" gives the initial
+// states.
+//
+//   0="init" 1="deadlock" 2="done"
+//   0: 0
+//   4: 1 2
+
+#include "formats/explicit_parts.hpp"
+#include "support/text.hpp"
+
+namespace oasis::formats {
+namespace {
+
+class LabelsReader {
+ public:
+  LabelsReader(FileId file, DiagnosticEngine& diagnostics, std::uint32_t num_states,
+               std::vector<model::StateIndex>& initial)
+      : scan_(file, diagnostics), num_states_(num_states), initial_(initial) {}
+
+  bool read(bool& found, model::StateLabels& labels) {
+    const std::size_t errors = scan_.diagnostics().error_count();
+    if (!read_names()) return false;
+    found = init_ != kNone;
+    model::StateLabelsBuilder builder(names_);
+    while (scan_.next_line() && !scan_.diagnostics().should_stop()) {
+      read_state(builder);
+      scan_.skip_line();
+    }
+    labels = builder.finish(num_states_);
+    return scan_.diagnostics().error_count() == errors;
+  }
+
+ private:
+  static constexpr std::uint32_t kNone = UINT32_MAX;
+
+  // `0="init" 1="deadlock" ...`: indices in order from 0, as PRISM writes and requires.
+  bool read_names() {
+    if (!scan_.next_line()) return true;  // an empty file: no labels at all
+    while (!scan_.at_line_end()) {
+      const char* token = scan_.position();
+      std::uint32_t index = 0;
+      if (!scan_.read_index("a label index", index)) return false;
+      if (index != count_) {
+        scan_.error_at(token, 1, "expected label index " + std::to_string(count_));
+        return false;
+      }
+      if (!scan_.expect('=', "expected '=' after the label index")) return false;
+      if (!scan_.expect('"', "expected the quoted label name")) return false;
+      const std::string_view rest = scan_.rest_of_line();
+      const std::size_t close = rest.find('"');
+      if (close == std::string_view::npos) {
+        scan_.error_here("unterminated label name");
+        return false;
+      }
+      const std::string_view name = rest.substr(0, close);
+      if (!acceptable_name(name, scan_.position())) return false;
+      if (name == "init") init_ = index;
+      names_.emplace_back(name);
+      scan_.seek(scan_.position() + close + 1);
+      ++count_;
+      scan_.skip_blanks();
+    }
+    scan_.skip_line();
+    return true;
+  }
+
+  // A name is a model's atomic proposition: it must be one a user can name (not empty, no NUL
+  // or other control character, which no message or file could show as it is) and appear
+  // once, so that "init" gives the initial states once and --respect-labels picks one label.
+  bool acceptable_name(std::string_view name, const char* at) {
+    if (name.empty()) {
+      scan_.error_at(at, 1, "empty label name");
+      return false;
+    }
+    for (std::size_t i = 0; i < name.size(); ++i) {
+      const auto byte = static_cast<unsigned char>(name[i]);
+      if (byte >= 0x20 && byte != 0x7f) continue;
+      scan_.error_at(at + i, 1,
+                     byte == 0 ? std::string("a label name cannot hold a NUL character")
+                               : "a label name cannot hold a control character (" +
+                                     text::printable_excerpt(name.substr(i, 1)) + ")");
+      return false;
+    }
+    for (std::uint32_t k = 0; k < names_.size(); ++k) {
+      if (names_[k] != name) continue;
+      scan_.error_at(at, name.size(),
+                     "label " + quoted(name) + " is declared twice (as label " + std::to_string(k) +
+                         " and label " + std::to_string(count_) + ")");
+      return false;
+    }
+    return true;
+  }
+
+  void read_state(model::StateLabelsBuilder& builder) {
+    model::StateIndex state = 0;
+    if (!scan_.read_state(num_states_, "a state index", state)) return;
+    scan_.skip_blanks();
+    if (!scan_.expect(':', "expected ':' after the state index")) return;
+    for (scan_.skip_blanks(); !scan_.at_line_end(); scan_.skip_blanks()) {
+      const char* token = scan_.position();
+      std::uint32_t label = 0;
+      if (!scan_.read_index("a label index", label)) return;
+      if (label >= count_) {
+        scan_.error_at(token, 1,
+                       "label " + std::to_string(label) + " is not declared in the first line");
+        return;
+      }
+      if (label == init_) initial_.push_back(state);
+      builder.add(state, label);
+    }
+  }
+
+  PrismScanner scan_;
+  std::uint32_t num_states_;
+  std::vector<model::StateIndex>& initial_;
+  std::uint32_t count_ = 0;
+  std::uint32_t init_ = kNone;
+  std::vector<std::string> names_;
+};
+
+}  // namespace
+
+bool read_prism_labels(FileId file, DiagnosticEngine& diagnostics, std::uint32_t num_states,
+                       std::vector<model::StateIndex>& initial, model::StateLabels& labels,
+                       bool& found) {
+  found = false;
+  return LabelsReader(file, diagnostics, num_states, initial).read(found, labels);
+}
+
+}  // namespace oasis::formats
