@@ -16,8 +16,8 @@ constexpr std::uint32_t kDisabled = std::numeric_limits<std::uint32_t>::max();
 class RewardNumbering {
  public:
   RewardNumbering(const model::ExplicitModel& model, std::size_t context,
-                  std::optional<double> rounding)
-      : model_(model), rewards_(model.contexts[context].rewards), rounding_(rounding) {}
+                  std::optional<double> rounding_step)
+      : model_(model), rewards_(model.contexts[context].rewards), rounding_step_(rounding_step) {}
 
   std::uint32_t id(model::StateIndex s, model::ActionIndex a) {
     const ValueId choice_part = rewards_.choice.empty()
@@ -37,8 +37,8 @@ class RewardNumbering {
     auto [it, inserted] = cache_.try_emplace(key, 0);
     if (inserted) {
       Rational value = model_.values[state_part] + model_.values[choice_part];
-      if (rounding_)
-        value = Rational(static_cast<long>(std::llround(to_double(value) / *rounding_)));
+      if (rounding_step_)
+        value = Rational(static_cast<long>(std::llround(to_double(value) / *rounding_step_)));
       it->second = numbers_.intern(value);
     }
     return it->second;
@@ -46,7 +46,7 @@ class RewardNumbering {
 
   const model::ExplicitModel& model_;
   const model::RewardTable& rewards_;
-  std::optional<double> rounding_;
+  std::optional<double> rounding_step_;
   std::unordered_map<std::uint64_t, std::uint32_t> cache_;
   RationalPool numbers_;
 };
@@ -54,11 +54,11 @@ class RewardNumbering {
 }  // namespace
 
 InitialBlocks blocks_by_rewards(const model::ExplicitModel& model, std::size_t context,
-                                std::optional<double> rounding,
+                                std::optional<double> rounding_step,
                                 const std::vector<std::uint32_t>& label_class) {
   const model::TransitionMatrix& matrix = *model.contexts[context].transitions;
   const std::uint32_t num_actions = model.num_actions();
-  RewardNumbering rewards(model, context, rounding);
+  RewardNumbering rewards(model, context, rounding_step);
   InitialBlocks result;
   result.block_of.resize(model.num_states());
   // One entry per action (its reward, or disabled), one that holds the state reward of a state

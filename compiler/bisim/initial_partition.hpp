@@ -17,11 +17,11 @@ struct InitialBlocks {
   std::uint32_t count = 0;
 };
 
-// With `rounding` (the --epsilon mode), rewards are compared after rounding to multiples of
-// it, like probabilities. `label_class` is empty (labels are not respected) or has one class
+// With `rounding_step` (the user's --epsilon), rewards are compared after rounding to multiples
+// of it, like probabilities. `label_class` is empty (labels are not respected) or has one class
 // per state (model::label_classes): states of different classes start in different blocks.
 InitialBlocks blocks_by_rewards(const model::ExplicitModel& model, std::size_t context,
-                                std::optional<double> rounding,
+                                std::optional<double> rounding_step,
                                 const std::vector<std::uint32_t>& label_class = {});
 
 }  // namespace oasis::bisim

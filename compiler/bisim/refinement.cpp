@@ -86,7 +86,8 @@ class Refiner {
         options_(options),
         num_states_(model.num_states()),
         num_actions_(model.num_actions()),
-        weights_(WeightTable::choose(model, matrix_, options.epsilon, options.rational_sums)) {}
+        weights_(
+            WeightTable::choose(model, matrix_, options.rounding_step, options.rational_sums)) {}
 
   Partition run(RefinementStatistics* statistics) {
     statistics_.exact_integer_sums = weights_.mode == WeightMode::Integer;
@@ -164,7 +165,7 @@ class Refiner {
 
   void initial_partition() {
     const InitialBlocks initial =
-        blocks_by_rewards(model_, context_, options_.epsilon, options_.label_class);
+        blocks_by_rewards(model_, context_, options_.rounding_step, options_.label_class);
     state_scratch_.resize(num_states_);
     std::vector<std::uint32_t> sizes(initial.count, 0);
     for (StateIndex s = 0; s < num_states_; ++s) {
@@ -624,7 +625,7 @@ Partition coarsest_bisimulation(const model::ExplicitModel& model, std::size_t c
                                 const RefinementOptions& options,
                                 RefinementStatistics* statistics) {
   if (options.unlabelled_choices) {
-    if (options.epsilon)
+    if (options.rounding_step)
       throw std::invalid_argument("unlabelled choices are compared exactly only");
     return coarsest_unlabelled_bisimulation(model, context, options, statistics);
   }

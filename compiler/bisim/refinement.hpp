@@ -27,9 +27,10 @@ struct RefinementProgress {
 };
 
 struct RefinementOptions {
-  // Approximate mode for models whose probabilities were floating point; see
+  // Approximate mode for models whose probabilities were floating point (the user's
+  // --epsilon): sums are compared after rounding to multiples of this step; see
   // docs/bisimulation.md for exactly what it guarantees. Unset: exact.
-  std::optional<double> epsilon;
+  std::optional<double> rounding_step;
   // Add probabilities with GMP even when integers over a common denominator would be exact.
   // Slower; it exists so that tests can check both exact paths against each other.
   bool rational_sums = false;

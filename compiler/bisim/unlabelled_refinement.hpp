@@ -20,7 +20,7 @@
 
 namespace oasis::bisim {
 
-// Exact only (RefinementOptions::epsilon must be unset); `options.label_class` is respected.
+// Exact only (RefinementOptions::rounding_step must be unset); `options.label_class` is respected.
 Partition coarsest_unlabelled_bisimulation(const model::ExplicitModel& model, std::size_t context,
                                            const RefinementOptions& options,
                                            RefinementStatistics* statistics = nullptr);

@@ -40,12 +40,12 @@ std::vector<std::uint64_t> numerators_over(const RationalPool& values,
 
 WeightTable WeightTable::choose(const model::ExplicitModel& model,
                                 const model::TransitionMatrix& matrix,
-                                std::optional<double> epsilon, bool rational) {
+                                std::optional<double> rounding_step, bool rational) {
   WeightTable table;
   const std::size_t num_values = model.values.size();
-  if (epsilon) {
+  if (rounding_step) {
     table.mode = WeightMode::Rounded;
-    table.epsilon = *epsilon;
+    table.rounding_step = *rounding_step;
     table.real.resize(num_values);
     for (std::size_t id = 0; id < num_values; ++id)
       table.real[id] = to_double(model.values[id]);

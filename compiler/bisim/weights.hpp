@@ -5,7 +5,8 @@
 //     fits in 62 bits, so a sum of probabilities (at most 1) is an exact integer <= D.
 //     This is the fast path and covers every model written with decimals or small fractions.
 //   - Rational: exact GMP sums, for denominators whose common multiple is too large.
-//   - Rounded (--epsilon): doubles, compared after rounding to a multiple of epsilon.
+//   - Rounded (the user's --epsilon): doubles, compared after rounding to a multiple of the
+//     rounding step.
 
 #include <cmath>
 #include <cstdint>
@@ -41,18 +42,18 @@ struct WeightTable {
   WeightMode mode = WeightMode::Integer;
   std::vector<std::uint64_t> integer;  // Integer: numerator over the common denominator
   std::vector<double> real;            // Rounded: the nearest double
-  double epsilon = 0;
+  double rounding_step = 0;            // Rounded: sums are compared as multiples of this
 
   // Picks Integer when the common denominator of the probabilities used by `matrix` fits,
-  // Rational otherwise; Rounded when `epsilon` is given.
+  // Rational otherwise; Rounded when `rounding_step` is given.
   // `rational` forces the Rational representation.
   static WeightTable choose(const model::ExplicitModel& model,
-                            const model::TransitionMatrix& matrix, std::optional<double> epsilon,
-                            bool rational = false);
+                            const model::TransitionMatrix& matrix,
+                            std::optional<double> rounding_step, bool rational = false);
 
   // The key a summed weight is compared by in Rounded mode.
   [[nodiscard]] std::int64_t rounded_key(double weight) const {
-    return std::llround(weight / epsilon);
+    return std::llround(weight / rounding_step);
   }
 };
 

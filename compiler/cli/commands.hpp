@@ -3,12 +3,16 @@
 // exit status when run: 0 success, 1 the input has errors, 2 bad usage.
 
 #include <functional>
+#include <string_view>
 
 #include <CLI/CLI.hpp>
 
 #include "input/model_loader.hpp"
 
 namespace oasis::cli {
+
+// The name oasisc's messages begin with when they belong to no file.
+inline constexpr std::string_view kProgram = "oasisc";
 
 using input::load_model;
 using input::LoadedModel;

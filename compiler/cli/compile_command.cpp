@@ -6,10 +6,12 @@
 #include <cstdio>
 #include <filesystem>
 #include <functional>
+#include <iomanip>
 #include <iostream>
 #include <memory>
 #include <mutex>
 #include <set>
+#include <sstream>
 
 #include "cli/commands.hpp"
 #include "codegen/catalog_files.hpp"
@@ -20,8 +22,10 @@
 #include "oasis/rt/spec_hash.hpp"
 #include "pipeline/continuous_catalog.hpp"
 #include "pipeline/continuous_catalog_data.hpp"
+#include "pipeline/continuous_options.hpp"
 #include "pipeline/discrete_catalog.hpp"
 #include "support/atomic_file.hpp"
+#include "support/error_report.hpp"
 #include "support/limits.hpp"
 #include "support/staged_directory.hpp"
 #include "support/text.hpp"
@@ -31,20 +35,23 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// The error bound a continuous compile aims at when --epsilon is not given.
-constexpr double kDefaultEpsilon = 0.1;
-
 // The formats, the C++ files' basename, the spec and --with-transitions: what the writers
 // of codegen/catalog_files.hpp read.
 struct CompileOptions : codegen::CatalogFileOptions {
   std::string output;  // default: the spec's file name without its extension
   std::optional<double> p_correct;
-  std::optional<double> epsilon;         // continuous: default kDefaultEpsilon
-  std::optional<std::size_t> max_cells;  // default: the pipeline's, per path
+  pipeline::TargetFlags target;  // continuous: --epsilon and --max-cells, when given
   bool no_attention = false;
   unsigned jobs = 0;
   CommonOptions common;
 };
+
+// "0.1": a default as --help shows it.
+std::string plain_number(double value) {
+  std::ostringstream text;
+  text << value;
+  return text.str();
+}
 
 // On `stream`: stdout, or stderr when the catalog itself goes to standard output.
 void print_continuous_summary(const pipeline::ContinuousCatalog& catalog, std::FILE* stream) {
@@ -80,50 +87,43 @@ int run_compile(CompileOptions options) {
   const char* refused = continuous ? (wants(options, "dot") ? "dot" : nullptr)
                                    : (wants(options, "svg") ? "svg" : nullptr);
   if (refused != nullptr) {
-    std::cerr << options.spec << ": error: --format " << refused << " draws "
-              << (continuous ? "explicit quotients; use svg for a continuous spec"
-                             : "continuous abstractions; use dot for a discrete model")
-              << '\n';
+    report_error(options.spec,
+                 std::string("--format ") + refused + " draws " +
+                     (continuous ? "explicit quotients; use svg for a continuous spec"
+                                 : "continuous abstractions; use dot for a discrete model"));
     return 1;
   }
   if (continuous && options.p_correct) {
-    std::cerr << options.spec << ": error: --robust needs explicit states (a discrete model)\n";
+    report_error(options.spec, "--robust needs explicit states (a discrete model)");
     return 1;
   }
-  if (!continuous && options.epsilon) {
+  if (!continuous && options.target.epsilon) {
     // A catalog claims an exact bisimulation, which `verify` checks exactly; a rounded
     // quotient of a noisy model would be refused by it, so compile never makes one.
-    std::cerr << options.spec
-              << ": warning: --epsilon is the error bound of continuous specs and is ignored "
-                 "here: a discrete catalog is an exact bisimulation ('oasisc quotient "
-                 "--epsilon E' explores a rounded quotient of a model with noisy "
-                 "probabilities)\n";
+    report_warning(options.spec,
+                   "--epsilon is the error bound of continuous specs and is ignored here: a "
+                   "discrete catalog is an exact bisimulation ('oasisc quotient --epsilon E' "
+                   "explores a rounded quotient of a model with noisy probabilities)");
   }
   const std::uint64_t hash = loaded->source_hash;
   if (options.output.empty()) options.output = fs::path(options.spec).stem().string();
   const bool to_standard_output = options.output == "-";
   // Refused before the build when the formats alone decide it (the context count may not).
   if (to_standard_output && !codegen::one_file_error(options, 1).empty()) {
-    std::cerr << "oasisc: error: " << codegen::one_file_error(options, 1) << '\n';
+    report_error(kProgram, codegen::one_file_error(options, 1));
     return 2;
   }
   StagedDirectory directory;
   std::string error;
   if (!to_standard_output && !directory.open(options.output, error)) {
-    std::cerr << options.output << ": error: " << error << '\n';
+    report_error(options.output, error);
     return 1;
   }
   codegen::OutputSet out(to_standard_output ? std::string() : directory.staging_path());
   bool written = false;
   if (continuous) {
     pipeline::ContinuousCatalogOptions build;
-    // The command line wins over the spec (`epsilon e;`, `max_cells n;`), which wins over
-    // the defaults.
-    const model::ModelIR& ir = *loaded->ir;
-    build.abstraction.epsilon =
-        options.epsilon.value_or(ir.epsilon ? to_double(*ir.epsilon) : kDefaultEpsilon);
-    build.abstraction.max_cells = options.max_cells;
-    if (!build.abstraction.max_cells && ir.max_cells) build.abstraction.max_cells = *ir.max_cells;
+    build.abstraction.target = pipeline::continuous_target(*loaded->ir, options.target);
     build.abstraction.attention = !options.no_attention;
     build.jobs = options.jobs;
     std::mutex stderr_lock;
@@ -131,7 +131,9 @@ int run_compile(CompileOptions options) {
     build.abstraction.warn = [&stderr_lock](const std::string& context,
                                             const std::string& warning) {
       const std::lock_guard lock(stderr_lock);
-      std::cerr << "oasisc: warning: context " << quoted(context) << ": " << warning << '\n';
+      std::ostringstream text;  // the context in double quotes, as this warning always had it
+      text << "context " << std::quoted(context) << ": " << warning;
+      report_warning(kProgram, text.str());
     };
     if (effective_load_options(options.common).progress) {
       build.abstraction.progress = [&stderr_lock](const std::string& context,
@@ -142,7 +144,7 @@ int run_compile(CompileOptions options) {
     }
     const auto catalog = pipeline::build_continuous_catalog(*loaded->ir, hash, build, error);
     if (!catalog) {
-      std::cerr << options.spec << ": error: " << error << '\n';
+      report_error(options.spec, error);
       return 1;
     }
     print_continuous_summary(*catalog, to_standard_output ? stderr : stdout);
@@ -153,14 +155,14 @@ int run_compile(CompileOptions options) {
     build.abstraction.jobs = options.jobs;
     auto catalog = pipeline::build_catalog(*loaded->model, hash, build, error);
     if (!catalog) {
-      std::cerr << options.spec << ": error: " << error << '\n';
+      report_error(options.spec, error);
       return 1;
     }
     written = codegen::write_discrete_catalog(options, *catalog, out, error);
   }
   if (!written ||
       (!to_standard_output && !directory.commit(codegen::marker_text(options, hash, out), error))) {
-    std::cerr << (to_standard_output ? "oasisc" : options.output) << ": error: " << error << '\n';
+    report_error(to_standard_output ? kProgram : std::string_view(options.output), error);
     return 1;
   }
   if (to_standard_output) return 0;
@@ -229,12 +231,13 @@ CommandRunner add_compile_command(CLI::App& app) {
                    "(discrete), overriding the spec's observation noise")
       ->check(real_in(closed(0.0, 1.0)));
   command
-      ->add_option("--epsilon", options->epsilon,
+      ->add_option("--epsilon", options->target.epsilon,
                    "Continuous: the error bound every transition row must meet (default: the "
-                   "spec's 'epsilon', else 0.1)")
+                   "spec's 'epsilon', else " +
+                       plain_number(pipeline::kDefaultEpsilon) + ")")
       ->check(real_in(RealBounds{0.0, 1.0, true, false}));
   command
-      ->add_option("--max-cells", options->max_cells,
+      ->add_option("--max-cells", options->target.max_cells,
                    "Continuous: cells per context at most (default: the spec's 'max_cells', else " +
                        std::to_string(pipeline::kDefaultGridCells) + " on a grid, " +
                        std::to_string(pipeline::kDefaultPolytopeCells) + " polytope cells)")

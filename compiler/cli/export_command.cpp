@@ -7,6 +7,7 @@
 #include "cli/commands.hpp"
 #include "formats/aut_writer.hpp"
 #include "formats/explicit_writer.hpp"
+#include "support/error_report.hpp"
 
 namespace oasis::cli {
 namespace {
@@ -28,17 +29,17 @@ std::optional<std::size_t> choose_context(const model::ExplicitModel& model,
     names += (c ? ", " : "") + model.contexts[c].name;
   }
   if (name.empty() && model.contexts.size() == 1) return 0;
-  std::cerr << path << ": error: "
-            << (name.empty() ? "the model has several contexts"
-                             : "the model has no context '" + name + "'")
-            << "; choose one with --context (" << names << ")\n";
+  report_error(path, (name.empty() ? "the model has several contexts"
+                                   : "the model has no context '" + name + "'") +
+                         "; choose one with --context (" + names + ")");
   return std::nullopt;
 }
 
 int run_export(const ExportOptions& options) {
   if (options.format == "prism" && options.output == "-") {
-    std::cerr << "oasisc: error: --format prism writes several files (.tra, .lab, .srew, ...): "
-                 "give their base name with -o; '-o -' (standard output) is for --format aut\n";
+    report_error(kProgram,
+                 "--format prism writes several files (.tra, .lab, .srew, ...): give their base "
+                 "name with -o; '-o -' (standard output) is for --format aut");
     return 2;
   }
   SourceManager sources;
@@ -47,9 +48,9 @@ int run_export(const ExportOptions& options) {
       load_model(options.file, sources, diagnostics, effective_load_options(options.common));
   if (!loaded || diagnostics.has_errors()) return 1;
   if (!loaded->model) {
-    std::cerr << options.file
-              << ": error: a continuous model has no explicit states to export "
-                 "before the geometry layer partitions it\n";
+    report_error(options.file,
+                 "a continuous model has no explicit states to export before the geometry layer "
+                 "partitions it");
     return 1;
   }
   const auto context = choose_context(*loaded->model, options.context, options.file);
@@ -60,7 +61,7 @@ int run_export(const ExportOptions& options) {
           ? formats::write_aut_file(*loaded->model, *context, options.output, error)
           : formats::write_prism(*loaded->model, *context, options.output, error);
   if (!written) {
-    std::cerr << options.output << ": error: " << error << '\n';
+    report_error(options.output, error);
     return 1;
   }
   return 0;

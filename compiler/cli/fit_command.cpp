@@ -23,6 +23,7 @@
 #include "frontend/lexer.hpp"
 #include "pipeline/discrete_catalog.hpp"
 #include "support/atomic_file.hpp"
+#include "support/error_report.hpp"
 #include "text/printable_text.hpp"
 
 namespace oasis::cli {
@@ -84,12 +85,12 @@ bool deliver_fragment(const std::string& fragment, const std::string& path) {
   AtomicFile file;
   std::string error;
   if (!file.open(path, error)) {
-    std::cerr << path << ": error: " << error << '\n';
+    report_error(path, error);
     return false;
   }
   file.append(fragment);
   if (!file.commit(error)) {
-    std::cerr << path << ": error: " << error << '\n';
+    report_error(path, error);
     return false;
   }
   std::cout << "wrote " << path << '\n';
@@ -108,15 +109,15 @@ std::optional<CompiledSpec> compile_spec(const std::string& path, const CommonOp
   out.loaded = load_model(path, sources, diagnostics, effective_load_options(common));
   if (!out.loaded || diagnostics.has_errors()) return std::nullopt;
   if (!out.loaded->model) {
-    std::cerr << path
-              << ": error: the discrete fits need explicit states; this is a continuous spec "
-                 "(its depth noise is fitted by 'oasisc fit depth-noise')\n";
+    report_error(path,
+                 "the discrete fits need explicit states; this is a continuous spec (its depth "
+                 "noise is fitted by 'oasisc fit depth-noise')");
     return std::nullopt;
   }
   std::string error;
   out.catalog = pipeline::build_catalog(*out.loaded->model, out.loaded->source_hash, {}, error);
   if (!out.catalog) {
-    std::cerr << path << ": error: " << error << '\n';
+    report_error(path, error);
     return std::nullopt;
   }
   return out;
@@ -188,7 +189,7 @@ int run_switching(const SwitchingOptions& options) {
   filter.noise.reward =
       reward_observed ? fit::RewardFollows::kObservedState : fit::RewardFollows::kTrueState;
   if (filter.joint() && catalog.num_states < 2 && filter.noise.p_correct != 1.0) {
-    std::cerr << options.spec << ": error: state noise needs two or more states\n";
+    report_error(options.spec, "state noise needs two or more states");
     return 1;
   }
 
@@ -205,7 +206,7 @@ int run_switching(const SwitchingOptions& options) {
     result = fit::fit_switching(filter, runs, fit_options, error);
   }
   if (!result) {
-    std::cerr << "oasisc: fit switching: error: " << error << '\n';
+    report_error(std::string(kProgram) + ": fit switching", error);
     return 1;
   }
   const fit::SwitchingFit& fitted = *result;
@@ -272,7 +273,7 @@ int run_noise(const NoiseOptions& options) {
   if (!compiled) return 1;
   const std::vector<std::string>& states = compiled->catalog->state_names;
   if (states.size() < 2) {
-    std::cerr << options.spec << ": error: state noise needs two or more states\n";
+    report_error(options.spec, "state noise needs two or more states");
     return 1;
   }
   fit::NoiseCounts counts;
@@ -284,7 +285,7 @@ int run_noise(const NoiseOptions& options) {
   }
   if (diagnostics.has_errors()) return 1;
   if (counts.total() == 0) {
-    std::cerr << "oasisc: fit noise: error: the labelled logs have no pairs\n";
+    report_error(std::string(kProgram) + ": fit noise", "the labelled logs have no pairs");
     return 1;
   }
   const fit::SymmetricNoiseFit symmetric = fit::fit_symmetric_noise(counts);
@@ -320,8 +321,9 @@ int run_noise(const NoiseOptions& options) {
                   << "  " << interval_text(confusion.intervals[k]) << '\n';
       }
     for (std::uint32_t s : confusion.rows_without_pairs)
-      std::cerr << "oasisc: fit noise: warning: no pairs with true state " << states[s]
-                << ": its row is the symmetric estimate\n";
+      report_warning(
+          std::string(kProgram) + ": fit noise",
+          "no pairs with true state " + states[s] + ": its row is the symmetric estimate");
     fragment += fit::confusion_fragment(confusion.matrix, states, options.reward_follows);
   } else {
     fragment += fit::state_noise_fragment(symmetric.sigma, options.reward_follows);
@@ -357,7 +359,7 @@ int run_depth(const DepthOptions& options) {
   std::string error;
   const auto fitted = fit::fit_depth_noise(pairs, fit_options, error);
   if (!fitted) {
-    std::cerr << "oasisc: fit depth-noise: error: " << error << '\n';
+    report_error(std::string(kProgram) + ": fit depth-noise", error);
     return 1;
   }
   std::cout << "fit depth-noise: " << fitted->pairs << " pairs ("

@@ -1,7 +1,9 @@
 #include "cli/label_options.hpp"
 
-#include <iostream>
 #include <stdexcept>
+#include <string>
+
+#include "support/error_report.hpp"
 
 namespace oasis::cli {
 
@@ -27,14 +29,13 @@ std::optional<std::vector<std::uint32_t>> respected_label_classes(const model::E
                                                                   const std::string& file) {
   const std::optional<model::LabelSelection> selection = model::LabelSelection::parse(text);
   if (!selection) {
-    std::cerr << file << ": error: --respect-labels: expected all, none or label names, got \""
-              << text << "\"\n";
+    report_error(file, "--respect-labels: expected all, none or label names, got \"" + text + "\"");
     return std::nullopt;
   }
   try {
     return model::label_classes(model.labels, model.num_states(), *selection);
   } catch (const std::invalid_argument& e) {
-    std::cerr << file << ": error: --respect-labels: " << e.what() << '\n';
+    report_error(file, std::string("--respect-labels: ") + e.what());
     return std::nullopt;
   }
 }

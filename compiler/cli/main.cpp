@@ -1,7 +1,8 @@
 // oasisc: the oasis abstraction compiler.
 
-#include <iostream>
+#include <exception>
 #include <map>
+#include <new>
 #include <optional>
 #include <string>
 #include <vector>
@@ -11,6 +12,7 @@
 #include "cli/commands.hpp"
 #include "command_line/empty_values.hpp"
 #include "command_line/memory_option.hpp"
+#include "support/error_report.hpp"
 #include "support/gmp_allocation.hpp"
 #include "support/interrupt_cleanup.hpp"
 #include "support/standard_output.hpp"
@@ -48,27 +50,27 @@ int main(int argc, char** argv) {
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
-    return oasis::finish_standard_output("oasisc", app.exit(e));
+    return oasis::finish_standard_output(oasis::cli::kProgram, app.exit(e));
   } catch (const CLI::CallForVersion& e) {
-    return oasis::finish_standard_output("oasisc", app.exit(e));
+    return oasis::finish_standard_output(oasis::cli::kProgram, app.exit(e));
   } catch (const CLI::ParseError& e) {
     app.exit(e);
     return 2;  // bad usage, distinct from 1 (the input has errors)
   }
   const std::optional<std::uint64_t> budget =
-      oasis::cli::apply_memory_budget_option(app, memory_budget, "oasisc");
-  if (!budget) return oasis::finish_standard_output("oasisc", 2);
+      oasis::cli::apply_memory_budget_option(app, memory_budget, oasis::cli::kProgram);
+  if (!budget) return oasis::finish_standard_output(oasis::cli::kProgram, 2);
   int status = 2;
   try {
     for (const CLI::App* command : app.get_subcommands())
       status = runners.at(command)();
   } catch (const std::bad_alloc&) {
     // Everything the command allocated is released by now, so the message can be built.
-    oasis::cli::report_out_of_memory("oasisc", *budget);
+    oasis::cli::report_out_of_memory(oasis::cli::kProgram, *budget);
     status = 1;
   } catch (const std::exception& e) {
-    std::cerr << "oasisc: error: " << e.what() << '\n';
+    oasis::report_error(oasis::cli::kProgram, e.what());
     status = 1;
   }
-  return oasis::finish_standard_output("oasisc", status);
+  return oasis::finish_standard_output(oasis::cli::kProgram, status);
 }

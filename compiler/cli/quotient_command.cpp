@@ -20,6 +20,7 @@
 #include "pipeline/discrete_catalog.hpp"
 #include "support/atomic_file.hpp"
 #include "support/atomic_file_set.hpp"
+#include "support/error_report.hpp"
 #include "support/limits.hpp"
 #include "support/peak_memory.hpp"
 #include "text/printable_text.hpp"
@@ -33,7 +34,7 @@ struct QuotientOptions {
   std::string format = "text";
   std::string output;
   bool partition = false;
-  std::optional<double> epsilon;
+  std::optional<double> rounding_step;  // --epsilon: the approximate mode's rounding step
   std::string respect_labels = "all";
   std::string choices = "labelled";  // --choices: labelled (Definition 1) or unlabelled (Storm)
   unsigned jobs = 0;
@@ -54,10 +55,10 @@ std::optional<std::vector<std::size_t>> select_contexts(const model::ExplicitMod
     while (c < model.contexts.size() && model.contexts[c].name != name)
       ++c;
     if (c == model.contexts.size()) {
-      std::cerr << options.file << ": error: the model has no context '" << name << "' (it has:";
+      std::string names;
       for (const auto& context : model.contexts)
-        std::cerr << ' ' << context.name;
-      std::cerr << ")\n";
+        names += ' ' + context.name;
+      report_error(options.file, "the model has no context '" + name + "' (it has:" + names + ")");
       return std::nullopt;
     }
     selected.push_back(c);
@@ -81,18 +82,18 @@ bool context_files_allowed(const model::ExplicitModel& model,
     const std::string problem = files::plain_file_name_problem(
         std::filesystem::path(options.output).stem().string() + "." + model.contexts[c].name);
     if (!problem.empty()) {
-      std::cerr << options.file << ": error: context \""
-                << text::printable_excerpt(model.contexts[c].name)
-                << "\" cannot name a file: " << problem << "; choose other contexts with -c\n";
+      report_error(options.file, "context \"" + text::printable_excerpt(model.contexts[c].name) +
+                                     "\" cannot name a file: " + problem +
+                                     "; choose other contexts with -c");
       return false;
     }
   }
   if (const auto shared = files::first_shared_output(paths)) {
-    std::cerr << options.file << ": error: contexts \""
-              << text::printable_excerpt(model.contexts[selected[shared->first]].name)
-              << "\" and \""
-              << text::printable_excerpt(model.contexts[selected[shared->second]].name)
-              << "\" would both be written to " << paths[shared->first] << '\n';
+    report_error(
+        options.file,
+        "contexts \"" + text::printable_excerpt(model.contexts[selected[shared->first]].name) +
+            "\" and \"" + text::printable_excerpt(model.contexts[selected[shared->second]].name) +
+            "\" would both be written to " + paths[shared->first]);
     return false;
   }
   return true;
@@ -105,7 +106,7 @@ std::vector<pipeline::DiscreteAbstraction> run_contexts(const model::ExplicitMod
                                                         std::vector<std::uint32_t> label_class,
                                                         bool progress) {
   pipeline::DiscreteOptions refinement;
-  refinement.epsilon = options.epsilon;
+  refinement.rounding_step = options.rounding_step;
   refinement.label_class = std::move(label_class);
   refinement.unlabelled_choices = options.choices == "unlabelled";
   refinement.solve = false;
@@ -131,7 +132,7 @@ int write_output(const LoadedModel& loaded,
   const model::ExplicitModel& model = *loaded.model;
   const bool to_stdout = options.output.empty() || options.output == "-";
   std::ostream& summary = (options.format == "text" || !to_stdout) ? std::cout : std::cerr;
-  print_summary(summary, model, results, load_seconds, peak_memory_mib(), options.epsilon);
+  print_summary(summary, model, results, load_seconds, peak_memory_mib(), options.rounding_step);
   if (!model.labels.empty())
     summary << "labels: " << model.labels.names.size() << "; respected: " << options.respect_labels
             << '\n';
@@ -148,13 +149,13 @@ int write_output(const LoadedModel& loaded,
     const bool through_cout = to_stdout && options.format != "aut";
     AtomicFile* file = through_cout ? nullptr : files.add(path, error);
     if (!through_cout && file == nullptr) {
-      std::cerr << path << ": error: " << error << '\n';
+      report_error(path, error);
       return 1;
     }
     std::string text;
     if (options.format == "json") {
       nlohmann::json json = quotient_json(loaded, results, load_seconds, peak_memory_mib(),
-                                          options.partition, options.epsilon);
+                                          options.partition, options.rounding_step);
       // What `verify` must respect to check these partitions.
       json["respected_labels"] = options.respect_labels;
       json["choices"] = options.choices;
@@ -164,7 +165,7 @@ int write_output(const LoadedModel& loaded,
           bisim::build_quotient(model, results[i].context, results[i].partition);
       if (options.format == "aut") {
         if (!formats::write_aut(quotient, 0, *file, error)) {
-          std::cerr << path << ": error: " << error << '\n';
+          report_error(path, error);
           return 1;
         }
         continue;
@@ -178,7 +179,7 @@ int write_output(const LoadedModel& loaded,
     }
   }
   if (!files.commit(error)) {
-    std::cerr << options.output << ": error: " << error << '\n';
+    report_error(options.output, error);
     return 1;
   }
   return 0;
@@ -187,18 +188,19 @@ int write_output(const LoadedModel& loaded,
 int run_quotient(const QuotientOptions& options) {
   // A quotient .aut can be as large as the model, so standard output must be asked for.
   if (options.choices == "unlabelled" && (options.format == "aut" || options.format == "dot")) {
-    std::cerr << "oasisc: error: --choices unlabelled gives partitions (text, json): the "
-                 "quotient MDP that aut and dot write names its choices by action\n";
+    report_error(kProgram,
+                 "--choices unlabelled gives partitions (text, json): the quotient MDP that aut "
+                 "and dot write names its choices by action");
     return 2;
   }
-  if (options.choices == "unlabelled" && options.epsilon) {
-    std::cerr << "oasisc: error: --choices unlabelled compares probabilities exactly; it does "
-                 "not take --epsilon\n";
+  if (options.choices == "unlabelled" && options.rounding_step) {
+    report_error(kProgram,
+                 "--choices unlabelled compares probabilities exactly; it does not take --epsilon");
     return 2;
   }
   if (options.format == "aut" && options.output.empty()) {
-    std::cerr << "oasisc: error: --format aut writes files: give one with -o FILE (or -o - "
-                 "for standard output)\n";
+    report_error(kProgram,
+                 "--format aut writes files: give one with -o FILE (or -o - for standard output)");
     return 2;
   }
   SourceManager sources;
@@ -209,11 +211,11 @@ int run_quotient(const QuotientOptions& options) {
   auto loaded = load_model(options.file, sources, diagnostics, load_options);
   if (!loaded || diagnostics.has_errors()) return 1;
   if (!loaded->model) {
-    std::cerr << options.file
-              << ": error: quotient takes explicit models; a continuous spec is partitioned and "
-                 "quotiented by 'oasisc compile "
-              << options.file
-              << " -o DIR --format json' (its JSON has every context's cells and blocks)\n";
+    report_error(options.file,
+                 "quotient takes explicit models; a continuous spec is partitioned and quotiented "
+                 "by 'oasisc compile " +
+                     options.file +
+                     " -o DIR --format json' (its JSON has every context's cells and blocks)");
     return 1;
   }
   const double load_seconds =
@@ -221,10 +223,10 @@ int run_quotient(const QuotientOptions& options) {
   const auto selected = select_contexts(*loaded->model, options);
   if (!selected) return 1;
   if (options.format == "aut" && options.output == "-" && selected->size() > 1) {
-    std::cerr << "oasisc: error: --format aut writes one file per context and the model has "
-              << selected->size()
-              << ": choose one with --context to write it to standard "
-                 "output, or give -o FILE\n";
+    report_error(kProgram, "--format aut writes one file per context and the model has " +
+                               std::to_string(selected->size()) +
+                               ": choose one with --context to write it to standard output, or "
+                               "give -o FILE");
     return 2;
   }
   if (!context_files_allowed(*loaded->model, *selected, options)) return 1;
@@ -270,7 +272,7 @@ CommandRunner add_quotient_command(CLI::App& app) {
                       "Output file; '-' or none: standard output (aut: only with -o -)");
   command->add_flag("--partition", options->partition, "Include the blocks in the JSON output");
   command
-      ->add_option("--epsilon", options->epsilon,
+      ->add_option("--epsilon", options->rounding_step,
                    "Compare probabilities rounded to multiples of E (approximate mode)")
       ->check(real_in(closed(1e-15, 0.5)));
   add_respect_labels_option(*command, options->respect_labels);

@@ -20,7 +20,7 @@ nlohmann::json state_label(const model::StateSpace& states, model::StateIndex s)
 
 void print_summary(std::ostream& out, const model::ExplicitModel& model,
                    const std::vector<pipeline::DiscreteAbstraction>& results, double load_seconds,
-                   double peak_mib, std::optional<double> epsilon) {
+                   double peak_mib, std::optional<double> rounding_step) {
   out << model.name << ": " << model.num_states()
       << (model.num_states() == 1 ? " state, " : " states, ") << model.num_actions()
       << (model.num_actions() == 1 ? " action" : " actions") << "; read in " << std::fixed
@@ -36,22 +36,22 @@ void print_summary(std::ostream& out, const model::ExplicitModel& model,
         << result.refinement_seconds << '\n';
   }
   out << "  peak memory " << std::setprecision(1) << peak_mib << " MiB";
-  if (epsilon)
+  if (rounding_step)
     out << "; APPROXIMATE: probabilities and rewards compared after rounding to multiples of "
-        << *epsilon;
+        << *rounding_step;
   out << '\n' << std::defaultfloat;
 }
 
 nlohmann::json quotient_json(const input::LoadedModel& loaded,
                              const std::vector<pipeline::DiscreteAbstraction>& results,
                              double load_seconds, double peak_mib, bool with_partition,
-                             std::optional<double> epsilon) {
+                             std::optional<double> rounding_step) {
   const model::ExplicitModel& model = *loaded.model;
   nlohmann::json out;
   out["file"] = loaded.path;
   out["model"] = model.name;
-  out["exact"] = !epsilon.has_value();
-  out["epsilon"] = epsilon ? nlohmann::json(*epsilon) : nlohmann::json();
+  out["exact"] = !rounding_step.has_value();
+  out["epsilon"] = rounding_step ? nlohmann::json(*rounding_step) : nlohmann::json();
   out["load_seconds"] = load_seconds;
   out["peak_memory_mib"] = peak_mib;
   nlohmann::json contexts = nlohmann::json::array();

@@ -15,15 +15,16 @@ namespace oasis::cli {
 
 void print_summary(std::ostream& out, const model::ExplicitModel& model,
                    const std::vector<pipeline::DiscreteAbstraction>& results, double load_seconds,
-                   double peak_mib, std::optional<double> epsilon);
+                   double peak_mib, std::optional<double> rounding_step);
 
-// Keys: file, model, exact, epsilon, load_seconds, peak_memory_mib, contexts[] with name,
-// states, transitions, blocks, seconds, splitters, edge_visits (and partition when asked:
-// blocks as lists of state names, or of indices for unnamed imported states).
+// Keys: file, model, exact, epsilon (the rounding step; null when exact), load_seconds,
+// peak_memory_mib, contexts[] with name, states, transitions, blocks, seconds, splitters,
+// edge_visits (and partition when asked: blocks as lists of state names, or of indices for unnamed
+// imported states).
 nlohmann::json quotient_json(const input::LoadedModel& loaded,
                              const std::vector<pipeline::DiscreteAbstraction>& results,
                              double load_seconds, double peak_mib, bool with_partition,
-                             std::optional<double> epsilon);
+                             std::optional<double> rounding_step);
 
 // Graphviz: a node per block (its first members and rewards), a point per enabled
 // (block, action) and edges labelled with exact probabilities.

@@ -13,6 +13,7 @@
 #include "oasis/rt/catalog_file.hpp"
 #include "oasis/rt/catalog_validation.hpp"
 #include "oasis/rt/spec_hash.hpp"
+#include "support/error_report.hpp"
 #include "text/printable_text.hpp"
 #include "verify/continuous_check.hpp"
 #include "verify/continuous_json_reader.hpp"
@@ -38,9 +39,9 @@ int print_checks(const std::vector<verify::CatalogCheck>& checks);
 bool compiled_from_model(const VerifyOptions& options, std::uint64_t hash,
                          const rt::CatalogView& view) {
   if (view.spec_hash == hash) return true;
-  std::cerr << options.result << ": error: the catalog was compiled from another spec (hash "
-            << rt::spec_hash_text(view.spec_hash) << ", this one has " << rt::spec_hash_text(hash)
-            << "); recompile it\n";
+  report_error(options.result, "the catalog was compiled from another spec (hash " +
+                                   rt::spec_hash_text(view.spec_hash) + ", this one has " +
+                                   rt::spec_hash_text(hash) + "); recompile it");
   return false;
 }
 
@@ -56,7 +57,7 @@ int verify_catalog(const VerifyOptions& options, const model::ExplicitModel& mod
   const rt::CatalogView& view = catalog.view();
   if (!compiled_from_model(options, hash, view)) return 1;
   if (view.is_continuous()) {
-    std::cerr << options.result << ": error: a continuous catalog, but the model is explicit\n";
+    report_error(options.result, "a continuous catalog, but the model is explicit");
     return 1;
   }
   return print_checks(
@@ -70,9 +71,7 @@ int check_continuous_view(const VerifyOptions& options, const model::ModelIR& ir
                           const verify::StatedCells* stated = nullptr) {
   if (!compiled_from_model(options, hash, view)) return 1;
   if (!view.is_continuous()) {
-    std::cerr << options.result
-              << ": error: an explicit model's catalog, but the spec is "
-                 "continuous\n";
+    report_error(options.result, "an explicit model's catalog, but the spec is continuous");
     return 1;
   }
   std::vector<verify::CatalogCheck> checks = verify::check_continuous_catalog(ir, view);
@@ -90,13 +89,12 @@ int verify_continuous(const VerifyOptions& options, const model::ModelIR& ir, st
     auto data = verify::read_continuous_catalog_json(
         options.result, options.common.load.max_input_bytes, error, &stated);
     if (!data) {
-      std::cerr << options.result << ": error: " << text::printable_message(error) << '\n';
+      report_error(options.result, text::printable_message(error));
       return 1;
     }
     const rt::CatalogView view = data->view();
     if (!rt::validate(view, &error)) {
-      std::cerr << options.result << ": error: invalid catalog: " << text::printable_message(error)
-                << '\n';
+      report_error(options.result, "invalid catalog: " + text::printable_message(error));
       return 1;
     }
     return check_continuous_view(options, ir, hash, view, &stated);
@@ -133,13 +131,13 @@ int run_verify(const VerifyOptions& options) {
   const auto result = verify::read_partition_result(options.result, model,
                                                     options.common.load.max_input_bytes, error);
   if (!result) {
-    std::cerr << options.result << ": error: " << text::printable_message(error) << '\n';
+    report_error(options.result, text::printable_message(error));
     return 1;
   }
   if (result->approximate) {
-    std::cerr << options.result
-              << ": note: the partitions were computed with --epsilon; they "
-                 "are checked exactly, so differences below epsilon fail\n";
+    report_note(options.result,
+                "the partitions were computed with --epsilon; they are checked exactly, so "
+                "differences below epsilon fail");
   }
 
   const auto label_class = respected_label_classes(model, result->respected_labels, options.result);

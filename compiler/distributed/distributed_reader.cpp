@@ -10,6 +10,7 @@
 #include "distributed/grouping.hpp"
 #include "formats/aut_reader.hpp"
 #include "support/diagnostics.hpp"
+#include "support/error_report.hpp"
 #include "support/mapped_file.hpp"
 #include "support/source_manager.hpp"
 
@@ -329,8 +330,8 @@ std::optional<OwnedModel> read_aut_distributed(const std::string& path,
   arrivals.finish();
   if (communicator.any(!part.has_value() || arrivals.too_many_edges)) {
     if (arrivals.too_many_edges)
-      std::cerr << path << ": error: more than 2^32 edges start at the states of rank "
-                << communicator.rank() << "; run with more ranks\n";
+      report_error(path, "more than 2^32 edges start at the states of rank " +
+                             std::to_string(communicator.rank()) + "; run with more ranks");
     return std::nullopt;
   }
   owned.num_states = part->num_states;
@@ -352,10 +353,12 @@ std::optional<OwnedModel> read_aut_distributed(const std::string& path,
   sources = SourceManager();
   const auto repeated = assemble(arrivals, tables, owned);
   if (repeated) {
-    std::cerr << path << ": error: state " << repeated->first
-              << " has more than one distribution for action '" << tables.actions[repeated->second]
-              << "'; an MDP allows one per action ('oasisc check " << path
-              << "' shows the lines)\n";
+    report_error(path, "state " + std::to_string(repeated->first) +
+                           " has more than one distribution for action '" +
+                           tables.actions[repeated->second] +
+                           "'; an MDP allows one per action "
+                           "('oasisc check " +
+                           path + "' shows the lines)");
   }
   if (communicator.any(repeated.has_value())) return std::nullopt;
   owned.actions = std::move(tables.actions);

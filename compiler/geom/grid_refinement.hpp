@@ -32,9 +32,11 @@
 
 namespace oasis::geom {
 
+// No defaults: the caller gives both (pipeline/continuous_options.hpp holds the defaults and
+// the rule that chooses between them, the spec and the command line).
 struct GridTarget {
-  double epsilon = 0.1;               // the error bound to reach
-  std::size_t max_cells = 1'000'000;  // refuse to refine past this many cells
+  double epsilon;         // the error bound to reach
+  std::size_t max_cells;  // refuse to refine past this many cells
 };
 
 struct GridPartition {

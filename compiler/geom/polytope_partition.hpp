@@ -24,9 +24,11 @@
 
 namespace oasis::geom {
 
+// No defaults for the target and budget: the caller gives both
+// (pipeline/continuous_options.hpp holds the defaults).
 struct PolytopePartitionOptions {
-  Rational epsilon = Rational(1, 10);  // the error bound to reach
-  std::size_t max_cells = 10'000;      // steps 2 and 3 stop at this many cells
+  Rational epsilon;       // the error bound to reach
+  std::size_t max_cells;  // steps 2 and 3 stop at this many cells
   // Called after every split of steps 2 and 3 with the number of cells and, in step 3, the
   // worst cell's bound before that split (optional).
   std::function<void(std::size_t cells, std::optional<double> worst_bound)> progress = nullptr;

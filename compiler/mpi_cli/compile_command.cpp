@@ -16,6 +16,7 @@
 #include "distributed/context_spreading.hpp"
 #include "input/model_loader.hpp"
 #include "mpi_cli/commands.hpp"
+#include "support/error_report.hpp"
 #include "support/limits.hpp"
 #include "support/staged_directory.hpp"
 
@@ -51,7 +52,7 @@ std::optional<model::ExplicitModel> load_discrete_model(
     problem = "--format svg draws continuous abstractions; use dot for a discrete model";
   }
   if (!problem.empty()) {
-    if (communicator.is_root()) std::cerr << options.spec << ": error: " << problem << '\n';
+    if (communicator.is_root()) report_error(options.spec, problem);
     return std::nullopt;
   }
   return std::move(loaded->model);
@@ -64,18 +65,18 @@ bool write_catalog(const CompileOptions& options, const model::ExplicitModel& mo
   std::string error;
   auto catalog = pipeline::catalog_data(model, abstractions, hash, {options.p_correct}, error);
   if (!catalog) {
-    std::cerr << options.spec << ": error: " << error << '\n';
+    report_error(options.spec, error);
     return false;
   }
   StagedDirectory directory;
   if (!directory.open(options.output, error)) {
-    std::cerr << options.output << ": error: " << error << '\n';
+    report_error(options.output, error);
     return false;
   }
   codegen::OutputSet out(directory.staging_path());
   if (!codegen::write_discrete_catalog(options, *catalog, out, error) ||
       !directory.commit(codegen::marker_text(options, hash, out), error)) {
-    std::cerr << options.output << ": error: " << error << '\n';
+    report_error(options.output, error);
     return false;
   }
   for (const std::string& name : out.names())
@@ -99,7 +100,7 @@ int run_compile(CompileOptions options, const distributed::Communicator& communi
       distributed::abstract_contexts_spread(*model, abstraction, communicator, abstractions, error);
   if (communicator.is_root()) {
     if (!written)
-      std::cerr << options.spec << ": error: " << error << '\n';
+      report_error(options.spec, error);
     else
       written = write_catalog(options, *model, abstractions, hash);
   }

@@ -21,6 +21,7 @@
 #include "command_line/memory_option.hpp"
 #include "mpi_cli/commands.hpp"
 #include "process/ending_signals.hpp"
+#include "support/error_report.hpp"
 #include "support/gmp_allocation.hpp"
 #include "support/interrupt_cleanup.hpp"
 #include "support/mapped_file.hpp"
@@ -28,7 +29,7 @@
 
 namespace {
 
-constexpr const char* kProgram = "oasisc-mpi";
+using oasis::mpi_cli::kProgram;
 
 // Every rank parses the same command line and would say the same about it: only rank 0 speaks,
 // the others' std::cout and std::cerr go nowhere while this lives.
@@ -120,7 +121,7 @@ int main(int argc, char** argv) {
       "oasisc-mpi: oasisc's bisimulation and compile spread over the ranks of an MPI job\n"
       "(mpirun -np P oasisc-mpi COMMAND ...). Every rank runs the same command; rank 0 writes\n"
       "the output and the report. 'oasisc-mpi COMMAND --help' explains each.",
-      kProgram);
+      std::string(kProgram));
   app.require_subcommand(1);
   app.set_version_flag("--version", std::string(kProgram) + " " + OASIS_VERSION);
   const mpi_cli::CommandRunner quotient = mpi_cli::add_quotient_command(app, communicator);
@@ -141,7 +142,7 @@ int main(int argc, char** argv) {
     lift_memory_budget();  // MPI_Abort allocates to tell mpirun why the job ends
     communicator.abort(1);
   } catch (const std::exception& e) {
-    std::cerr << kProgram << ": error: " << e.what() << '\n';
+    oasis::report_error(kProgram, e.what());
     communicator.abort(1);
   }
   return finish_standard_output(kProgram, status);

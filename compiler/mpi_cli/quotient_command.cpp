@@ -22,6 +22,7 @@
 #include "files/output_names.hpp"
 #include "formats/aut_writer.hpp"
 #include "mpi_cli/commands.hpp"
+#include "support/error_report.hpp"
 #include "support/peak_memory.hpp"
 
 namespace oasis::mpi_cli {
@@ -161,7 +162,7 @@ bool run_one(const std::string& path, const Options& options,
     written = quotient ? formats::write_aut_file(*quotient, 0, output, error)
                        : distributed::write_partition_json(output, whole->partition, facts, error);
     if (!written)
-      std::cerr << "oasisc-mpi: error: cannot write '" << output << "': " << error << '\n';
+      report_error(kProgram, "cannot write '" + output + "': " + error);
     else if (!options.quiet)
       print_summary(facts, states, partition.num_blocks, output);
   }
@@ -175,16 +176,18 @@ int check_models(const Options& options, bool report) {
   for (const std::string& model : options.models) {
     if (std::filesystem::path(model).extension() != ".aut") {
       if (report)
-        std::cerr << model << ": error: oasisc-mpi reads mCRL2 .aut files; convert others with "
-                  << "'oasisc export " << model << " --format aut -o MODEL.aut'\n";
+        report_error(model,
+                     "oasisc-mpi reads mCRL2 .aut files; convert others with 'oasisc export " +
+                         model + " --format aut -o MODEL.aut'");
       return 1;
     }
   }
   std::error_code code;
   if (options.models.size() > 1 && !std::filesystem::is_directory(options.output, code)) {
     if (report)
-      std::cerr << "oasisc-mpi: error: with " << options.models.size()
-                << " models, -o must name an existing directory (one output per model)\n";
+      report_error(kProgram, "with " + std::to_string(options.models.size()) +
+                                 " models, -o must name an existing directory (one output per "
+                                 "model)");
     return 2;
   }
   std::vector<std::string> outputs;
@@ -192,10 +195,11 @@ int check_models(const Options& options, bool report) {
     outputs.push_back(output_for(options, model));
   if (const auto shared = files::first_shared_output(outputs)) {
     if (report)
-      std::cerr << "oasisc-mpi: error: " << options.models[shared->first] << " and "
-                << options.models[shared->second] << " would both be written to "
-                << outputs[shared->first]
-                << " (one output per model, named after it); quotient them in separate runs\n";
+      report_error(kProgram, options.models[shared->first] + " and " +
+                                 options.models[shared->second] + " would both be written to " +
+                                 outputs[shared->first] +
+                                 " (one output per model, named after it); quotient them in "
+                                 "separate runs");
     return 2;
   }
   return 0;

@@ -110,15 +110,15 @@ bool partition_by_grid(const geom::GridGeometry& geometry, const model::ModelIR&
                        Clock::time_point& start, std::optional<model::ExplicitModel>& mdp,
                        std::string& error) {
   result.axis_names = geometry.axis_names;
+  const ContinuousTarget& target = options.target;
   auto partition = geom::partition_grid(
-      geometry, {options.epsilon, options.max_cells.value_or(kDefaultGridCells)}, error);
+      geometry, {.epsilon = target.epsilon, .max_cells = target.grid_cells}, error);
   if (!partition) return false;
   result.epsilon = partition->epsilon;
   result.met = partition->met;
   result.cells = grid_cells(partition->grid);
   if (!result.met && options.warn)
-    options.warn(result.context, above_target(result, options.max_cells.value_or(kDefaultGridCells),
-                                              options.epsilon));
+    options.warn(result.context, above_target(result, target.grid_cells, target.epsilon));
   result.seconds.grid = seconds_since(start);
   mdp = geom::grid_finite_mdp(geometry, partition->grid, ir.actions, ir.objective);
   return true;
@@ -131,23 +131,22 @@ bool partition_by_polytopes(const geom::PolytopeGeometry& geometry, const model:
                             Clock::time_point& start, std::optional<model::ExplicitModel>& mdp,
                             std::string& error) {
   result.axis_names = geometry.axis_names;
-  geom::PolytopePartitionOptions target;
-  target.epsilon = Rational(options.epsilon);
-  target.max_cells = options.max_cells.value_or(kDefaultPolytopeCells);
+  geom::PolytopePartitionOptions refinement{.epsilon = Rational(options.target.epsilon),
+                                            .max_cells = options.target.polytope_cells};
   if (options.progress || options.warn) {
     // Exact polytope work makes this the long stage: say how far it got every 100 cells, and
     // warn once, at half the budget, if the bound is still above the target.
     const Clock::time_point begun = start;
-    target.progress = [&options, &result, &target, begun, last_shown = begun, warned = false](
-                          std::size_t cells, std::optional<double> worst) mutable {
-      if (options.warn && !warned && worst && cells >= target.max_cells / 2 &&
-          *worst > to_double(target.epsilon)) {
+    refinement.progress = [&options, &result, &refinement, begun, last_shown = begun,
+                           warned = false](std::size_t cells, std::optional<double> worst) mutable {
+      if (options.warn && !warned && worst && cells >= refinement.max_cells / 2 &&
+          *worst > to_double(refinement.epsilon)) {
         warned = true;
         options.warn(result.context, "half the cell budget (" + std::to_string(cells) + " of " +
-                                         std::to_string(target.max_cells) +
+                                         std::to_string(refinement.max_cells) +
                                          " cells) is spent and the worst cell's bound is " +
                                          short_number(*worst) + ", the target " +
-                                         short_number(options.epsilon) +
+                                         short_number(options.target.epsilon) +
                                          ": the refinement may stop above it (--max-cells)");
       }
       if (!options.progress) return;
@@ -162,7 +161,7 @@ bool partition_by_polytopes(const geom::PolytopeGeometry& geometry, const model:
       options.progress(result.context, done, seconds);
     };
   }
-  auto partition = geom::partition_polytopes(geometry, target, error);
+  auto partition = geom::partition_polytopes(geometry, refinement, error);
   if (!partition) return false;
   std::vector<std::vector<Rational>> box;
   for (std::size_t i = 0; i < geometry.dimension(); ++i)
@@ -172,11 +171,12 @@ bool partition_by_polytopes(const geom::PolytopeGeometry& geometry, const model:
   geom::PolytopeMdp finite =
       geom::polytope_finite_mdp(geometry, *partition, ir.actions, ir.objective);
   result.epsilon = finite.epsilon;
-  result.met = finite.epsilon <= target.epsilon;
+  result.met = finite.epsilon <= refinement.epsilon;
   mdp = std::move(finite.mdp);
   result.cells = polytope_cells(domain, partition->tree);
   if (!result.met && options.warn)
-    options.warn(result.context, above_target(result, target.max_cells, options.epsilon));
+    options.warn(result.context,
+                 above_target(result, refinement.max_cells, options.target.epsilon));
   return true;
 }
 

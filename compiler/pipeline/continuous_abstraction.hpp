@@ -16,27 +16,10 @@
 #include "model/explicit_model.hpp"
 #include "model/model_ir.hpp"
 #include "pipeline/cell_partition.hpp"
+#include "pipeline/continuous_options.hpp"
 #include "policy/objective.hpp"
 
 namespace oasis::pipeline {
-
-inline constexpr std::size_t kDefaultGridCells = 200'000;
-inline constexpr std::size_t kDefaultPolytopeCells = 2'000;
-
-struct ContinuousOptions {
-  double epsilon = 0.1;  // the error bound to reach per context
-  // Cells per context at most; unset: kDefaultGridCells on the grid path,
-  // kDefaultPolytopeCells on the polytope path (exact polytope work per cell is far dearer).
-  std::optional<std::size_t> max_cells;
-  bool attention = true;  // false: partition the full state (the baseline)
-  policy::PolicyOptions policy;
-  // Called as each stage of a context ends (from the thread abstracting it, so possibly
-  // from several threads at once): the context, what was done, and its seconds.
-  std::function<void(const std::string& context, const std::string& done, double seconds)> progress;
-  // Called (from the same threads) as soon as a context's refinement is known to stop above
-  // the error target, before the long stages after it: the context and why.
-  std::function<void(const std::string& context, const std::string& warning)> warn;
-};
 
 struct StageSeconds {
   double grid = 0;

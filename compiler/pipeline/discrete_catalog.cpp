@@ -17,7 +17,7 @@ DiscreteAbstraction abstract_one(const model::ExplicitModel& model, std::size_t 
   DiscreteAbstraction result;
   result.context = context;
   bisim::RefinementOptions refinement;
-  refinement.epsilon = options.epsilon;
+  refinement.rounding_step = options.rounding_step;
   refinement.label_class = options.label_class;
   refinement.unlabelled_choices = options.unlabelled_choices;
   if (options.progress) {

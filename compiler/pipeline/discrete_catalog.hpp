@@ -21,8 +21,9 @@
 namespace oasis::pipeline {
 
 struct DiscreteOptions {
-  // Approximate refinement for floating-point models (docs/bisimulation.md); unset: exact.
-  std::optional<double> epsilon;
+  // Approximate refinement for floating-point models (the user's --epsilon): sums are compared
+  // after rounding to multiples of this step (docs/bisimulation.md); unset: exact.
+  std::optional<double> rounding_step;
   // Also build each quotient and solve its policy; false stops at the partition (`quotient`).
   bool solve = true;
   unsigned jobs = 0;  // threads; 0: one per hardware thread, at most one per context

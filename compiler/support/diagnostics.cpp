@@ -5,6 +5,7 @@
 #include <ostream>
 #include <string>
 
+#include "support/error_report.hpp"
 #include "text/printable_text.hpp"
 
 namespace oasis {
@@ -96,13 +97,13 @@ void DiagnosticEngine::note(SourceRange where, std::string_view message) {
 
 void DiagnosticEngine::file_error(std::string_view path, std::string_view message) {
   count(Severity::Error);
-  out_ << path << ": error: " << text::printable_message(message) << '\n';
+  out_ << report_line(path, "error", text::printable_message(message));
 }
 
 void DiagnosticEngine::plain_error(std::string_view message) {
   count(Severity::Error);
   // The program that runs (oasisc, oasisc-mpi, oasis-sim), as its other messages name it.
-  out_ << program_invocation_short_name << ": error: " << text::printable_message(message) << '\n';
+  out_ << report_line(program_invocation_short_name, "error", text::printable_message(message));
 }
 
 }  // namespace oasis

@@ -4,7 +4,6 @@
 #include <cerrno>
 #include <cstdlib>
 #include <cstring>
-#include <iostream>
 #include <string_view>
 
 #include <dirent.h>
@@ -13,6 +12,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include "support/error_report.hpp"
 #include "support/path_text.hpp"
 
 namespace oasis {
@@ -137,10 +137,11 @@ bool repair_one(const std::string& directory, const std::string& name) {
     finish_set(entries);
     sync_directory(directory);
     ::unlink(path.c_str());
-    std::cerr << program_invocation_short_name << ": note: finished replacing " << entries.size()
-              << (entries.size() == 1 ? " file" : " files") << " beside '"
-              << (entries.empty() ? directory : entries.front().destination)
-              << "', which a run killed while it replaced them had left half done\n";
+    report_note(program_invocation_short_name,
+                "finished replacing " + std::to_string(entries.size()) +
+                    (entries.size() == 1 ? " file" : " files") + " beside '" +
+                    (entries.empty() ? directory : entries.front().destination) +
+                    "', which a run killed while it replaced them had left half done");
   }
   ::close(fd);
   return ours;

@@ -4,6 +4,9 @@
 #include <cstdio>
 #include <cstring>
 #include <iostream>
+#include <string>
+
+#include "support/error_report.hpp"
 
 namespace oasis {
 
@@ -18,9 +21,9 @@ int finish_standard_output(std::string_view program, int status) {
   const bool close_failed = std::fclose(stdout) != 0;
   if (close_failed && saved == 0) saved = errno;
   if (!stream_failed && !flush_failed && !close_failed) return status;
-  std::cerr << program << ": error: cannot write standard output";
-  if (saved != 0) std::cerr << ": " << std::strerror(saved);
-  std::cerr << '\n';
+  std::string message = "cannot write standard output";
+  if (saved != 0) message += std::string(": ") + std::strerror(saved);
+  report_error(program, message);
   return status != 0 ? status : 1;
 }
 

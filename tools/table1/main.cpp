@@ -20,6 +20,7 @@
 #include "model/catalog_data.hpp"
 #include "model/explorer.hpp"
 #include "oasis/rt/spec_hash.hpp"
+#include "support/error_report.hpp"
 #include "support/interrupt_cleanup.hpp"
 #include "support/standard_output.hpp"
 #include "table1/report.hpp"
@@ -28,6 +29,9 @@
 namespace {
 
 using namespace oasis;
+
+// The name oasis-sim's messages begin with when they belong to no file.
+constexpr std::string_view kProgram = "oasis-sim";
 
 // The paper's discrete example: in the source tree the program was built from, or where
 // `cmake --install` put it (PREFIX/share/oasis/specs, next to PREFIX/bin/oasis-sim).
@@ -64,8 +68,7 @@ int run_table1_command(const Table1Arguments& arguments) {
   for (const std::string& name : arguments.noises) {
     const auto noise = table1::parse_noise(name);
     if (!noise || *noise == table1::NoiseReading::kNone) {
-      std::cerr << "oasis-sim: unknown noise reading '" << name
-                << "' (perceived, process, observed)\n";
+      report_error(kProgram, "unknown noise reading '" + name + "' (perceived, process, observed)");
       return 2;
     }
     options.noises.push_back(*noise);
@@ -74,8 +77,8 @@ int run_table1_command(const Table1Arguments& arguments) {
   for (const std::string& name : arguments.filters) {
     const auto filter = table1::parse_filter(name);
     if (!filter) {
-      std::cerr << "oasis-sim: unknown filter '" << name
-                << "' (paper, keep, guard, soft, robust, hedged)\n";
+      report_error(kProgram,
+                   "unknown filter '" + name + "' (paper, keep, guard, soft, robust, hedged)");
       return 2;
     }
     options.filters.push_back(*filter);
@@ -85,8 +88,8 @@ int run_table1_command(const Table1Arguments& arguments) {
   for (const std::string& name : arguments.declared) {
     const auto declared = table1::parse_noise(name);
     if (!declared || *declared == table1::NoiseReading::kNone) {
-      std::cerr << "oasis-sim: unknown declared reading '" << name
-                << "' (perceived, process, observed)\n";
+      report_error(kProgram,
+                   "unknown declared reading '" + name + "' (perceived, process, observed)");
       return 2;
     }
     options.declared.push_back(*declared);
@@ -116,7 +119,7 @@ int run_table1_command(const Table1Arguments& arguments) {
   for (const std::string& dir : {arguments.csv_dir, arguments.plot_dir}) {
     std::error_code code;
     if (!dir.empty() && !fs::create_directories(dir, code) && code) {
-      std::cerr << "oasis-sim: cannot create " << dir << ": " << code.message() << "\n";
+      report_error(kProgram, "cannot create " + dir + ": " + code.message());
       return 1;
     }
   }
@@ -137,13 +140,13 @@ int run_table1_command(const Table1Arguments& arguments) {
   };
   const auto rows = table1::run_table1(experiment, options, error, sink);
   if (!rows || sink_failed) {
-    std::cerr << "oasis-sim: " << error << "\n";
+    report_error(kProgram, error);
     return 1;
   }
   table1::print_table(std::cout, *rows, options);
   if (!arguments.json.empty() &&
       !table1::write_text(arguments.json, table1::rows_json(*rows).dump(2) + "\n", error)) {
-    std::cerr << "oasis-sim: " << error << "\n";
+    report_error(kProgram, error);
     return 1;
   }
   return 0;
@@ -197,16 +200,16 @@ int main(int argc, char** argv) {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
     const int exit_status = app.exit(e);  // --help and --version: 0
-    return oasis::finish_standard_output("oasis-sim", exit_status == 0 ? 0 : 2);  // bad usage
+    return oasis::finish_standard_output(kProgram, exit_status == 0 ? 0 : 2);  // bad usage
   }
   const std::optional<std::uint64_t> budget =
-      oasis::cli::apply_memory_budget_option(app, memory_budget, "oasis-sim");
-  if (!budget) return oasis::finish_standard_output("oasis-sim", 2);
+      oasis::cli::apply_memory_budget_option(app, memory_budget, kProgram);
+  if (!budget) return oasis::finish_standard_output(kProgram, 2);
   int status = 1;
   try {
     status = run_table1_command(table1);
   } catch (const std::bad_alloc&) {
-    oasis::cli::report_out_of_memory("oasis-sim", *budget);
+    oasis::cli::report_out_of_memory(kProgram, *budget);
   }
-  return oasis::finish_standard_output("oasis-sim", status);
+  return oasis::finish_standard_output(kProgram, status);
 }

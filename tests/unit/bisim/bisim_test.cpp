@@ -15,8 +15,8 @@
 #include "bisim/quotient.hpp"
 #include "bisim/refinement.hpp"
 #include "formats/aut_writer.hpp"
-#include "formats/model_file.hpp"
 #include "formats/explicit_writer.hpp"
+#include "formats/model_file.hpp"
 #include "frontend/load_spec.hpp"
 #include "model/explorer.hpp"
 #include "verify/verifier.hpp"
@@ -114,11 +114,11 @@ mdp huge {
   EXPECT_TRUE(verify::verify_partition(model, 0, partition).ok());
 }
 
-// With an epsilon far below the models' smallest probability gap (1/24 for denominators up
+// With a rounding step far below the models' smallest probability gap (1/24 for denominators up
 // to 8 and 3), rounding changes nothing: the approximate mode must give the exact answer.
 TEST(Bisimulation, TinyEpsilonMatchesExactOnExactModels) {
   bisim::RefinementOptions rounded;
-  rounded.epsilon = 1e-9;
+  rounded.rounding_step = 1e-9;
   for (std::uint64_t seed = 1; seed <= 300; ++seed) {
     const ExplicitModel model = test::random_mdp(seed);
     for (std::size_t c = 0; c < model.contexts.size(); ++c) {
@@ -145,7 +145,7 @@ mdp noisy {
 )");
   EXPECT_EQ(bisim::coarsest_bisimulation(model, 0).num_blocks, 4U);
   bisim::RefinementOptions rounded;
-  rounded.epsilon = 1e-9;
+  rounded.rounding_step = 1e-9;
   EXPECT_EQ(bisim::coarsest_bisimulation(model, 0, rounded).num_blocks, 3U);
 }
 

@@ -108,7 +108,7 @@ TEST(PositionNoiseSyntax, CheckerErrorsAreExactAndPlaced) {
 const pipeline::ContinuousCatalog& go1_catalog() {
   static const pipeline::ContinuousCatalog catalog = [] {
     pipeline::ContinuousCatalogOptions options;
-    options.abstraction.epsilon = 0.3;
+    options.abstraction.target.epsilon = 0.3;
     std::string error;
     auto built = pipeline::build_continuous_catalog(test::shipped_go1_spec(), 5, options, error);
     EXPECT_TRUE(built) << error;

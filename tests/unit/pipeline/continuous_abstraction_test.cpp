@@ -45,7 +45,7 @@ TEST(ContinuousAbstraction, Go1ContextAttendsToItsHumanAndMeetsTheTarget) {
   const model::ModelIR ir = test::shipped_go1_spec();
   std::string error;
   pipeline::ContinuousOptions options;
-  options.epsilon = 0.3;  // coarse, to keep the test quick
+  options.target.epsilon = 0.3;  // coarse, to keep the test quick
   const auto abstraction = pipeline::abstract_context(ir, 1, options, error);
   ASSERT_TRUE(abstraction) << error;
   EXPECT_EQ(abstraction->axis_names, (std::vector<std::string>{"x2", "y2"}));

@@ -26,7 +26,7 @@ const pipeline::ContinuousCatalog& go1_catalog() {
   static const pipeline::ContinuousCatalog catalog = [] {
     const model::ModelIR ir = test::shipped_go1_spec();
     pipeline::ContinuousCatalogOptions options;
-    options.abstraction.epsilon = 0.3;
+    options.abstraction.target.epsilon = 0.3;
     std::string error;
     auto built = pipeline::build_continuous_catalog(ir, 99, options, error);
     EXPECT_TRUE(built) << error;

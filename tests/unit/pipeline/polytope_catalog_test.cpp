@@ -38,7 +38,7 @@ const model::ModelIR& triangle_ir() {
 const pipeline::ContinuousCatalog& triangle_catalog() {
   static const pipeline::ContinuousCatalog catalog = [] {
     pipeline::ContinuousCatalogOptions options;
-    options.abstraction.epsilon = 0.3;
+    options.abstraction.target.epsilon = 0.3;
     std::string error;
     auto built = pipeline::build_continuous_catalog(triangle_ir(), 11, options, error);
     EXPECT_TRUE(built) << error;

@@ -33,7 +33,7 @@ const model::ModelIR& go1_ir() {
 const model::CatalogData& go1_catalog() {
   static const model::CatalogData data = [] {
     pipeline::ContinuousCatalogOptions options;
-    options.abstraction.epsilon = 0.3;
+    options.abstraction.target.epsilon = 0.3;
     std::string error;
     const auto catalog = pipeline::build_continuous_catalog(go1_ir(), 3, options, error);
     EXPECT_TRUE(catalog) << error;
