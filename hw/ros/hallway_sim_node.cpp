@@ -183,7 +183,7 @@ struct RunSummary {
 // pose starts at the origin and, before each frame after the first, advances over one period by
 // the cmd_vel that was latest when the frame before was published: the decision taken on frame
 // k shows in frame k + 2, exactly as in `oasis-go1 sim`, whose dry-run link moves the robot
-// when the next command comes (app/robot_link.hpp). The closed loop over topics and that
+// when the next command comes (loop/robot_link.hpp). The closed loop over topics and that
 // command then see the same motion, so their scores compare like with like.
 RunSummary run_frames(const RosSession& session, HallwaySimTopics& topics, sim::HallwayWorld& world,
                       go1::Pose& robot, double period_s, double rate_hz, std::uint64_t total) {

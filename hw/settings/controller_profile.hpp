@@ -32,7 +32,7 @@ enum class ProfileCatalog {
   kFullState,  // the no-attention catalog (oasisc compile --no-attention): a `sim` baseline
 };
 
-// The treat tag as evidence beyond the reward (app/attention_controller.hpp's
+// The treat tag as evidence beyond the reward (loop/attention_controller.hpp's
 // ControllerSettings says exactly how each is used).
 struct TagEvidence {
   double treat_sighting = 0.0;         // 0: the tag gives the reward only (the paper)

@@ -78,10 +78,10 @@ struct LoopSettings {
   std::vector<ActionVelocity> actions = spec_actions();  // one per catalog action name
   MissingHuman missing_human = MissingHuman::kHoldLast;
   // A person seen outside the catalog's domain is put at its nearest edge
-  // (app/attention_controller.hpp).
+  // (loop/attention_controller.hpp).
   bool clamp_to_domain = true;
   // Between decisions the loop repeats its command this often, so the watchdog only fires when
-  // the loop itself stalls (app/control_loop.hpp).
+  // the loop itself stalls (loop/control_loop.hpp).
   std::chrono::milliseconds keepalive{50};
   // The controller: a profile of hw/config/controllers/ by name, or a path to a .yaml profile
   // (controller_profile.hpp): the filter's options and the tag evidence live there, so that
