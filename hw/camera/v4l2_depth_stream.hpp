@@ -1,7 +1,7 @@
 #pragma once
 // The depth node of a RealSense-class camera read through raw V4L2: 16-bit Z16 frames in
 // memory-mapped buffers, every wait bounded by poll(). OpenCV cannot open this node (its V4L2
-// backend has no Z16 format, shared/hw/NOTES.md section 2), hence this reader.
+// backend has no Z16 format, hw/FACTS.md §2), hence this reader.
 
 #include <chrono>
 #include <cstddef>

@@ -1,6 +1,6 @@
 #pragma once
 // Little-endian field access at fixed offsets. The Go1 packets are packed little-endian structs
-// (NOTES §1 "Packing"), so we read and write each field by offset rather than overlaying a
+// (FACTS §1 "Packing"), so we read and write each field by offset rather than overlaying a
 // struct: that keeps the wire layout explicit and independent of the host's padding rules.
 
 #include <bit>

@@ -1,5 +1,5 @@
 #pragma once
-// The Go1 packet checksum (NOTES §1 "CRC"): CRC-32 with polynomial 0x04C11DB7, initial value
+// The Go1 packet checksum (FACTS §1 "CRC"): CRC-32 with polynomial 0x04C11DB7, initial value
 // 0xFFFFFFFF, no reflection and no final XOR, fed one 32-bit word at a time, each word read
 // little-endian from the packet and shifted in most significant bit first.
 

@@ -1,5 +1,5 @@
 #pragma once
-// How the robot stores the CRC of a HighState: encrypted (NOTES §1 "CRC"). Unitree's client
+// How the robot stores the CRC of a HighState: encrypted (FACTS §1 "CRC"). Unitree's client
 // library (unitree_legged_sdk, branch go1, UDP::Recv() in udp.cpp.o) compares the CRC it
 // computes over a received high-level packet with decryptCRC(stored), and accepts the stored
 // value as it is only when its global `developer` flag is set. So the robot sends

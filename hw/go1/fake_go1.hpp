@@ -4,7 +4,7 @@
 // reorders them: a spiked packet takes effect after later ones), then "executes" each: the
 // commanded body velocity (walking mode only; every other mode stands still) is integrated into a
 // planar pose between the times packets take effect, and a HighState carrying that pose is sent
-// back to the packet's source, as the robot does (NOTES §1 "Addresses").
+// back to the packet's source, as the robot does (FACTS §1 "Addresses").
 
 #include <chrono>
 #include <cstdint>

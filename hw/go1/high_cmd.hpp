@@ -1,5 +1,5 @@
 #pragma once
-// The high-level command packet, HighCmd: 129 bytes (NOTES §1 "HighCmd"). Only the fields a
+// The high-level command packet, HighCmd: 129 bytes (FACTS §1 "HighCmd"). Only the fields a
 // high-level client sets are modelled; SN, version, bandWidth, the battery command, the LEDs,
 // wirelessRemote and reserve are always sent as zero (a battery byte of 0xA5 would switch the
 // robot off, so it is deliberately not exposed).
@@ -28,7 +28,7 @@ struct HighCommand {
   bool operator==(const HighCommand&) const = default;
 };
 
-// Field offsets in the packet (NOTES §1, from offsetof on the SDK's packed struct).
+// Field offsets in the packet (FACTS §1, from offsetof on the SDK's packed struct).
 namespace high_cmd_offset {
 inline constexpr std::size_t kMode = 22;
 inline constexpr std::size_t kGaitType = 23;

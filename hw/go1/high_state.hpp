@@ -1,5 +1,5 @@
 #pragma once
-// The high-level state packet, HighState: 1087 bytes (NOTES §1 "HighState"). The fields a
+// The high-level state packet, HighState: 1087 bytes (FACTS §1 "HighState"). The fields a
 // high-level client reads are modelled; the motor states, battery detail other than the charge,
 // foot positions and speeds and wirelessRemote are skipped on decode and written as zero on encode
 // (the fake Go1 is the only encoder).

@@ -7,7 +7,7 @@ namespace oasis::hw::go1 {
 
 namespace {
 
-// Trot-gait ranges from the comm.h comments (NOTES §1).
+// Trot-gait ranges from the comm.h comments (FACTS §1).
 constexpr float kDocumentedMaxForward = 1.5f;
 constexpr float kDocumentedMaxBackward = 1.1f;
 constexpr float kDocumentedMaxLateral = 1.0f;

@@ -20,7 +20,7 @@ struct VelocityCommand {
 };
 
 // Defaults are conservative indoor values, well inside the trot ranges comm.h documents
-// (vx -1.1..1.5, vy -1.0..1.0 m/s, yaw -4..4 rad/s; NOTES §1 "Documented ranges").
+// (vx -1.1..1.5, vy -1.0..1.0 m/s, yaw -4..4 rad/s; FACTS §1 "Documented ranges").
 struct MotionLimits {
   float max_forward = 0.5f;              // m/s
   float max_backward = 0.3f;             // m/s, a magnitude

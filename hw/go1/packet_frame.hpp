@@ -1,6 +1,6 @@
 #pragma once
 // The frame shared by HighCmd and HighState: head FE EF at byte 0, the level flag at byte 2 and a
-// CRC over the first (length / 4 - 1) words stored in the last four bytes (NOTES §1 "CRC": the
+// CRC over the first (length / 4 - 1) words stored in the last four bytes (FACTS §1 "CRC": the
 // SDK covers bytes 0..123 of a HighCmd and 0..1079 of a HighState; the bytes between the covered
 // words and the CRC are not checked). The CRC is stored plain or encrypted (crc_cipher.hpp).
 

@@ -1,5 +1,5 @@
 #pragma once
-// Constants of the Go1 high-level protocol (NOTES §1). Values marked "unconfirmed" in NOTES
+// Constants of the Go1 high-level protocol (FACTS §1). Values marked "unconfirmed" in FACTS
 // (the level flag the current firmware wants, the local port) are defaults only: every user
 // of them takes them from a configuration.
 

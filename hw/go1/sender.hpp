@@ -1,7 +1,7 @@
 #pragma once
 // The command sender: its own thread sends one HighCmd per tick to the robot, built from the
 // latest set_command() after clamping and ramping, and reads back HighState packets on the same
-// socket (the robot answers the command's source address, NOTES §1 "Addresses").
+// socket (the robot answers the command's source address, FACTS §1 "Addresses").
 //
 // State is taken only from the robot: a datagram from any other address or port is dropped
 // before it is decoded and counted (SenderStatus::datagrams_ignored). The CRC is no
@@ -41,7 +41,7 @@ struct SenderOptions {
   std::uint8_t level_flag = kLevelFlagHighLevel;  // unconfirmed: 0x00 may be needed (README)
   std::optional<std::uint8_t> state_level_flag = kLevelFlagHighLevel;  // nullopt: accept any
   bool check_state_crc = true;
-  // The SDK example sends every 2 ms and its comment allows 1-10 ms (NOTES §1 "Rate").
+  // The SDK example sends every 2 ms and its comment allows 1-10 ms (FACTS §1 "Rate").
   double rate_hz = 500.0;
   std::chrono::milliseconds watchdog_timeout = kDefaultWatchdogTimeout;
   std::chrono::milliseconds stop_hold{300};

@@ -77,7 +77,7 @@ sim::HallwayWorldOptions world_options(const sim::HallwayScenario& scenario,
   return options;
 }
 
-// The catalog's name of the true context, as app/treat_contexts.cpp spells the Go1 spec's
+// The catalog's name of the true context, as loop/treat_contexts.cpp spells the Go1 spec's
 // (that file looks the names up in a catalog, which this node has none of). As in
 // sim_trial.cpp, anyone but human 1 holding is human 2's context.
 std::string context_name(TreatHolder holder) {

@@ -24,13 +24,13 @@ inline const EnumCodec<go1::GaitType> kGaitCodec{{{"idle", go1::GaitType::kIdle}
 inline const EnumCodec<MissingHuman> kMissingHumanCodec{
     {{"hold_last", MissingHuman::kHoldLast}, {"outside", MissingHuman::kOutside}}};
 
-// The trot ranges of comm.h (NOTES §1 "Documented ranges"), as go1::check_limits() has them.
+// The trot ranges of comm.h (FACTS §1 "Documented ranges"), as go1::check_limits() has them.
 inline constexpr double kTrotMaxForward = 1.5;
 inline constexpr double kTrotMaxBackward = 1.1;
 inline constexpr double kTrotMaxLateral = 1.0;
 inline constexpr double kTrotMaxYawRate = 4.0;
 
-// tag36h11 has 587 codes (NOTES §3).
+// tag36h11 has 587 codes (FACTS §3).
 inline constexpr int kTag36h11Codes = 587;
 
 template <class V, class S>
@@ -38,7 +38,7 @@ void describe(V& v, S& s) {
   v.section(
       "robot",
       "The Go1 high-level (sport mode) UDP link, hw/go1/README.md. Addresses, ports and the level\n"
-      "flag: NOTES §1 of the design notes (shared/hw/NOTES.md). The fail-safe: with no new\n"
+      "flag: FACTS §1 (hw/FACTS.md). The fail-safe: with no new\n"
       "command for watchdog_ms the sender stops (walks at zero velocity) for stop_hold_ms, then\n"
       "stands; SIGINT/SIGTERM stop, then stand for shutdown_stand_ms, then the link closes.",
       [&] {
@@ -100,7 +100,7 @@ void describe(V& v, S& s) {
   v.section(
       "camera",
       "A RealSense-class camera over plain UVC: colour through OpenCV, the Z16 depth node through\n"
-      "raw V4L2 (NOTES §2). Intrinsics and depth scale are not read from the device: the defaults\n"
+      "raw V4L2 (FACTS §2). Intrinsics and depth scale are not read from the device: the defaults\n"
       "are a D435's 640x480 depth intrinsics; put your unit's factory calibration here.",
       [&] {
         v.value("colour_device", s.camera.colour_device, TextCodec{},

@@ -117,12 +117,15 @@ OUTSIDE_NAMES = {
     "example_walk.cpp",  # Unitree's SDK example, which the interop test follows
     "robot.cpp",  # the consumer project's program in the install example
     "shipped_profiles.cpp",  # generated in the build folder from hw/config/controllers/
+    "calibration.cpp",  # a librealsense user's source, where hw/FACTS.md's intrinsics come from
 }
 EXAMPLES = (
     r"a/x\.aut",  # an input path in an example of colliding outputs
     r"run1/.*",  # a recording folder in an example
     r"package/oasis_ros/",  # oasis-ros's package folder in the build folder
     r"libraries/lts/source/.*",  # mCRL2's source, where its .aut reader is
+    r"ucl/\w+\.py",  # free-dog-sdk's Python sources, which hw/FACTS.md cross-checks
+    r"modules/videoio/src/.*",  # OpenCV's source, where hw/FACTS.md's V4L2 facts come from
 )
 
 
