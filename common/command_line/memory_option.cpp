@@ -1,6 +1,8 @@
 #include "command_line/memory_option.hpp"
 
 #include <iostream>
+#include <optional>
+#include <string>
 #include <vector>
 
 #include "command_line/memory_budget.hpp"
@@ -54,30 +56,35 @@ std::optional<std::uint64_t> apply_memory_budget_option(const CLI::App& app,
   return in_force;
 }
 
-void report_out_of_memory(std::string_view program, std::uint64_t budget) {
+namespace {
+
+// What the command ran out of: the budget, the address-space limit, or neither.
+std::string out_of_memory_message(std::uint64_t budget) {
   // The address space holds the data the budget counts and more (mapped inputs, stacks, code):
   // a shell's `ulimit -v` at or below the budget is the limit that bit.
   const std::optional<std::uint64_t> address_space = address_space_limit();
-  if (address_space && (budget == 0 || *address_space <= budget)) {
-    std::cerr << program
-              << ": error: out of memory: the command needs more than the address-space limit "
-                 "of "
-              << describe_bytes(*address_space)
-              << " set for it (ulimit -v, RLIMIT_AS; --memory-budget cannot raise it)\n";
-    return;
-  }
-  if (budget == 0) {
-    std::cerr << program << ": error: out of memory\n";
-    return;
-  }
-  std::cerr << program
-            << ": error: out of memory: the command needs more than its memory budget of "
-            << describe_bytes(budget) << " (" << kMemoryBudgetFlag << "; the default is "
-            << kDefaultMemoryBudgetPercent << "% of the machine's memory)";
+  if (address_space && (budget == 0 || *address_space <= budget))
+    return "out of memory: the command needs more than the address-space limit of " +
+           describe_bytes(*address_space) +
+           " set for it (ulimit -v, RLIMIT_AS; --memory-budget cannot raise it)";
+  if (budget == 0) return "out of memory";
+  std::string message = "out of memory: the command needs more than its memory budget of " +
+                        describe_bytes(budget) + " (" + std::string(kMemoryBudgetFlag) +
+                        "; the default is " + std::to_string(kDefaultMemoryBudgetPercent) +
+                        "% of the machine's memory)";
   if (address_space)
-    std::cerr << " or the address-space limit of " << describe_bytes(*address_space)
-              << " (ulimit -v)";
-  std::cerr << '\n';
+    message += " or the address-space limit of " + describe_bytes(*address_space) + " (ulimit -v)";
+  return message;
+}
+
+}  // namespace
+
+void report_out_of_memory(std::string_view program, std::uint64_t budget) {
+  // One write of the whole line: under mpirun every rank may report, and the job is killed as
+  // soon as one rank aborts, so a line written in pieces came out cut or interleaved.
+  std::string line(program);
+  line += ": error: " + out_of_memory_message(budget) + "\n";
+  std::cerr << line << std::flush;
 }
 
 }  // namespace oasis::cli

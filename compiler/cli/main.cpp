@@ -1,5 +1,6 @@
 // oasisc: the oasis abstraction compiler.
 
+#include <cstdio>
 #include <exception>
 #include <map>
 #include <new>
@@ -17,9 +18,11 @@
 #include "support/interrupt_cleanup.hpp"
 #include "support/standard_output.hpp"
 
-int main(int argc, char** argv) {
-  oasis::make_gmp_throw_on_allocation_failure();
-  oasis::interrupt::install_cleanup_handlers();  // a killed compile takes its staging with it
+namespace {
+
+// oasisc's command line: parsed, then the command run. Errors of the command are reported
+// here; main() catches what escapes the set-up.
+int run(int argc, char** argv) {
   CLI::App app{"oasisc " OASIS_VERSION
                ": compile MDP context specs into bisimulation abstractions for Online "
                "Attention Switching",
@@ -73,4 +76,19 @@ int main(int argc, char** argv) {
     status = 1;
   }
   return oasis::finish_standard_output(oasis::cli::kProgram, status);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  oasis::make_gmp_throw_on_allocation_failure();
+  oasis::interrupt::install_cleanup_handlers();  // a killed compile takes its staging with it
+  try {
+    return run(argc, argv);
+  } catch (...) {
+    // Only the set-up of the command line is left outside run()'s handlers: out of memory
+    // before any command ran. No allocation here.
+    std::fputs("oasisc: error: could not set up the command line\n", stderr);
+    return 1;
+  }
 }

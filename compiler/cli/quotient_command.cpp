@@ -41,6 +41,14 @@ struct QuotientOptions {
   CommonOptions common;
 };
 
+// "the model has no context 'NAME' (it has: A B)".
+std::string no_such_context(const model::ExplicitModel& model, const std::string& name) {
+  std::string names;
+  for (const auto& context : model.contexts)
+    names += ' ' + context.name;
+  return "the model has no context '" + name + "' (it has:" + names + ")";
+}
+
 // The contexts to quotient: those named, or all.
 std::optional<std::vector<std::size_t>> select_contexts(const model::ExplicitModel& model,
                                                         const QuotientOptions& options) {
@@ -55,10 +63,7 @@ std::optional<std::vector<std::size_t>> select_contexts(const model::ExplicitMod
     while (c < model.contexts.size() && model.contexts[c].name != name)
       ++c;
     if (c == model.contexts.size()) {
-      std::string names;
-      for (const auto& context : model.contexts)
-        names += ' ' + context.name;
-      report_error(options.file, "the model has no context '" + name + "' (it has:" + names + ")");
+      report_error(options.file, no_such_context(model, name));
       return std::nullopt;
     }
     selected.push_back(c);

@@ -18,10 +18,10 @@ static_assert(std::endian::native == std::endian::little, "catalog files are lit
 // writes must have the section.
 template <rt::Section tag, rt::SectionScope scope, typename T>
 constexpr void check_section() {
-  constexpr rt::SectionInfo info = rt::section_info(tag);
+  constexpr rt::SectionInfo kInfo = rt::section_info(tag);
   static_assert(std::is_same_v<T, rt::SectionElementOf<tag>>, "not the table's element type");
-  static_assert(info.scope == scope, "not the table's scope");
-  static_assert(info.first_format <= rt::kCatalogFileFormat, "a section of a later format");
+  static_assert(kInfo.scope == scope, "not the table's scope");
+  static_assert(kInfo.first_format <= rt::kCatalogFileFormat, "a section of a later format");
 }
 
 // Collects tagged sections, then lays out the header, the section table and the arrays

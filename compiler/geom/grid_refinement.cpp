@@ -57,7 +57,7 @@ std::set<Rational> subdivided(const std::set<Rational>& breaks, double step,
                               std::size_t max_pieces) {
   std::set<Rational> out = breaks;
   for (auto it = breaks.begin(); std::next(it) != breaks.end(); ++it) {
-    const Rational low = *it;
+    const Rational& low = *it;
     const Rational length = *std::next(it) - low;
     const double pieces =
         std::min(std::ceil(to_double(length) / step), static_cast<double>(max_pieces));

@@ -9,6 +9,7 @@
 // than the OOM killer, and SIGINT, SIGTERM and SIGHUP take the unfinished output with them.
 
 #include <csignal>
+#include <cstdio>
 #include <iostream>
 #include <new>
 #include <optional>
@@ -106,7 +107,11 @@ void take_ending_signals_on_own_thread() {
 
 }  // namespace
 
-int main(int argc, char** argv) {
+namespace {
+
+// The program: its command line parsed, then the command run, every error of a command
+// reported. main() catches what escapes the set-up.
+int run(int argc, char** argv) {
   using namespace oasis;
   make_gmp_throw_on_allocation_failure();
   block_ending_signals();
@@ -146,4 +151,17 @@ int main(int argc, char** argv) {
     communicator.abort(1);
   }
   return finish_standard_output(kProgram, status);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  try {
+    return run(argc, argv);
+  } catch (...) {
+    // Only the set-up of the command line is left outside run()'s handlers: out of memory
+    // before any command ran. No allocation here.
+    std::fputs("oasisc-mpi: error: could not set up the command line\n", stderr);
+    return 1;
+  }
 }

@@ -1,6 +1,7 @@
 // oasis-go1: Online Attention Switching on a Unitree Go1 - the 5 Hz loop camera -> perception
 // -> filter -> policy -> robot, its logs and their Table II score.
 
+#include <cstdio>
 #include <iostream>
 #include <map>
 #include <new>
@@ -15,7 +16,11 @@
 #include "perception/out_of_memory.hpp"
 #include "settings/settings_error.hpp"
 
-int main(int argc, char** argv) {
+namespace {
+
+// The program: its command line parsed, then the command run, every error of a command
+// reported. main() catches what escapes the set-up.
+int run(int argc, char** argv) {
   CLI::App app{
       "oasis-go1: follow whichever of two people holds the treat, with Online "
       "Attention Switching on a Unitree Go1",
@@ -64,4 +69,17 @@ int main(int argc, char** argv) {
       oasis::hw::app::print_error(e.what());
   }
   return 1;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  try {
+    return run(argc, argv);
+  } catch (...) {
+    // Only the set-up of the command line is left outside run()'s handlers: out of memory
+    // before any command ran. No allocation here.
+    std::fputs("oasis-go1: error: could not set up the command line\n", stderr);
+    return 1;
+  }
 }

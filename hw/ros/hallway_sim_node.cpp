@@ -340,7 +340,11 @@ void add_options(CLI::App& app, SimNodeRequest& request) {
 }  // namespace
 }  // namespace oasis::hw::ros_node
 
-int main(int argc, char** argv) {
+namespace {
+
+// The simulator node: its command line parsed, then run, every error reported. main()
+// catches what escapes the set-up.
+int run(int argc, char** argv) {
   using namespace oasis::hw::ros_node;
   CLI::App app{
       "oasis-ros-hallway-sim: the hallway scenario of 'oasis-go1 sim' (rendered path) as a ROS "
@@ -376,4 +380,17 @@ int main(int argc, char** argv) {
     print_error(kProgram, e.what());
   }
   return 1;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  try {
+    return run(argc, argv);
+  } catch (...) {
+    // Only the set-up of the command line is left outside run()'s handlers: out of memory
+    // before the node started. No allocation here.
+    std::fputs("oasis-ros-hallway-sim: error: could not set up the command line\n", stderr);
+    return 1;
+  }
 }

@@ -379,7 +379,9 @@ int replay_bag(const NodeRequest& request) {
 }  // namespace
 }  // namespace oasis::hw::ros_node
 
-int main(int argc, char** argv) {
+// An exception that escapes ends in std::terminate, whose handler (last_resort_stop.hpp)
+// publishes the zero Twist before the process ends: that is the designed last path.
+int main(int argc, char** argv) {  // NOLINT(bugprone-exception-escape)
   using namespace oasis::hw::ros_node;
   CLI::App app{
       "oasis-ros: Online Attention Switching on a ROS 1 robot - images (or your tracker's "

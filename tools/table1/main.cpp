@@ -3,6 +3,7 @@
 //                    [--filters F...] [--json PATH] [--csv-dir DIR] [--plot DIR]
 
 #include <cstdint>
+#include <cstdio>
 #include <filesystem>
 #include <iostream>
 #include <new>
@@ -154,7 +155,11 @@ int run_table1_command(const Table1Arguments& arguments) {
 
 }  // namespace
 
-int main(int argc, char** argv) {
+namespace {
+
+// The program: its command line parsed, then the command run, every error of a command
+// reported. main() catches what escapes the set-up.
+int run(int argc, char** argv) {
   oasis::interrupt::install_cleanup_handlers();  // an interrupted run leaves no temporary file
   CLI::App app{"oasis-sim: the paper's experiments on the compiled catalog and the runtime filter"};
   app.require_subcommand(1);
@@ -212,4 +217,17 @@ int main(int argc, char** argv) {
     oasis::cli::report_out_of_memory(kProgram, *budget);
   }
   return oasis::finish_standard_output(kProgram, status);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  try {
+    return run(argc, argv);
+  } catch (...) {
+    // Only the set-up of the command line is left outside run()'s handlers: out of memory
+    // before any command ran. No allocation here.
+    std::fputs("oasis-sim: error: could not set up the command line\n", stderr);
+    return 1;
+  }
 }

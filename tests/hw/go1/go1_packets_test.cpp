@@ -1,5 +1,5 @@
 // The Go1 packets: the CRC against an independent CRC-32/MPEG-2, golden HighCmd bytes written
-// field by field at the offsets of NOTES §1, round trips, and every refusal.
+// field by field at the offsets of FACTS §1, round trips, and every refusal.
 
 #include <bit>
 #include <cstdint>
@@ -30,7 +30,7 @@ std::uint32_t crc32_mpeg2(const std::vector<std::uint8_t>& bytes) {
   return crc;
 }
 
-// NOTES §1: the Go1 CRC equals MPEG-2 over the bytes with each 4-byte group reversed.
+// FACTS §1: the Go1 CRC equals MPEG-2 over the bytes with each 4-byte group reversed.
 std::uint32_t crc_by_mpeg2(const std::vector<std::uint8_t>& bytes, std::size_t words) {
   std::vector<std::uint8_t> reversed;
   for (std::size_t w = 0; w < words; ++w)
@@ -60,7 +60,7 @@ HighCommand sample_walk() {
   return command;
 }
 
-// The library's encryptCRC (NOTES §1 "CRC": XOR 0xEDCAB9DE, then byte swaps (1,2), (0,3),
+// The library's encryptCRC (FACTS §1 "CRC": XOR 0xEDCAB9DE, then byte swaps (1,2), (0,3),
 // (0,2)) moves byte k of the XORed value to byte k - 1: a rotation right by 8 bits. Written
 // this way here, independently of crc_cipher.cpp's swaps.
 std::uint32_t encrypted_by_rotation(std::uint32_t crc) {
@@ -143,7 +143,7 @@ TEST(Go1HighCmd, RoundTrips) {
 TEST(Go1HighCmd, EveryFlippedCoveredByteIsRefusedByTheCrc) {
   const HighCmdBytes good = encode_high_cmd(sample_walk(), 0xEE);
   for (std::size_t i = 3; i < 129; ++i) {
-    if (i == 124) continue;  // the one byte the SDK's CRC leaves uncovered (NOTES §1)
+    if (i == 124) continue;  // the one byte the SDK's CRC leaves uncovered (FACTS §1)
     HighCmdBytes bad = good;
     bad[i] ^= 0x01;
     const auto decoded = decode_high_cmd(bad, 0xEE);

@@ -640,7 +640,7 @@ class AttentionFilter {
                            options_.tie_rule, ml_, random_);
   }
 
-  const CatalogView* catalog_;
+  const CatalogView* catalog_ = nullptr;
   FilterOptions options_;
   FilterError error_ = FilterError::kNone;
   double* belief_ = nullptr;         // [N] current belief (marginal in joint mode)

@@ -219,9 +219,10 @@ class LoadedCatalog {
 
   // Format 1: a fixed order of (offset, count) pairs, given their tags here.
   bool read_format1_table() {
-    constexpr std::uint64_t global = kFormat1CatalogOrder.size();
-    constexpr std::uint64_t per = kFormat1AbstractionOrder.size();
-    const std::uint64_t count = global + std::uint64_t{view_.num_abstractions} * per;
+    constexpr std::uint64_t kCatalogWideCount = kFormat1CatalogOrder.size();
+    constexpr std::uint64_t kPerAbstractionCount = kFormat1AbstractionOrder.size();
+    const std::uint64_t count =
+        kCatalogWideCount + std::uint64_t{view_.num_abstractions} * kPerAbstractionCount;
     if (read_at<std::uint32_t>(12) != count ||
         count > (size_ - kCatalogHeaderBytes) / kFormat1EntryBytes) {
       return fail("table of contents does not match the number of abstractions");
@@ -229,11 +230,13 @@ class LoadedCatalog {
     entries_.reserve(count);
     for (std::uint64_t k = 0; k < count; ++k) {
       const std::size_t at = kCatalogHeaderBytes + k * kFormat1EntryBytes;
-      const bool wide = k < global;
+      const bool wide = k < kCatalogWideCount;
       const Section tag =
-          wide ? kFormat1CatalogOrder[k] : kFormat1AbstractionOrder[(k - global) % per];
+          wide ? kFormat1CatalogOrder[k]
+               : kFormat1AbstractionOrder[(k - kCatalogWideCount) % kPerAbstractionCount];
       const std::uint32_t abstraction =
-          wide ? kCatalogWide : static_cast<std::uint32_t>((k - global) / per);
+          wide ? kCatalogWide
+               : static_cast<std::uint32_t>((k - kCatalogWideCount) / kPerAbstractionCount);
       entries_.push_back({static_cast<std::uint32_t>(tag), abstraction, read_at<std::uint64_t>(at),
                           read_at<std::uint64_t>(at + 8)});
     }

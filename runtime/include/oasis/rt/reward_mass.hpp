@@ -135,14 +135,14 @@ class RewardMass {
       box[a] = x - kWindowSigmas * s;
       box[g + a] = x + kWindowSigmas * s;
     }
-    box[2 * g] = 0.0;  // depth
+    box[2 * std::size_t{g}] = 0.0;  // depth
     std::uint32_t size = 1;
     double matched = 0.0;
     double unresolved = 0.0;
     while (size > 0) {
       --size;
       const double* top = stack_ + static_cast<std::size_t>(size) * entry_doubles(g);
-      const auto depth = static_cast<std::uint32_t>(top[2 * g]);
+      const auto depth = static_cast<std::uint32_t>(top[2 * std::size_t{g}]);
       ++result.boxes;
       const double mass = box_mass(abs, state, top);
       const unsigned status = classify(abs, top, top + g, matches);
@@ -394,8 +394,8 @@ class RewardMass {
       high_half[j] = low_half[j];
     low_half[g + cut.axis] = cut.at;
     high_half[cut.axis] = cut.at;
-    low_half[2 * g] = depth;
-    high_half[2 * g] = depth;
+    low_half[2 * std::size_t{g}] = depth;
+    high_half[2 * std::size_t{g}] = depth;
   }
 
   // The breakpoint of axis a strictly inside (lo, hi) nearest its middle, if any.
