@@ -22,7 +22,7 @@ constexpr std::string_view kBanner =
     "# meaning; a file may hold only the keys that differ, and an unknown key is an error.\n"
     "# The defaults are hw/config/hallway.yaml: regenerate it from the code, not by hand.\n";
 
-void check_order(double low, double high, std::string low_key, std::string high_key,
+void check_order(double low, double high, const std::string& low_key, const std::string& high_key,
                  std::vector<CrossProblem>& problems) {
   if (low <= high) return;
   problems.push_back({low_key, high_key,
