@@ -21,6 +21,7 @@ the links between our targets have no cycle.
 """
 
 import argparse
+import functools
 import pathlib
 import re
 import sys
@@ -131,12 +132,13 @@ class Tree:
     def folders_of(self, name):
         return [folder for folder, owners in self.owners_of_folder.items() if name in owners]
 
+    @functools.lru_cache(maxsize=None)
     def reach(self, name):
         """Every target and outside library NAME's files may use: its links, and theirs
         through their interface links."""
         target = self.targets.get(name)
         if target is None:
-            return {name}
+            return frozenset({name})
         seen = {name}
         stack = target.links + target.interface_links
         while stack:
@@ -146,7 +148,7 @@ class Tree:
             seen.add(link)
             if link in self.targets:
                 stack.extend(self.targets[link].interface_links)
-        return seen
+        return frozenset(seen)  # cached: shared by every file of the target
 
     def resolve(self, includer, text):
         """The repository files an include names: beside the includer, or under an include

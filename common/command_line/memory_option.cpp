@@ -18,6 +18,25 @@ const CLI::App* leaf_command(const CLI::App& app) {
   return command;
 }
 
+// What the command ran out of: the budget, the address-space limit, or neither.
+std::string out_of_memory_message(std::uint64_t budget) {
+  // The address space holds the data the budget counts and more (mapped inputs, stacks, code):
+  // a shell's `ulimit -v` at or below the budget is the limit that bit.
+  const std::optional<std::uint64_t> address_space = address_space_limit();
+  if (address_space && (budget == 0 || *address_space <= budget))
+    return "out of memory: the command needs more than the address-space limit of " +
+           describe_bytes(*address_space) +
+           " set for it (ulimit -v, RLIMIT_AS; --memory-budget cannot raise it)";
+  if (budget == 0) return "out of memory";
+  std::string message = "out of memory: the command needs more than its memory budget of " +
+                        describe_bytes(budget) + " (" + std::string(kMemoryBudgetFlag) +
+                        "; the default is " + std::to_string(kDefaultMemoryBudgetPercent) +
+                        "% of the machine's memory)";
+  if (address_space)
+    message += " or the address-space limit of " + describe_bytes(*address_space) + " (ulimit -v)";
+  return message;
+}
+
 }  // namespace
 
 void add_memory_budget_option(CLI::App& app, std::string& budget) {
@@ -55,29 +74,6 @@ std::optional<std::uint64_t> apply_memory_budget_option(const CLI::App& app,
   if (!in_force) std::cerr << program << ": error: " << kMemoryBudgetFlag << ": " << error << '\n';
   return in_force;
 }
-
-namespace {
-
-// What the command ran out of: the budget, the address-space limit, or neither.
-std::string out_of_memory_message(std::uint64_t budget) {
-  // The address space holds the data the budget counts and more (mapped inputs, stacks, code):
-  // a shell's `ulimit -v` at or below the budget is the limit that bit.
-  const std::optional<std::uint64_t> address_space = address_space_limit();
-  if (address_space && (budget == 0 || *address_space <= budget))
-    return "out of memory: the command needs more than the address-space limit of " +
-           describe_bytes(*address_space) +
-           " set for it (ulimit -v, RLIMIT_AS; --memory-budget cannot raise it)";
-  if (budget == 0) return "out of memory";
-  std::string message = "out of memory: the command needs more than its memory budget of " +
-                        describe_bytes(budget) + " (" + std::string(kMemoryBudgetFlag) +
-                        "; the default is " + std::to_string(kDefaultMemoryBudgetPercent) +
-                        "% of the machine's memory)";
-  if (address_space)
-    message += " or the address-space limit of " + describe_bytes(*address_space) + " (ulimit -v)";
-  return message;
-}
-
-}  // namespace
 
 void report_out_of_memory(std::string_view program, std::uint64_t budget) {
   // One write of the whole line: under mpirun every rank may report, and the job is killed as
