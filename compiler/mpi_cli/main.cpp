@@ -32,6 +32,10 @@ namespace {
 
 using oasis::mpi_cli::kProgram;
 
+// How long a rank that writes nothing outlives an ending signal: long enough for rank 0's
+// handler (milliseconds), shorter than mpirun's second between its SIGTERM and its SIGKILL.
+constexpr int kRankWaitBeforeDyingMs = 500;
+
 // Every rank parses the same command line and would say the same about it: only rank 0 speaks,
 // the others' std::cout and std::cerr go nowhere while this lives.
 class QuietUnlessRoot {
@@ -120,8 +124,12 @@ int run(int argc, char** argv) {
   // rank installs them (only rank 0 writes, but mpirun signals every rank).
   interrupt::install_cleanup_handlers();
   take_ending_signals_on_own_thread();
-  if (!communicator.is_root())
+  if (!communicator.is_root()) {
     set_changed_size_note(" (rank " + std::to_string(communicator.rank()) + ")");
+    // Rank 0 alone writes; this rank's death by a signal would make mpirun kill rank 0 before
+    // its handler has removed the unfinished output.
+    interrupt::set_wait_before_dying(kRankWaitBeforeDyingMs);
+  }
   CLI::App app(
       "oasisc-mpi: oasisc's bisimulation and compile spread over the ranks of an MPI job\n"
       "(mpirun -np P oasisc-mpi COMMAND ...). Every rank runs the same command; rank 0 writes\n"

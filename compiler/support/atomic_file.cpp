@@ -374,6 +374,14 @@ bool AtomicFile::prepare(std::string& error) {
 }
 
 bool AtomicFile::install(std::string& error) {
+  if (!move_into_place(error)) return false;
+  // Outside the commit section: a directory's sync can wait seconds for a busy disk, and a
+  // signal must not wait that long (mpirun sends SIGKILL one second after SIGTERM).
+  if (!direct_) sync_directory(directory_of(destination_));
+  return true;
+}
+
+bool AtomicFile::move_into_place(std::string& error) {
   // A signal waits until the file is in place and no longer registered for clean-up.
   const interrupt::CommitSection section;
   if (fd_ < 0 && good()) fail("file '" + path_ + "' was not prepared");
@@ -395,7 +403,6 @@ bool AtomicFile::install(std::string& error) {
   temporary_path_.clear();
   cleanup_.release();
   capacity_ = 0;
-  if (!direct_) sync_directory(directory_of(destination_));
   return true;
 }
 

@@ -108,6 +108,8 @@ class AtomicFile {
   static constexpr std::size_t kMaxNumberLength = 24;  // 20 digits of UINT64_MAX, a sign
 
   void append_slow(std::string_view text);
+  // install()'s rename and release, in a commit section; install() then syncs the folder.
+  [[nodiscard]] bool move_into_place(std::string& error);
   void flush_buffer();
   void write_all(const char* data, std::size_t size);
   void fail(std::string reason);

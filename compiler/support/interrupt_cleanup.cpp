@@ -4,6 +4,7 @@
 #include <cerrno>
 #include <csignal>
 #include <cstring>
+#include <ctime>
 
 #include <dirent.h>
 #include <fcntl.h>
@@ -32,6 +33,7 @@ Slot slots[kSlots];
 // program is then about to die, and nothing may start a commit or reuse a slot.
 std::atomic<int> gate{0};
 std::atomic<int> pending_signal{0};
+std::atomic<int> wait_before_dying_ms{0};
 
 [[noreturn]] void wait_for_death() {
   for (;;)
@@ -116,6 +118,11 @@ bool remove_registered_paths() {
     write_error(program_invocation_short_name);
     write_error(": interrupted: removed the unfinished output\n");
   }
+  if (const int wait_ms = wait_before_dying_ms.load(); wait_ms > 0) {
+    timespec wait{wait_ms / 1000, static_cast<long>(wait_ms % 1000) * 1000000L};
+    while (::nanosleep(&wait, &wait) != 0 && errno == EINTR) {
+    }
+  }
   ::signal(signal_number, SIG_DFL);
   ::raise(signal_number);  // delivered when the handler returns (or at once outside one)
   sigset_t just_this;
@@ -148,6 +155,10 @@ void on_signal(int signal_number) {
 void install_cleanup_handlers() {
   // Started under nohup, SIGHUP stays ignored: the person who started the run asked for that.
   process::install_ending_signal_handler(on_signal, 0, /*keep_ignored=*/true);
+}
+
+void set_wait_before_dying(int milliseconds) {
+  wait_before_dying_ms.store(milliseconds > 0 ? milliseconds : 0);
 }
 
 CleanupPath::CleanupPath(const std::string& path, Kind kind) {

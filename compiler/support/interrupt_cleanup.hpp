@@ -23,6 +23,13 @@ namespace oasis::interrupt {
 // that handle these signals themselves (oasis-go1 stops the robot first) do not call it.
 void install_cleanup_handlers();
 
+// How long the handler waits, after removing what is registered, before the program dies of
+// the signal. For the ranks of an MPI job that write nothing: mpirun signals every rank at
+// once, and when one dies of a signal it kills the others with SIGKILL at the same moment, so
+// a rank that died at once could take the writing rank with it before its handler had removed
+// the unfinished output (issue 38). mpirun's own SIGKILL comes a second after its SIGTERM.
+void set_wait_before_dying(int milliseconds);
+
 // A file, or a directory with everything in it, that the handler removes while this lives.
 // Registration fails silently when every slot is taken or the path is too long: the next writer
 // still removes the leftover.

@@ -66,6 +66,44 @@ int exchange(const fs::path& from, const fs::path& to) {
   return ::renameat2(AT_FDCWD, from.c_str(), AT_FDCWD, to.c_str(), RENAME_EXCHANGE);
 }
 
+// Puts `staging` in place of `target`. `old_set` is where the replaced set then lies: the
+// staging name after an exchange, a hidden sibling after the fallback's two renames, or ""
+// when there was no target.
+bool swap_into_place(const fs::path& staging, const fs::path& target, std::string& old_set,
+                     std::string& error) {
+  std::error_code ec;
+  if (!fs::exists(target, ec)) {
+    if (::rename(staging.c_str(), target.c_str()) != 0) {
+      error = "cannot rename '" + staging.string() + "' to '" + target.string() +
+              "': " + reason_of(errno);
+      return false;
+    }
+    old_set.clear();
+    return true;
+  }
+  if (exchange(staging, target) == 0) {
+    old_set = staging.string();
+    return true;
+  }
+  if (errno != EINVAL && errno != ENOSYS) {
+    error = "cannot swap '" + staging.string() + "' into '" + target.string() +
+            "': " + reason_of(errno);
+    return false;
+  }
+  // No RENAME_EXCHANGE here: move the old set aside under a staging name (put back by the
+  // next open() if we die between the renames), then the new one in.
+  const fs::path aside = target.parent_path() / (staging_prefix(target) + "old");
+  fs::remove_all(aside, ec);
+  if (::rename(target.c_str(), aside.c_str()) != 0 ||
+      ::rename(staging.c_str(), target.c_str()) != 0) {
+    error = "cannot move '" + staging.string() + "' into '" + target.string() +
+            "': " + reason_of(errno);
+    return false;
+  }
+  old_set = aside.string();
+  return true;
+}
+
 }  // namespace
 
 StagedDirectory::~StagedDirectory() {
@@ -138,33 +176,23 @@ bool StagedDirectory::commit(const std::string& marker_text, std::string& error)
   marker.append(marker_text);
   if (!marker.commit(error)) return false;
   ::fsync(lock_fd_);
-  const interrupt::CommitSection section;  // a signal waits until the swap is done
   const fs::path target(target_);
   const fs::path staging(staging_);
-  std::error_code ec;
-  if (!fs::exists(target, ec)) {
-    if (::rename(staging.c_str(), target.c_str()) != 0) {
-      error = "cannot rename '" + staging_ + "' to '" + target_ + "': " + reason_of(errno);
-      return false;
-    }
-  } else if (exchange(staging, target) != 0) {
-    if (errno != EINVAL && errno != ENOSYS) {
-      error = "cannot swap '" + staging_ + "' into '" + target_ + "': " + reason_of(errno);
-      return false;
-    }
-    // No RENAME_EXCHANGE here: move the old set aside under a staging name (removed by the
-    // next open() if we die now), then the new one in.
-    std::string aside = (target.parent_path() / (staging_prefix(target) + "old")).string();
-    fs::remove_all(aside, ec);
-    if (::rename(target.c_str(), aside.c_str()) != 0 ||
-        ::rename(staging.c_str(), target.c_str()) != 0) {
-      error = "cannot move '" + staging_ + "' into '" + target_ + "': " + reason_of(errno);
-      return false;
-    }
-    fs::remove_all(aside, ec);
+  std::string old_set;  // where the replaced set lies after the swap ("" if there was none)
+  {
+    // A signal waits until the swap is done, and no longer: deleting the old set can take
+    // seconds on a busy disk (past mpirun's one second between SIGTERM and SIGKILL), so it
+    // runs outside the section, with the clean-up slot naming the old set's place. A signal
+    // then deletes it in the handler, whose unlinks do not wait for the disk.
+    const interrupt::CommitSection section;
+    if (!swap_into_place(staging, target, old_set, error)) return false;
+    if (old_set.empty())
+      cleanup_.release();
+    else if (old_set != staging_)
+      cleanup_ = interrupt::CleanupPath(old_set, interrupt::CleanupPath::Kind::kDirectory);
   }
-  // After an exchange the old content sits at the staging name: delete it.
-  fs::remove_all(staging, ec);
+  std::error_code ec;
+  if (!old_set.empty()) fs::remove_all(old_set, ec);
   sync_path(target.parent_path());
   staging_.clear();
   cleanup_.release();

@@ -125,7 +125,9 @@ def signal_runs(args, work):
         what = (f"run {run}: {signal.Signals(which).name} to "
                 f"{'every process' if everyone else 'mpirun'} after {delay:.2f} s, exit "
                 f"{job.returncode}")
-        check(not left, f"{what}: nothing beside the output folder ({left})", stderr)
+        check(not left, f"{what}: nothing beside the output folder ({left})",
+              stderr + "".join(f"{name} holds {sorted(os.listdir(folder / name))}\n"
+                               for name in left if (folder / name).is_dir()))
         if out.exists():
             check(catalog_whole(out, reference), f"{what}: the output folder is the whole catalog",
                   stderr)
