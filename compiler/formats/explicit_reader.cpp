@@ -132,6 +132,7 @@ std::optional<model::ExplicitModel> read_prism(const PrismFiles& files,
   model.name =
       std::filesystem::path(diagnostics.sources().file(files.transitions).path()).stem().string();
   model.states.size = tra.num_states;
+  model.type = tra.markov_chain ? model::ModelType::kDtmc : model::ModelType::kMdp;
   model.actions = tra.actions;
   model::Context context = read_rewards(files, diagnostics, tra, values);
   std::optional<model::TransitionMatrix> matrix =

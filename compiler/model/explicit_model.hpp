@@ -114,8 +114,15 @@ struct Objective {
   std::optional<std::uint32_t> horizon;
 };
 
+// Whether the model chooses. A Markov chain (PRISM's dtmc, a .tra file without a choice
+// column) has one distribution per state, under the one action "[0]"; properties that optimise
+// over choices (Pmax, Rmin) are refused on it, as PRISM refuses them. Specs, .aut files and
+// PRISM's mdp are MDPs, even where each state happens to have one action.
+enum class ModelType { kMdp, kDtmc };
+
 struct ExplicitModel {
   std::string name;
+  ModelType type = ModelType::kMdp;
   StateSpace states;
   std::vector<std::string> actions;
   RationalPool values;

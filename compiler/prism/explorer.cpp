@@ -461,6 +461,8 @@ class Explorer {
     }
     model::ExplicitModel model;
     model.name = program_.name;
+    model.type =
+        program_.type == ModelType::Dtmc ? model::ModelType::kDtmc : model::ModelType::kMdp;
     model.actions = action_names_;
     fill_state_space(model.states);
     std::vector<formats::DistributionCollector::Duplicate> duplicates;
