@@ -11,10 +11,12 @@
 namespace oasis::prism::ast {
 
 struct Expr {
-  enum class Kind { Integer, Real, Bool, Name, Unary, Binary, IfThenElse, Call };
+  enum class Kind { Integer, Real, Bool, Name, Unary, Binary, IfThenElse, Call, Extension };
   Kind kind = Kind::Integer;
   // Integer/Real: the literal; Bool: "true"/"false"; Name: the name; Unary/Binary: the
-  // operator's spelling; Call: the function's name.
+  // operator's spelling; Call: the function's name. Extension: a node of the property
+  // language (`P=? [...]`, `"label"`, `filter(...)`), kept by the property parser; `text` is
+  // its index there. Programs never contain one.
   std::string text;
   std::vector<Expr> operands;
   SourceRange range;

@@ -71,6 +71,7 @@ class Checker {
     lower_labels();
     lower_rewards();
     lower_init();
+    collect_names();
     if (diagnostics_.error_count() != errors_before) return std::nullopt;
     return std::move(program_);
   }
@@ -276,6 +277,29 @@ class Checker {
       return std::nullopt;
     }
     return Expression::make_constant(given.value, wanted, constant.range);
+  }
+
+  // Every name a property may use (Program::names), sorted. A formula the model does not use
+  // is lowered here, and its errors reported, as PRISM checks every formula.
+  void collect_names() {
+    for (const auto& [name, symbol] : symbols_) {
+      std::optional<Expression> value;
+      switch (symbol.kind) {
+        case Symbol::Kind::Constant:
+          if (constants_[symbol.index].status == ConstantState::Status::Done)
+            value = constants_[symbol.index].value;
+          break;
+        case Symbol::Kind::Formula:
+          if (formula_as_written(symbol.index)) value = formulas_[0][symbol.index].value;
+          break;
+        case Symbol::Kind::Variable:
+          value = variable_reference(symbol.index, symbol.range);
+          break;
+      }
+      if (value) program_.names.emplace_back(name, std::move(*value));
+    }
+    std::sort(program_.names.begin(), program_.names.end(),
+              [](const auto& a, const auto& b) { return a.first < b.first; });
   }
 
   // --- Resolving names in expressions ------------------------------------------------------

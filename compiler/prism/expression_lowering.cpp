@@ -88,6 +88,7 @@ std::optional<Expression> ExpressionLowering::lower_node(const ast::Expr& expr) 
       result = literal(expr);
       break;
     case ast::Expr::Kind::Name:
+    case ast::Expr::Kind::Extension:  // the property language's nodes: its resolver's business
       result = resolve_(expr);
       if (result) {
         nodes_ += count_nodes(*result);

@@ -23,7 +23,8 @@ std::size_t count_nodes(const model::Expression& expr);
 class ExpressionLowering {
  public:
   // Resolves a name (a variable, constant or formula) to its expression; nullopt after
-  // reporting that it means nothing (or that its own definition failed).
+  // reporting that it means nothing (or that its own definition failed). Extension nodes (the
+  // property language's) are resolved by it too.
   using Resolve = std::function<std::optional<model::Expression>(const ast::Expr& name)>;
 
   ExpressionLowering(DiagnosticEngine& diagnostics, std::size_t max_number_bits, Resolve resolve)

@@ -28,6 +28,7 @@ std::optional<model::ExplicitModel> load_program_text(FileId file, const std::st
       options.max_number_bits, options.rewards,        options.reward_ranges};
   const auto program = check(tree, name, diagnostics, check_options);
   if (!program) return std::nullopt;
+  if (options.names != nullptr) *options.names = program->names;
   return explore(*program, diagnostics, options.explore);
 }
 

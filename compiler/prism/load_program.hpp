@@ -27,6 +27,8 @@ struct LoadOptions {
   std::size_t max_bytes = limits::kDefaultMaxSpecBytes;
   std::size_t max_number_bits = limits::kDefaultMaxNumberBits;
   ExploreOptions explore;
+  // When set, receives the checked program's names (Program::names), for the properties.
+  std::vector<std::pair<std::string, model::Expression>>* names = nullptr;
 };
 
 // Whether `path` names a PRISM program by its extension.

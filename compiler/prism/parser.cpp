@@ -5,46 +5,21 @@
 #include <string>
 #include <utility>
 
+#include "prism/expression_parser.hpp"
 #include "support/limits.hpp"
 #include "support/text.hpp"
 
 namespace oasis::prism {
 namespace {
 
-// Raised after a syntax error has been reported; the caller skips to a safe point.
-struct SyntaxError {};
-
 // Model types PRISM has that oasis does not explore, named in the refusal.
 constexpr std::array<std::string_view, 9> kRefusedTypes = {
     "ctmc", "stochastic", "pta", "pomdp", "popta", "smg", "csg", "tsg", "ma"};
 
-// Words that cannot name anything.
-constexpr std::array<std::string_view, 30> kKeywords = {
-    "dtmc",      "probabilistic", "mdp",     "nondeterministic",
-    "ctmc",      "const",         "int",     "double",
-    "bool",      "formula",       "global",  "module",
-    "endmodule", "label",         "rewards", "endrewards",
-    "init",      "endinit",       "true",    "false",
-    "min",       "max",           "floor",   "ceil",
-    "pow",       "mod",           "system",  "endsystem",
-    "func",      "prob"};
-
-bool is_keyword(std::string_view word) {
-  return std::find(kKeywords.begin(), kKeywords.end(), word) != kKeywords.end();
-}
-
-// The keywords that name functions, which func(NAME, ...) may call.
-constexpr std::array<std::string_view, 6> kFunctions = {"min",  "max", "floor",
-                                                        "ceil", "pow", "mod"};
-
-bool is_function(std::string_view word) {
-  return std::find(kFunctions.begin(), kFunctions.end(), word) != kFunctions.end();
-}
-
-class Parser {
+class Parser : public ExpressionParser {
  public:
   Parser(const std::vector<Token>& tokens, DiagnosticEngine& diagnostics)
-      : tokens_(tokens), diagnostics_(diagnostics) {}
+      : ExpressionParser(tokens, diagnostics) {}
 
   ast::Program run() {
     program_.type_range = peek().range;  // where a missing model type is reported
@@ -325,257 +300,6 @@ class Parser {
     program_.init_range = keyword.range;
   }
 
-  // --- Expressions, loosest first --------------------------------------------------------
-
-  ast::Expr expression() {
-    if (++depth_ > limits::kMaxNesting) {
-      fail(peek(),
-           "expression nested more than " + std::to_string(limits::kMaxNesting) + " levels deep");
-    }
-    ast::Expr result = conditional();
-    --depth_;
-    return result;
-  }
-
-  ast::Expr conditional() {
-    ast::Expr condition = implication();
-    if (!accept(TokenKind::Question)) return condition;
-    ast::Expr then = expression();
-    expect(TokenKind::Colon, "between the two branches of '? :'");
-    ast::Expr otherwise = expression();
-    std::vector<ast::Expr> operands;
-    operands.push_back(std::move(condition));
-    operands.push_back(std::move(then));
-    operands.push_back(std::move(otherwise));
-    return node(ast::Expr::Kind::IfThenElse, "?", std::move(operands));
-  }
-
-  // PRISM's grammar (ExpressionImplies) makes a => b => c mean (a => b) => c.
-  ast::Expr implication() { return left_associative(&Parser::equivalence, {TokenKind::Implies}); }
-
-  template <typename Next>
-  ast::Expr left_associative(Next next, std::initializer_list<TokenKind> operators) {
-    ast::Expr left = (this->*next)();
-    while (std::find(operators.begin(), operators.end(), peek().kind) != operators.end()) {
-      const std::string op(advance().text);
-      ast::Expr right = (this->*next)();
-      left = node(ast::Expr::Kind::Binary, op, pair_of(std::move(left), std::move(right)));
-    }
-    return left;
-  }
-
-  ast::Expr equivalence() { return left_associative(&Parser::disjunction, {TokenKind::Iff}); }
-  ast::Expr disjunction() { return left_associative(&Parser::conjunction, {TokenKind::Or}); }
-  ast::Expr conjunction() { return left_associative(&Parser::negation, {TokenKind::And}); }
-
-  ast::Expr negation() {
-    if (!at(TokenKind::Not)) return relation();
-    const Token& op = advance();
-    nest();
-    ast::Expr operand = negation();
-    --depth_;
-    ast::Expr result = node(ast::Expr::Kind::Unary, "!", one_of(std::move(operand)));
-    result.range = span(op.range, result.range);
-    return result;
-  }
-
-  // PRISM binds < <= > >= tighter than = and != (ExpressionEquality over ExpressionRelop), so
-  // `true = 1 < 2` is `true = (1 < 2)`; both levels are left associative.
-  ast::Expr relation() {
-    return left_associative(&Parser::comparison, {TokenKind::Equal, TokenKind::NotEqual});
-  }
-  ast::Expr comparison() {
-    return left_associative(&Parser::sum, {TokenKind::Less, TokenKind::LessEqual,
-                                           TokenKind::Greater, TokenKind::GreaterEqual});
-  }
-  ast::Expr sum() {
-    return left_associative(&Parser::product, {TokenKind::Plus, TokenKind::Minus});
-  }
-  ast::Expr product() {
-    return left_associative(&Parser::unary, {TokenKind::Star, TokenKind::Slash});
-  }
-
-  ast::Expr unary() {
-    if (!at(TokenKind::Minus)) return primary();
-    const Token& op = advance();
-    nest();
-    ast::Expr operand = unary();
-    --depth_;
-    ast::Expr result = node(ast::Expr::Kind::Unary, "-", one_of(std::move(operand)));
-    result.range = span(op.range, result.range);
-    return result;
-  }
-
-  ast::Expr primary() {
-    const Token& token = peek();
-    switch (token.kind) {
-      case TokenKind::Integer:
-        advance();
-        return leaf(ast::Expr::Kind::Integer, token);
-      case TokenKind::Real:
-        advance();
-        return leaf(ast::Expr::Kind::Real, token);
-      case TokenKind::LeftParen: {
-        advance();
-        ast::Expr inner = expression();
-        expect(TokenKind::RightParen, "to close the parenthesis");
-        return inner;
-      }
-      case TokenKind::Identifier:
-        return name_or_call();
-      default:
-        fail(token, "expected an expression, found " + describe(token));
-    }
-  }
-
-  ast::Expr name_or_call() {
-    const Token& token = advance();
-    if (token.text == "true" || token.text == "false") return leaf(ast::Expr::Kind::Bool, token);
-    if (!at(TokenKind::LeftParen)) {
-      if (is_keyword(token.text))
-        fail(token, "expected an expression, found the keyword " + quoted(token.text));
-      return leaf(ast::Expr::Kind::Name, token);
-    }
-    std::string function(token.text);
-    advance();                 // (
-    if (function == "func") {  // func(min, a, b) is min(a, b)
-      function = std::string(function_name().text);
-      expect(TokenKind::Comma, "after the function's name");
-    }
-    ast::Expr call = leaf(ast::Expr::Kind::Call, token);
-    call.text = function;
-    nest();
-    do {
-      call.operands.push_back(expression());
-    } while (accept(TokenKind::Comma));
-    --depth_;
-    const Token& close = expect(TokenKind::RightParen, "to close the function's arguments");
-    call.range = span(token.range, close.range);
-    for (const ast::Expr& operand : call.operands)
-      call.depth = std::max(call.depth, operand.depth + 1);
-    check_depth(call);
-    return call;
-  }
-
-  // The name in func(NAME, ...): a function's name is a keyword (min, max, floor, ...), which
-  // identifier() refuses; any other identifier is left to the checker to report as unknown.
-  const Token& function_name() {
-    const Token& token = peek();
-    if (token.kind != TokenKind::Identifier)
-      fail(token, "expected the function's name, found " + describe(token));
-    if (is_keyword(token.text) && !is_function(token.text))
-      fail(token, "the keyword " + quoted(token.text) + " is not a function");
-    return advance();
-  }
-
-  void nest() {
-    if (++depth_ > limits::kMaxNesting) {
-      fail(peek(),
-           "expression nested more than " + std::to_string(limits::kMaxNesting) + " levels deep");
-    }
-  }
-
-  static ast::Expr leaf(ast::Expr::Kind kind, const Token& token) {
-    ast::Expr expr;
-    expr.kind = kind;
-    expr.text = std::string(token.text);
-    expr.range = token.range;
-    return expr;
-  }
-
-  ast::Expr node(ast::Expr::Kind kind, std::string op, std::vector<ast::Expr> operands) {
-    ast::Expr expr;
-    expr.kind = kind;
-    expr.text = std::move(op);
-    expr.range = span(operands.front().range, operands.back().range);
-    for (const ast::Expr& operand : operands)
-      expr.depth = std::max(expr.depth, operand.depth + 1);
-    expr.operands = std::move(operands);
-    check_depth(expr);
-    return expr;
-  }
-
-  // An initializer list would copy its elements, making a long chain quadratic.
-  static std::vector<ast::Expr> pair_of(ast::Expr left, ast::Expr right) {
-    std::vector<ast::Expr> operands;
-    operands.reserve(2);
-    operands.push_back(std::move(left));
-    operands.push_back(std::move(right));
-    return operands;
-  }
-  static std::vector<ast::Expr> one_of(ast::Expr operand) {
-    std::vector<ast::Expr> operands;
-    operands.push_back(std::move(operand));
-    return operands;
-  }
-
-  void check_depth(const ast::Expr& expr) {
-    if (expr.depth <= limits::kMaxNesting) return;
-    diagnostics_.error(expr.range, "expression is too long or nested too deeply (the limit is " +
-                                       std::to_string(limits::kMaxNesting) + " levels)");
-    throw SyntaxError{};
-  }
-
-  // --- Tokens ------------------------------------------------------------------------------
-
-  [[nodiscard]] const Token& peek(std::size_t ahead = 0) const {
-    return tokens_[std::min(pos_ + ahead, tokens_.size() - 1)];
-  }
-  [[nodiscard]] bool at(TokenKind kind) const { return peek().kind == kind; }
-  const Token& advance() {
-    const Token& token = peek();
-    if (pos_ + 1 < tokens_.size()) ++pos_;
-    return token;
-  }
-  bool accept(TokenKind kind) {
-    if (!at(kind)) return false;
-    advance();
-    return true;
-  }
-  bool accept_word(std::string_view word) {
-    if (!at(TokenKind::Identifier) || peek().text != word) return false;
-    advance();
-    return true;
-  }
-  const Token& expect(TokenKind kind, std::string_view where) {
-    if (!at(kind)) {
-      fail(peek(), "expected " + std::string(spell_quoted(kind)) + " " + std::string(where) +
-                       ", found " + describe(peek()));
-    }
-    return advance();
-  }
-  void expect_word(std::string_view word, std::string_view where) {
-    if (!accept_word(word)) {
-      fail(peek(), "expected '" + std::string(word) + "' " + std::string(where) + ", found " +
-                       describe(peek()));
-    }
-  }
-  const Token& identifier(std::string_view what) {
-    const Token& token = peek();
-    if (token.kind != TokenKind::Identifier)
-      fail(token, "expected " + std::string(what) + ", found " + describe(token));
-    if (is_keyword(token.text))
-      fail(token, "the keyword " + quoted(token.text) + " cannot be " + std::string(what));
-    return advance();
-  }
-
-  static std::string spell_quoted(TokenKind kind) {
-    const std::string_view text = spell(kind);
-    if (kind == TokenKind::Identifier || kind == TokenKind::String || kind == TokenKind::Integer)
-      return std::string(text);
-    return "'" + std::string(text) + "'";
-  }
-  static std::string describe(const Token& token) {
-    if (token.kind == TokenKind::EndOfFile) return "the end of the file";
-    if (token.kind == TokenKind::String) return "\"" + std::string(token.text) + "\"";
-    return quoted(token.text);
-  }
-
-  [[noreturn]] void fail(const Token& token, const std::string& message) {
-    diagnostics_.error(token.range, message);
-    throw SyntaxError{};
-  }
-
   [[nodiscard]] bool at_top_level_word() const {
     if (!at(TokenKind::Identifier)) return false;
     static constexpr std::array<std::string_view, 12> kStarts = {
@@ -613,10 +337,6 @@ class Parser {
   // 'endmodule'): then skipping stops at 'endmodule', not at the first ';'.
   [[nodiscard]] bool in_block_hint() const { return at(TokenKind::LeftBracket); }
 
-  const std::vector<Token>& tokens_;
-  DiagnosticEngine& diagnostics_;
-  std::size_t pos_ = 0;
-  int depth_ = 0;
   ast::Program program_;
 };
 

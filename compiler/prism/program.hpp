@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "model/expression.hpp"
@@ -70,6 +71,9 @@ struct Program {
   // satisfies `init ... endinit`.
   std::optional<model::Expression> init_predicate;
   SourceRange range;  // the model type, or the start of the file
+  // Every name a property may use, sorted, as the program's own expressions read it: each
+  // constant that has a value, each formula, each variable (a boolean one reads `x = 1`).
+  std::vector<std::pair<std::string, model::Expression>> names;
 };
 
 }  // namespace oasis::prism
