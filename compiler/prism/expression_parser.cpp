@@ -75,8 +75,8 @@ ast::Expr ExpressionParser::relation() {
 }
 
 ast::Expr ExpressionParser::comparison() {
-  return left_associative(&ExpressionParser::sum, {TokenKind::Less, TokenKind::LessEqual, TokenKind::Greater,
-                                         TokenKind::GreaterEqual});
+  return left_associative(&ExpressionParser::sum, {TokenKind::Less, TokenKind::LessEqual,
+                                                   TokenKind::Greater, TokenKind::GreaterEqual});
 }
 
 ast::Expr ExpressionParser::sum() {
