@@ -79,7 +79,9 @@ class Lexer {
         ++pos_;
       return make(TokenKind::Identifier, start, pos_);
     }
-    if (is_digit(c)) return number(start);
+    if (is_digit(c) || (c == '.' && pos_ + 1 < text_.size() && is_digit(text_[pos_ + 1]))) {
+      return number(start);
+    }
     if (c == '"') return string(start);
     for (const Symbol& symbol : kSymbols) {
       if (text_.substr(pos_, symbol.spelling.size()) == symbol.spelling) {
@@ -87,9 +89,11 @@ class Lexer {
         return make(symbol.kind, start, pos_);
       }
     }
-    // A run of characters PRISM does not use is one error, not one per byte.
-    while (pos_ < text_.size() && !known_start(text_[pos_]))
+    // A run of characters PRISM does not use is one error, not one per byte. The first is
+    // always taken: a '.' that starts no ".." and no number is a known start but no token.
+    do {
       ++pos_;
+    } while (pos_ < text_.size() && !known_start(text_[pos_]));
     diagnostics_.error(range(start, pos_),
                        "unexpected character " + shown(text_[start]) + " in a PRISM program");
     return std::nullopt;
@@ -113,11 +117,14 @@ class Lexer {
     return std::string("byte 0x") + kHex[byte >> 4] + kHex[byte & 0xF];
   }
 
-  // digits [. digits] [e [+-] digits]. "0..5" is 0, "..", 5: a '.' belongs to the number
-  // only when a digit follows it.
+  // PRISM's REG_DOUBLE is [digits] [.] digits [e [+-] digits], and its REG_INT is 0 or a
+  // digit string without a leading zero; JavaCC takes the longest match, the integer on a
+  // tie. So ".2" and "1e-3" are reals, "2." is the integer 2 then a stray '.', "007" is a real
+  // (and refused where an int is needed, as in PRISM), and "0..5" is 0, "..", 5: a '.' belongs
+  // to the number only when a digit follows it.
   Token number(std::size_t start) {
-    bool real = false;
     skip_digits();
+    bool real = pos_ - start > 1 && text_[start] == '0';
     if (pos_ + 1 < text_.size() && text_[pos_] == '.' && is_digit(text_[pos_ + 1])) {
       real = true;
       ++pos_;
