@@ -38,5 +38,6 @@ CommandRunner add_quotient_command(CLI::App& app);
 CommandRunner add_compile_command(CLI::App& app);
 CommandRunner add_verify_command(CLI::App& app);
 CommandRunner add_fit_command(CLI::App& app);
+CommandRunner add_query_command(CLI::App& app);
 
 }  // namespace oasis::cli

@@ -40,6 +40,7 @@ int run(int argc, char** argv) {
   };
   add(oasis::cli::add_check_command(app));
   add(oasis::cli::add_info_command(app));
+  add(oasis::cli::add_query_command(app));
   add(oasis::cli::add_export_command(app));
   add(oasis::cli::add_quotient_command(app));
   add(oasis::cli::add_compile_command(app));

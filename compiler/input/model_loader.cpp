@@ -50,8 +50,11 @@ prism::LoadOptions prism_load_options(const LoadOptions& options) {
 std::optional<model::ExplicitModel> load_prism_program(const std::string& path,
                                                        SourceManager& sources,
                                                        DiagnosticEngine& diagnostics,
-                                                       const LoadOptions& options) {
-  auto model = prism::load_program(path, sources, diagnostics, prism_load_options(options));
+                                                       const LoadOptions& options,
+                                                       LoadedModel& loaded) {
+  prism::LoadOptions prism_options = prism_load_options(options);
+  prism_options.names = &loaded.names;
+  auto model = prism::load_program(path, sources, diagnostics, prism_options);
   if (options.progress) std::cerr << "\r\033[K" << std::flush;
   return model;
 }
@@ -91,7 +94,7 @@ std::optional<LoadedModel> load_model(const std::string& path, SourceManager& so
   };
   if (prism::is_program_path(path)) {
     loaded.prism_program = true;
-    loaded.model = load_prism_program(path, sources, diagnostics, options);
+    loaded.model = load_prism_program(path, sources, diagnostics, options, loaded);
     if (!loaded.model) return std::nullopt;
     hash_input();
     return loaded;

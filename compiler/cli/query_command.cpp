@@ -1,0 +1,203 @@
+// `oasisc query MODEL --prop '...' [--props FILE]`: answer PRISM properties on a model, each
+// on one line, exactly (rationals) or with a sound interval (docs/properties.md).
+
+#include <charconv>
+#include <iostream>
+#include <memory>
+#include <set>
+#include <sstream>
+
+#include "cli/commands.hpp"
+#include "command_line/number_options.hpp"
+#include "property/evaluator.hpp"
+#include "property/parser.hpp"
+#include "support/input_validation.hpp"
+#include "support/mapped_file.hpp"
+#include "support/text.hpp"
+
+namespace oasis::cli {
+namespace {
+
+// Models up to this many states are answered exactly when no mode is asked for; past it, or
+// when the exact solve refuses the model, soundly.
+constexpr std::uint32_t kAutoExactStates = 100'000;
+
+struct QueryOptions {
+  std::string model;
+  std::vector<std::string> props;       // --prop texts
+  std::vector<std::string> prop_files;  // --props files
+  std::string mode = "auto";
+  double precision = 1e-6;
+  CommonOptions common;
+};
+
+// The properties of every --props file and --prop text, each parsed into its own file of
+// `sources` (a --prop is named "--prop N" in messages).
+std::vector<property::PropertiesFile> read_properties(const QueryOptions& options,
+                                                      SourceManager& sources,
+                                                      DiagnosticEngine& diagnostics) {
+  std::vector<property::PropertiesFile> files;
+  for (const std::string& path : options.prop_files) {
+    MappedFile contents;
+    std::string reason;
+    if (!contents.open(path, options.common.load.max_spec_bytes, reason)) {
+      diagnostics.file_error(path, "cannot read the properties: " + reason);
+      continue;
+    }
+    const FileId file = sources.add(path, std::move(contents));
+    if (validate_input(file, diagnostics)) files.push_back(property::parse_file(file, diagnostics));
+  }
+  for (std::size_t i = 0; i < options.props.size(); ++i) {
+    const FileId file = sources.add("--prop " + std::to_string(i + 1), options.props[i]);
+    if (validate_input(file, diagnostics)) files.push_back(property::parse_file(file, diagnostics));
+  }
+  return files;
+}
+
+// The reward structures the properties name, for the loader (--rewards): all of them when one
+// says only R (PRISM's first structure).
+std::string rewards_used(const std::vector<property::PropertiesFile>& files) {
+  std::set<std::string> names;
+  for (const property::PropertiesFile& file : files) {
+    for (const property::Extension& node : file.extensions) {
+      const auto* q = std::get_if<property::Quantifier>(&node);
+      if (q == nullptr || !q->reward) continue;
+      if (!q->reward_name) return "all";
+      names.insert(*q->reward_name);
+    }
+  }
+  if (names.empty()) return "none";
+  std::string list;
+  for (const std::string& name : names)
+    list += (list.empty() ? "" : ",") + name;
+  return list;
+}
+
+std::string shortest(double value) {
+  char buffer[32];
+  const auto end = std::to_chars(buffer, buffer + sizeof buffer, value).ptr;
+  return {buffer, end};
+}
+
+std::string value_text(const modelcheck::Value& value, modelcheck::Mode mode) {
+  if (value.infinite) return " = infinity";
+  if (mode == modelcheck::Mode::kExact) {
+    const std::string exact = to_string(value.exact);
+    if (exact.size() > kMaxDescribedDigits) return " = " + describe(value.exact);
+    if (value.exact.get_den() == 1) return " = " + exact;
+    std::ostringstream approx;
+    approx.precision(10);
+    approx << value.exact.get_d();
+    return " = " + exact + " (about " + approx.str() + ")";
+  }
+  return " in [" + shortest(value.lower) + ", " + shortest(value.upper) + "]";
+}
+
+std::string truth_text(const property::Answer& answer, const model::ExplicitModel& model) {
+  std::string text = answer.verdict ? " is true" : " is false";
+  if (answer.considered == 1) return text + " in the initial state";
+  if (answer.verdict && answer.holding == answer.considered)
+    return text + " in all " + std::to_string(answer.considered) + " states read";
+  text += ": it holds in " + std::to_string(answer.holding) + " of " +
+          std::to_string(answer.considered) + " states read";
+  if (answer.first_failing)
+    text += " (first that fails: " + model.states.name(*answer.first_failing) + ")";
+  return text;
+}
+
+void print_answer(const property::Property& property, const property::Answer& answer,
+                  const model::ExplicitModel& model, modelcheck::Mode mode) {
+  std::cout << (property.name ? "\"" + *property.name + "\": " : "") << property.text;
+  if (answer.kind == property::Answer::Kind::kNumber) {
+    std::cout << value_text(answer.value, mode);
+  } else {
+    std::cout << truth_text(answer, model);
+  }
+  std::cout << "  [" << answer.method << "]\n";
+}
+
+int run_query(const QueryOptions& options) {
+  SourceManager sources;
+  DiagnosticEngine diagnostics(sources, std::cerr, options.common.max_errors);
+  const std::vector<property::PropertiesFile> files =
+      read_properties(options, sources, diagnostics);
+  if (diagnostics.has_errors()) return 1;
+  LoadOptions load = effective_load_options(options.common);
+  if (load.rewards == "none") load.rewards = rewards_used(files);
+  load.hash_source = false;
+  const auto loaded = load_model(options.model, sources, diagnostics, load);
+  if (!loaded || !loaded->model || diagnostics.has_errors()) {
+    if (loaded && !loaded->model)
+      diagnostics.file_error(options.model, "properties are answered on discrete models only");
+    return 1;
+  }
+  const model::ExplicitModel& model = *loaded->model;
+  modelcheck::Options engine;
+  engine.precision = options.precision;
+  engine.max_number_bits = load.max_number_bits;
+  const bool exact =
+      options.mode == "exact" || (options.mode == "auto" && model.num_states() <= kAutoExactStates);
+  engine.mode = exact ? modelcheck::Mode::kExact : modelcheck::Mode::kSound;
+  bool all_answered = true;
+  for (const property::PropertiesFile& file : files) {
+    property::Evaluator evaluator(model, loaded->names, file, diagnostics, engine);
+    evaluator.allow_sound_fallback(options.mode == "auto");
+    for (const property::Property& property : file.properties) {
+      const std::optional<property::Answer> answer = evaluator.answer(property);
+      if (!answer) {
+        all_answered = false;
+        if (diagnostics.should_stop()) return 1;
+        continue;
+      }
+      print_answer(property, *answer, model, answer->mode);
+    }
+  }
+  return all_answered ? 0 : 1;
+}
+
+}  // namespace
+
+CommandRunner add_query_command(CLI::App& app) {
+  auto options = std::make_shared<QueryOptions>();
+  CLI::App* command = app.add_subcommand(
+      "query", "Answer PRISM properties (P=?, Pmax=?, R{\"r\"}=?, P>=b ...) on a model");
+  command->footer(
+      "Each property is answered on one line, in the model's initial state (PRISM's\n"
+      "filter(first, ..., \"init\")), with the method that gave the answer. Modes:\n"
+      "  exact  rationals: graph precomputation, then an exact solve (1/6, not 0.1666...)\n"
+      "  sound  an interval [lower, upper] that contains the true value, of width at most\n"
+      "         --precision, by interval iteration with outward rounding; never a value\n"
+      "         iteration stopped at a threshold\n"
+      "  auto   exact up to 100000 states (or until the exact solve refuses), sound past it\n"
+      "The language is PRISM's (docs/properties.md): P=? [F \"goal\"], Pmax=? [a U<=10 b],\n"
+      "P>=0.5 [G !\"crash\"], R{\"time\"}min=? [F \"done\"], R=? [C<=5], R=? [I=3],\n"
+      "filter(max, P=? [F \"one\"], \"init\"); labels in quotes, the program's variables,\n"
+      "constants and formulas by name.\n\n"
+      "Examples:\n"
+      "  oasisc query die.pm --prop 'P=? [F s=7&d=1]'\n"
+      "  oasisc query leader.nm --const N=4 --props leader.props --mode sound");
+  command
+      ->add_option("model", options->model,
+                   "PRISM program (.pm, .nm, .prism), spec (.oasis) or model (.aut, .tra)")
+      ->required();
+  command->add_option("--prop", options->props, "A property, or several separated by ';'");
+  command->add_option("--props", options->prop_files, "A file of properties (.props, .pctl)")
+      ->check(CLI::ExistingFile);
+  command->add_option("--mode", options->mode, "exact, sound or auto")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"exact", "sound", "auto"}));
+  command
+      ->add_option("--precision", options->precision,
+                   "Sound mode: the widest interval an answer may have")
+      ->capture_default_str()
+      ->check(CLI::Range(1e-15, 0.5));
+  add_common_options(*command, options->common);
+  command->callback([command, options] {
+    if (options->props.empty() && options->prop_files.empty())
+      throw CLI::ValidationError("query", "give at least one --prop or --props");
+    static_cast<void>(command);
+  });
+  return [options] { return run_query(*options); };
+}
+
+}  // namespace oasis::cli

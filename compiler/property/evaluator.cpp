@@ -1,0 +1,428 @@
+#include "property/evaluator.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <string>
+
+#include "prism/expression_lowering.hpp"
+#include "property/value_reduction.hpp"
+#include "support/text.hpp"
+
+namespace oasis::property {
+namespace {
+
+namespace ast = prism::ast;
+using modelcheck::Optimum;
+using modelcheck::StateSet;
+using modelcheck::Value;
+
+// How many times a bounded operator's precision is tightened (1000-fold each) before a value
+// too close to its bound to decide in sound mode is reported.
+constexpr int kRefinements = 3;
+
+// The column `slot` read as a boolean: `slot = 1`.
+model::Expression column_holds(std::uint32_t slot, SourceRange range) {
+  model::Expression var;
+  var.op = model::Op::Variable;
+  var.type = model::Type::Int;
+  var.slot = slot;
+  var.range = range;
+  model::Expression test;
+  test.op = model::Op::Equal;
+  test.type = model::Type::Bool;
+  test.range = range;
+  test.operands = {std::move(var), model::Expression::make_constant(1, model::Type::Int, range)};
+  return test;
+}
+
+Optimum opposite(Optimum optimum) {
+  if (optimum == Optimum::kMin) return Optimum::kMax;
+  if (optimum == Optimum::kMax) return Optimum::kMin;
+  return Optimum::kNone;
+}
+
+StateSet complement(StateSet set) {
+  set.flip();
+  return set;
+}
+
+// 1 - v in every state, the interval turned around and rounded outward.
+void one_minus(std::vector<Value>& values) {
+  for (Value& v : values) {
+    v.exact = 1 - v.exact;
+    const double lower = std::nextafter(1.0 - v.upper, -1.0);
+    const double upper = std::nextafter(1.0 - v.lower, 2.0);
+    v.lower = std::clamp(lower, 0.0, 1.0);
+    v.upper = std::clamp(upper, 0.0, 1.0);
+  }
+}
+
+const char* optimum_word(Optimum optimum) {
+  return optimum == Optimum::kMin ? "min" : optimum == Optimum::kMax ? "max" : "";
+}
+
+}  // namespace
+
+Evaluator::Evaluator(const model::ExplicitModel& model, const Names& names,
+                     const PropertiesFile& file, DiagnosticEngine& diagnostics,
+                     const modelcheck::Options& options)
+    : model_(model),
+      names_(names),
+      file_(file),
+      diagnostics_(diagnostics),
+      options_(options),
+      width_(static_cast<std::uint32_t>(model.states.variables.size())) {}
+
+std::optional<Answer> Evaluator::answer(const Property& property) {
+  method_.clear();
+  try {
+    Answer result = answer_expression(property.expression);
+    result.mode = options_.mode;
+    return result;
+  } catch (const Failed&) {
+    return std::nullopt;
+  } catch (const modelcheck::ExactLimitExceeded& e) {
+    if (!sound_fallback_ || options_.mode != modelcheck::Mode::kExact) {
+      diagnostics_.error(property.range, e.what());
+      return std::nullopt;
+    }
+    diagnostics_.note(property.range, std::string(e.what()) + "; answering in sound mode");
+    const modelcheck::Mode saved = options_.mode;
+    options_.mode = modelcheck::Mode::kSound;
+    std::optional<Answer> result = answer(property);
+    options_.mode = saved;
+    return result;
+  }
+}
+
+void Evaluator::fail(SourceRange where, const std::string& message) {
+  diagnostics_.error(where, message);
+  throw Failed{};
+}
+
+Answer Evaluator::answer_expression(const ast::Expr& expr) {
+  if (expr.kind == ast::Expr::Kind::Extension) {
+    const Extension& node = file_.extensions.at(std::stoul(expr.text));
+    if (const auto* filter = std::get_if<Filter>(&node)) return answer_filter(*filter);
+    const auto* q = std::get_if<Quantifier>(&node);
+    if (q != nullptr && q->comparison == Quantifier::Comparison::kQuery) {
+      Filter first;
+      first.initial_states = true;
+      first.property = expr;
+      first.range = expr.range;
+      return answer_filter(first);
+    }
+  }
+  Filter forall;
+  forall.initial_states = true;
+  forall.op = Filter::Op::kForall;
+  forall.property = expr;
+  forall.range = expr.range;
+  return answer_filter(forall);
+}
+
+Answer Evaluator::answer_filter(const Filter& filter) {
+  StateSet states(model_.num_states(), !filter.initial_states);
+  if (filter.states) {
+    states = states_of(*filter.states);
+  } else if (filter.initial_states) {
+    for (const model::StateIndex s : model_.states.initial)
+      states[s] = true;
+  }
+  if (std::find(states.begin(), states.end(), true) == states.end())
+    fail(filter.range, "the filter reads no state (its state formula holds nowhere)");
+  const ast::Expr& inner = filter.property;
+  const Quantifier* query = nullptr;
+  if (inner.kind == ast::Expr::Kind::Extension) {
+    const Extension& node = file_.extensions.at(std::stoul(inner.text));
+    if (std::holds_alternative<Filter>(node))
+      fail(inner.range, "a filter cannot stand inside another filter");
+    query = std::get_if<Quantifier>(&node);
+    if (query != nullptr && query->comparison != Quantifier::Comparison::kQuery) query = nullptr;
+  }
+  Answer answer;
+  if (query != nullptr) {
+    modelcheck::Result result = quantify(*query, options_.want_scheduler);
+    answer.kind = Answer::Kind::kNumber;
+    if (!reduce_values(filter.op, result.values, states, options_.mode, answer.value)) {
+      fail(filter.range, "the filter '" + filter_name(filter.op) +
+                             "' reads a truth value; the property here is a number");
+    }
+    answer.state_values = std::move(result.values);
+    answer.scheduler = std::move(result.scheduler);
+    answer.method = std::move(result.method);
+    return answer;
+  }
+  const StateSet truth = states_of(inner);
+  answer.kind = Answer::Kind::kTruth;
+  for (model::StateIndex s = 0; s < model_.num_states(); ++s) {
+    if (!states[s]) continue;
+    ++answer.considered;
+    if (truth[s]) {
+      ++answer.holding;
+    } else if (!answer.first_failing) {
+      answer.first_failing = s;
+    }
+  }
+  switch (filter.op) {
+    case Filter::Op::kForall:
+      answer.verdict = answer.holding == answer.considered;
+      break;
+    case Filter::Op::kExists:
+      answer.verdict = answer.holding > 0;
+      break;
+    case Filter::Op::kFirst: {
+      const auto first = std::find(states.begin(), states.end(), true) - states.begin();
+      answer.verdict = truth[static_cast<std::size_t>(first)];
+      break;
+    }
+    case Filter::Op::kCount:
+      answer.kind = Answer::Kind::kNumber;
+      answer.value.exact = answer.holding;
+      answer.value.lower = answer.value.upper = answer.holding;
+      break;
+    default:
+      fail(filter.range, "the filter '" + filter_name(filter.op) +
+                             "' reads numbers; the property here is a state formula");
+  }
+  answer.method = method_.empty() ? "exact: a state formula" : method_;
+  return answer;
+}
+
+modelcheck::Result Evaluator::quantify(const Quantifier& q, bool want_scheduler) {
+  const Optimum optimum = optimum_of(q);
+  modelcheck::Options options = options_;
+  options.want_scheduler = want_scheduler && optimum != Optimum::kNone;
+  std::swap(options, options_);
+  modelcheck::Result result;
+  try {
+    result = q.reward ? reward(q, optimum) : probability(q, optimum);
+  } catch (...) {
+    std::swap(options, options_);
+    throw;
+  }
+  std::swap(options, options_);
+  method_ = result.method;
+  return result;
+}
+
+Optimum Evaluator::optimum_of(const Quantifier& q) {
+  const char* letter = q.reward ? "R" : "P";
+  if (model_.type == model::ModelType::kDtmc) {
+    if (q.optimum != Quantifier::Optimum::kNone) {
+      fail(q.head_range, std::string(letter) +
+                             (q.optimum == Quantifier::Optimum::kMin ? "min" : "max") +
+                             " asks for an optimum over choices, and a Markov chain has none: "
+                             "write " +
+                             letter + (q.bound ? "" : "=?") + " instead, as PRISM requires");
+    }
+    return Optimum::kNone;
+  }
+  if (q.optimum == Quantifier::Optimum::kMin) return Optimum::kMin;
+  if (q.optimum == Quantifier::Optimum::kMax) return Optimum::kMax;
+  switch (q.comparison) {
+    case Quantifier::Comparison::kQuery:
+      fail(q.head_range, std::string("in an MDP the value depends on the scheduler: write ") +
+                             letter + "min=? or " + letter + "max=?");
+    case Quantifier::Comparison::kGreater:
+    case Quantifier::Comparison::kGreaterEqual:
+      return Optimum::kMin;  // the bound must hold under every scheduler
+    case Quantifier::Comparison::kLess:
+    case Quantifier::Comparison::kLessEqual:
+      return Optimum::kMax;
+  }
+  return Optimum::kNone;
+}
+
+modelcheck::Result Evaluator::probability(const Quantifier& q, Optimum optimum) {
+  const PathFormula& path = q.path;
+  const modelcheck::Problem problem{*model_.contexts.front().transitions, model_.values, optimum};
+  const StateSet everywhere(model_.num_states(), true);
+  const std::optional<std::uint32_t> steps =
+      path.steps ? std::optional(steps_of(*path.steps, path.strict_bound)) : std::nullopt;
+  switch (path.kind) {
+    case PathFormula::Kind::kNext:
+      return modelcheck::next(problem, states_of(path.right), options_);
+    case PathFormula::Kind::kEventually:
+    case PathFormula::Kind::kUntil: {
+      const StateSet phi = path.left ? states_of(*path.left) : everywhere;
+      const StateSet psi = states_of(path.right);
+      return steps ? modelcheck::bounded_until(problem, phi, psi, *steps, options_)
+                   : modelcheck::until(problem, phi, psi, options_);
+    }
+    case PathFormula::Kind::kGlobally: {
+      // G phi is the complement of F !phi, under the opposite optimum.
+      const StateSet leave = complement(states_of(path.right));
+      const modelcheck::Problem turned{problem.matrix, problem.values, opposite(optimum)};
+      modelcheck::Result result =
+          steps ? modelcheck::bounded_until(turned, everywhere, leave, *steps, options_)
+                : modelcheck::until(turned, everywhere, leave, options_);
+      one_minus(result.values);
+      result.method += ", as 1 - P" + std::string(optimum_word(opposite(optimum))) + "(F !phi)";
+      return result;
+    }
+  }
+  return {};
+}
+
+modelcheck::Result Evaluator::reward(const Quantifier& q, Optimum optimum) {
+  const model::RewardTable& rewards = reward_table(q);
+  const modelcheck::Problem problem{*model_.contexts.front().transitions, model_.values, optimum};
+  const RewardFormula& formula = q.reward_formula;
+  switch (formula.kind) {
+    case RewardFormula::Kind::kReachability:
+      return modelcheck::reachability_reward(problem, rewards, states_of(*formula.target),
+                                             options_);
+    case RewardFormula::Kind::kCumulative:
+      return modelcheck::cumulative_reward(problem, rewards, steps_of(*formula.steps, false),
+                                           options_);
+    case RewardFormula::Kind::kInstantaneous:
+      return modelcheck::instantaneous_reward(problem, rewards, steps_of(*formula.steps, false),
+                                              options_);
+  }
+  return {};
+}
+
+const model::RewardTable& Evaluator::reward_table(const Quantifier& q) {
+  if (!q.reward_name) {
+    if (model_.contexts.empty()) fail(q.head_range, "the model has no reward structure");
+    return model_.contexts.front().rewards;
+  }
+  for (const model::Context& context : model_.contexts)
+    if (context.name == *q.reward_name) return context.rewards;
+  std::string known;
+  for (const model::Context& context : model_.contexts)
+    known += (known.empty() ? "" : ", ") + quoted(context.name);
+  fail(q.reward_name_range,
+       "the model has no reward structure " + quoted(*q.reward_name) + " (it has " + known + ")");
+}
+
+StateSet Evaluator::states_of(const ast::Expr& expr) {
+  prism::ExpressionLowering lowering(diagnostics_, options_.max_number_bits,
+                                     [this](const ast::Expr& name) { return resolve(name); });
+  const std::optional<model::Expression> lowered =
+      lowering.lower_as(expr, model::Type::Bool, "a state formula");
+  if (!lowered) throw Failed{};
+  const std::uint32_t n = model_.num_states();
+  StateSet set(n, false);
+  std::vector<std::int64_t> valuation(width_ + columns_.size());
+  try {
+    for (model::StateIndex s = 0; s < n; ++s) {
+      if (width_ > 0) {
+        const auto* row = model_.states.valuations.data() + std::size_t{s} * width_;
+        std::copy(row, row + width_, valuation.begin());
+      }
+      for (std::size_t c = 0; c < columns_.size(); ++c)
+        valuation[width_ + c] = columns_[c][s];
+      set[s] = model::evaluate_bool(*lowered, valuation);
+    }
+  } catch (const model::EvaluationError& e) {
+    fail(e.where, e.what());
+  }
+  return set;
+}
+
+std::optional<model::Expression> Evaluator::resolve(const ast::Expr& name) {
+  if (name.kind == ast::Expr::Kind::Name) {
+    const auto it = std::lower_bound(
+        names_.begin(), names_.end(), name.text,
+        [](const auto& entry, const std::string& key) { return entry.first < key; });
+    if (it != names_.end() && it->first == name.text) return it->second;
+    diagnostics_.error(name.range, "unknown name " + quoted(name.text) +
+                                       (names_.empty() ? " (this model's states are read through "
+                                                         "its labels, written in quotes: \"goal\")"
+                                                       : ""));
+    return std::nullopt;
+  }
+  const Extension& node = file_.extensions.at(std::stoul(name.text));
+  if (const auto* label = std::get_if<LabelReference>(&node))
+    return column_holds(label_slot(*label), name.range);
+  if (const auto* q = std::get_if<Quantifier>(&node)) {
+    if (q->comparison == Quantifier::Comparison::kQuery) {
+      diagnostics_.error(q->head_range,
+                         "a query (=?) gives a number, not a state formula: compare it with a "
+                         "bound instead, as in P>=0.5 [ ... ]");
+      return std::nullopt;
+    }
+    return column_holds(quantifier_slot(*q, name), name.range);
+  }
+  diagnostics_.error(name.range, "a filter can only be the whole property");
+  return std::nullopt;
+}
+
+std::uint32_t Evaluator::label_slot(const LabelReference& label) {
+  const std::uint32_t n = model_.num_states();
+  std::vector<std::int64_t> column(n, 0);
+  if (const auto index = model_.labels.find(label.name)) {
+    for (model::StateIndex s = 0; s < n; ++s) {
+      const auto held = model_.labels.of(s);
+      column[s] = std::find(held.begin(), held.end(), *index) != held.end() ? 1 : 0;
+    }
+  } else if (label.name == "init") {
+    for (const model::StateIndex s : model_.states.initial)
+      column[s] = 1;
+  } else {
+    std::string known;
+    for (const std::string& name : model_.labels.names)
+      known += (known.empty() ? "" : ", ") + ("\"" + name + "\"");
+    fail(label.range,
+         "unknown label \"" + label.name + "\"" +
+             (known.empty() ? " (the model has no labels)" : " (known: " + known + ")"));
+  }
+  columns_.push_back(std::move(column));
+  return width_ + static_cast<std::uint32_t>(columns_.size() - 1);
+}
+
+std::uint32_t Evaluator::quantifier_slot(const Quantifier& q, const ast::Expr& node) {
+  const StateSet set = holds(q);
+  static_cast<void>(node);
+  std::vector<std::int64_t> column(set.size());
+  for (std::size_t s = 0; s < set.size(); ++s)
+    column[s] = set[s] ? 1 : 0;
+  columns_.push_back(std::move(column));
+  return width_ + static_cast<std::uint32_t>(columns_.size() - 1);
+}
+
+StateSet Evaluator::holds(const Quantifier& q) {
+  const Rational bound = constant_number(*q.bound, "the bound");
+  if (!q.reward && (bound < 0 || bound > 1)) {
+    fail(q.bound->range, "a probability bound must lie in [0, 1], not " + describe(bound));
+  }
+  const double saved_precision = options_.precision;
+  for (int round = 0; round <= kRefinements; ++round) {
+    const modelcheck::Result result = quantify(q, false);
+    StateSet set(result.values.size(), false);
+    if (compare_with_bound(result.values, q.comparison, bound, options_.mode, set)) {
+      options_.precision = saved_precision;
+      return set;
+    }
+    options_.precision /= 1000;
+  }
+  options_.precision = saved_precision;
+  fail(q.range, "cannot decide the bound in sound mode: the value lies within " +
+                    std::to_string(saved_precision / 1e9) + " of it in some state; use --exact");
+}
+
+std::uint32_t Evaluator::steps_of(const ast::Expr& expr, bool strict) {
+  const Rational value = constant_number(expr, "a step bound");
+  if (value.get_den() != 1 || value < 0)
+    fail(expr.range, "a step bound must be a non-negative integer, not " + describe(value));
+  if (strict && value == 0) fail(expr.range, "'<0' steps leaves no path: write '<=0' or more");
+  const Rational steps = strict ? value - 1 : value;
+  if (steps > std::numeric_limits<std::uint32_t>::max() / 2)
+    fail(expr.range, "a step bound must be below 2^31, not " + describe(value));
+  return static_cast<std::uint32_t>(steps.get_num().get_ui());
+}
+
+Rational Evaluator::constant_number(const ast::Expr& expr, const std::string& what) {
+  prism::ExpressionLowering lowering(diagnostics_, options_.max_number_bits,
+                                     [this](const ast::Expr& name) { return resolve(name); });
+  const std::optional<model::Expression> lowered = lowering.lower_as(expr, model::Type::Real, what);
+  if (!lowered) throw Failed{};
+  if (lowered->depends_on_state() || !lowered->is_constant())
+    fail(expr.range, what + " must be a constant, not depend on the state");
+  return lowered->constant;
+}
+
+}  // namespace oasis::property
