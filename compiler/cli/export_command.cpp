@@ -1,11 +1,15 @@
-// `oasisc export FILE --format aut|prism -o OUT`: one context of a model as a file other
-// tools read (mCRL2's .aut, PRISM's explicit files), to cross-check our results with theirs.
+// `oasisc export FILE --format aut|prism|drn -o OUT`: a model as a file other tools read
+// (mCRL2's .aut, PRISM's explicit files, Storm's DRN), to cross-check our results with
+// theirs. .aut and PRISM files carry one context; DRN carries every context that shares the
+// transitions, one reward model each.
 
 #include <iostream>
 #include <memory>
+#include <vector>
 
 #include "cli/commands.hpp"
 #include "formats/aut_writer.hpp"
+#include "formats/drn_writer.hpp"
 #include "formats/explicit_writer.hpp"
 #include "support/error_report.hpp"
 
@@ -35,6 +39,21 @@ std::optional<std::size_t> choose_context(const model::ExplicitModel& model,
   return std::nullopt;
 }
 
+// DRN: the named context, else every context (which must share their transitions).
+bool write_drn(const model::ExplicitModel& model, const ExportOptions& options,
+               std::string& error) {
+  std::vector<std::size_t> contexts;
+  if (options.context.empty()) {
+    for (std::size_t c = 0; c < model.contexts.size(); ++c)
+      contexts.push_back(c);
+  } else {
+    const auto context = choose_context(model, options.context, options.file);
+    if (!context) return false;
+    contexts.push_back(*context);
+  }
+  return formats::write_drn_file(model, contexts, options.output, error);
+}
+
 int run_export(const ExportOptions& options) {
   if (options.format == "prism" && options.output == "-") {
     report_error(kProgram,
@@ -53,13 +72,18 @@ int run_export(const ExportOptions& options) {
                  "partitions it");
     return 1;
   }
-  const auto context = choose_context(*loaded->model, options.context, options.file);
-  if (!context) return 1;
   std::string error;
-  const bool written =
-      options.format == "aut"
-          ? formats::write_aut_file(*loaded->model, *context, options.output, error)
-          : formats::write_prism(*loaded->model, *context, options.output, error);
+  bool written = false;
+  if (options.format == "drn") {
+    written = write_drn(*loaded->model, options, error);
+    if (!written && error.empty()) return 1;  // a context that does not exist, reported
+  } else {
+    const auto context = choose_context(*loaded->model, options.context, options.file);
+    if (!context) return 1;
+    written = options.format == "aut"
+                  ? formats::write_aut_file(*loaded->model, *context, options.output, error)
+                  : formats::write_prism(*loaded->model, *context, options.output, error);
+  }
   if (!written) {
     report_error(options.output, error);
     return 1;
@@ -78,6 +102,8 @@ CommandRunner add_export_command(CLI::App& app) {
       "  aut    mCRL2's probabilistic Aldebaran format; rewards travel in the labels\n"
       "  prism  PRISM's explicit files: OUT.tra, OUT.lab, OUT.srew, and OUT.sta / OUT.trew\n"
       "         when the model has variables / state-action rewards\n"
+      "  drn    Storm's DRN: labels, and every context as a reward model (or the one\n"
+      "         chosen with --context)\n"
       "Probabilities are written exactly. Output appears whole or not at all. See\n"
       "docs/formats.md.\n\n"
       "Examples:\n"
@@ -85,17 +111,18 @@ CommandRunner add_export_command(CLI::App& app) {
       "  oasisc export model.aut --format prism -o model   # writes model.tra, model.lab, ...");
   command
       ->add_option("file", options->file,
-                   "Spec (.oasis), PRISM program (.pm, .nm, .prism) or model (.aut, .tra) file")
+                   "Spec (.oasis), PRISM program (.pm, .nm, .prism) or model (.aut, .tra, .drn) "
+                   "file")
       ->required();
   command->add_option("-c,--context", options->context,
-                      "Context to export (needed when the model has several)");
+                      "Context to export (needed for aut and prism when the model has several)");
   command->add_option("-f,--format", options->format, "Output format")
       ->required()
-      ->check(CLI::IsMember({"aut", "prism"}));
+      ->check(CLI::IsMember({"aut", "prism", "drn"}));
   command
       ->add_option("-o,--output", options->output,
-                   "Output file (aut; '-' for standard output) or base name (prism; '.tra' "
-                   "may be given)")
+                   "Output file (aut, drn; '-' for standard output) or base name (prism; "
+                   "'.tra' may be given)")
       ->required();
   add_common_options(*command, options->common);
   return [options] { return run_export(*options); };

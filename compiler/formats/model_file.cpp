@@ -6,6 +6,7 @@
 #include <system_error>
 
 #include "formats/aut_reader.hpp"
+#include "formats/drn_reader.hpp"
 #include "formats/explicit_reader.hpp"
 
 namespace oasis::formats {
@@ -64,9 +65,15 @@ std::optional<model::ExplicitModel> read_model_file(const std::string& path, Sou
     if (!file) return std::nullopt;
     return read_aut(*file, diagnostics, options);
   }
+  if (extension == ".drn") {
+    const std::optional<FileId> file = open_file(path, sources, diagnostics, options);
+    if (!file) return std::nullopt;
+    return read_drn(*file, diagnostics, options);
+  }
   if (extension == ".tra") return read_prism_file(path, sources, diagnostics, options);
   diagnostics.file_error(path, "unknown model file type '" + extension +
-                                   "': expected .aut (mCRL2) or .tra (PRISM explicit)");
+                                   "': expected .aut (mCRL2), .tra (PRISM or Storm explicit) or "
+                                   ".drn (Storm)");
   return std::nullopt;
 }
 

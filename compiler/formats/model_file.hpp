@@ -11,9 +11,10 @@
 
 namespace oasis::formats {
 
-// Reads `path` (.aut: mCRL2; .tra: PRISM, with its .sta/.lab/.srew/.trew siblings when
-// they exist). Files are memory-mapped and registered in `sources`; a file that cannot be
-// opened, or an unknown extension, is reported with diagnostics.file_error().
+// Reads `path` (.aut: mCRL2; .drn: Storm's DRN; .tra: PRISM or Storm, with its
+// .sta/.lab/.srew/.trew siblings when they exist). Files are memory-mapped and registered in
+// `sources`; a file that cannot be opened, or an unknown extension, is reported with
+// diagnostics.file_error().
 std::optional<model::ExplicitModel> read_model_file(const std::string& path, SourceManager& sources,
                                                     DiagnosticEngine& diagnostics,
                                                     const ReadOptions& options);
