@@ -129,7 +129,8 @@ Result run(const Problem& problem, const Induction& induction, const Options& op
   }
   Result result;
   result.values.resize(graph.num_states);
-  const std::string steps = std::to_string(induction.steps) + " steps of backward induction";
+  const std::string steps = std::to_string(induction.steps) +
+                            (induction.steps == 1 ? " step" : " steps") + " of backward induction";
   if (options.mode == Mode::kExact) {
     std::vector<Rational> x = exact_induction(graph, problem, induction, options, scheduler);
     for (model::StateIndex s = 0; s < graph.num_states; ++s) {

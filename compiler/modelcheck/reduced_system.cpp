@@ -110,19 +110,21 @@ std::vector<std::uint32_t> make_proper(const ReducedSystem& system,
       var_of_choice[c] = v;
   }
 
-  // Backwards from the variables that leave: a variable whose policy leads to a reached one
-  // keeps its choice; one that reaches it only by another choice switches to that choice.
+  // First backwards along the policy alone from the variables whose choice leaves: those keep
+  // their choice. Then, for the rest only, an attractor over all choices: a variable that
+  // reaches a reached one only by another choice switches to it.
   std::vector<bool> reached(system.num_vars, false);
   std::deque<std::uint32_t> queue;
   auto reach = [&](std::uint32_t v) {
     reached[v] = true;
     queue.push_back(v);
   };
-  auto spread = [&] {
+  auto spread = [&](bool may_switch) {
     while (!queue.empty()) {
       const std::uint32_t t = queue.front();
       queue.pop_front();
       for (const bool keep : {true, false}) {
+        if (!keep && !may_switch) break;
         for (std::uint32_t i = first_into[t]; i < first_into[t + 1]; ++i) {
           const std::uint32_t c = into_choice[i];
           const std::uint32_t v = var_of_choice[c];
@@ -136,9 +138,12 @@ std::vector<std::uint32_t> make_proper(const ReducedSystem& system,
   for (std::uint32_t v = 0; v < system.num_vars; ++v) {
     if (system.leaves[policy[v]]) reach(v);
   }
-  spread();
+  spread(false);
   for (std::uint32_t v = 0; v < system.num_vars; ++v) {
-    if (reached[v]) continue;
+    if (reached[v]) {
+      queue.push_back(v);
+      continue;
+    }
     for (std::uint32_t c = system.first_choice[v]; c < system.first_choice[v + 1]; ++c) {
       if (!system.leaves[c]) continue;
       policy[v] = c;
@@ -146,7 +151,7 @@ std::vector<std::uint32_t> make_proper(const ReducedSystem& system,
       break;
     }
   }
-  spread();
+  spread(true);
   for (std::uint32_t v = 0; v < system.num_vars; ++v) {
     if (!reached[v]) throw std::logic_error("model checker: a variable cannot reach a known state");
   }

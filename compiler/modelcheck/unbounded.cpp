@@ -185,7 +185,7 @@ Solved solve_sound_mode(const ReducedSystem& system, const RationalPool& values,
   solved.method =
       "interval iteration (Haddad and Monmege; Baier et al., CAV 2017) with outward "
       "rounding, " +
-      std::to_string(interval.sweeps) + " sweeps";
+      std::to_string(interval.sweeps) + (interval.sweeps == 1 ? " sweep" : " sweeps");
   if (rewards) {
     solved.method += ", upper start r_max * T with T an inductive bound on the expected steps";
   }

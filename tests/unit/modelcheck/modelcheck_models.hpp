@@ -56,11 +56,18 @@ inline CheckModel hand_model(std::uint32_t num_states, std::uint32_t num_actions
 
 inline CheckModel random_check_model(std::uint64_t seed, std::uint32_t max_states,
                                      std::uint32_t max_actions) {
-  model::ExplicitModel generated = random_mdp(seed, RandomMdpOptions{max_states, max_actions, 1});
+  model::ExplicitModel generated =
+      random_mdp(seed, RandomMdpOptions{max_states, max_actions, 2});  // context 0 is used
   CheckModel m;
   m.values = std::move(generated.values);
   m.matrix = *generated.contexts[0].transitions;
   m.rewards = std::move(generated.contexts[0].rewards);
+  // The generator moves reward between R(s) and R(s, a) with either sign; the reward operators
+  // need R(s, a) >= 0 everywhere, also where a state has no action and earns R(s) alone.
+  for (ValueId& r : m.rewards.state)
+    r = m.values.intern(abs(m.values[r]));
+  for (ValueId& r : m.rewards.choice)
+    r = m.values.intern(abs(m.values[r]));
   return m;
 }
 
