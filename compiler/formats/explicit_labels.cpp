@@ -1,9 +1,17 @@
 // The .lab file: its labels are the model's atomic propositions, and "init" gives the initial
-// states.
+// states. PRISM's form, and Storm's (AtomicPropositionLabelingParser), told apart by the
+// first line:
 //
-//   0="init" 1="deadlock" 2="done"
-//   0: 0
-//   4: 1 2
+//   0="init" 1="deadlock" 2="done"          #DECLARATION
+//   0: 0                                    init deadlock done
+//   4: 1 2                                  #END
+//                                           0 init
+//                                           4 deadlock done
+//
+// In Storm's form the names are blank-separated words between #DECLARATION and #END (on any
+// number of lines), and the states are listed in increasing order, each once.
+
+#include <unordered_map>
 
 #include "formats/explicit_parts.hpp"
 #include "support/text.hpp"
@@ -19,11 +27,18 @@ class LabelsReader {
 
   bool read(bool& found, model::StateLabels& labels) {
     const std::size_t errors = scan_.diagnostics().error_count();
-    if (!read_names()) return false;
+    scan_.skip_blank_lines();
+    scan_.skip_blanks();
+    const bool storm = scan_.rest_of_line().starts_with("#DECLARATION");
+    if (!(storm ? read_declaration() : read_names())) return false;
     found = init_ != kNone;
     model::StateLabelsBuilder builder(names_);
     while (scan_.next_line() && !scan_.diagnostics().should_stop()) {
-      read_state(builder);
+      if (storm) {
+        read_storm_state(builder);
+      } else {
+        read_state(builder);
+      }
       scan_.skip_line();
     }
     labels = builder.finish(num_states_);
@@ -59,6 +74,32 @@ class LabelsReader {
       scan_.seek(scan_.position() + close + 1);
       ++count_;
       scan_.skip_blanks();
+    }
+    scan_.skip_line();
+    return true;
+  }
+
+  // Storm's "#DECLARATION name name ... #END".
+  bool read_declaration() {
+    const char* declaration = scan_.position();
+    scan_.skip_line();
+    for (;;) {
+      scan_.skip_blank_lines();
+      scan_.skip_blanks();
+      if (scan_.at_end()) {
+        scan_.error_at(declaration, 12, "'#DECLARATION' without its '#END'");
+        return false;
+      }
+      const char* token = scan_.position();
+      const std::string_view name = scan_.read_word();
+      if (name == "#END") break;
+      if (!acceptable_name(name, token)) return false;
+      if (name == "init") init_ = count_;
+      indices_.emplace(std::string(name), count_);
+      names_.emplace_back(name);
+      ++count_;
+      scan_.skip_blanks();
+      if (scan_.at_line_end()) scan_.skip_line();
     }
     scan_.skip_line();
     return true;
@@ -110,7 +151,38 @@ class LabelsReader {
     }
   }
 
+  // Storm's "STATE name name ...", states in increasing order.
+  void read_storm_state(model::StateLabelsBuilder& builder) {
+    const char* token = scan_.position();
+    model::StateIndex state = 0;
+    if (!scan_.read_state(num_states_, "a state index", state)) return;
+    if (any_state_ && state <= last_state_) {
+      scan_.error_at(token, 1,
+                     "state " + std::to_string(state) + " after state " +
+                         std::to_string(last_state_) +
+                         ": Storm's labels list each state once, in increasing order");
+      return;
+    }
+    any_state_ = true;
+    last_state_ = state;
+    for (scan_.skip_blanks(); !scan_.at_line_end(); scan_.skip_blanks()) {
+      const char* at = scan_.position();
+      const std::string_view name = scan_.read_word();
+      const auto found = indices_.find(std::string(name));
+      if (found == indices_.end()) {
+        scan_.error_at(at, name.size(),
+                       "label " + quoted(name) + " is not declared between #DECLARATION and #END");
+        return;
+      }
+      if (found->second == init_) initial_.push_back(state);
+      builder.add(state, found->second);
+    }
+  }
+
   PrismScanner scan_;
+  std::unordered_map<std::string, std::uint32_t> indices_;  // Storm's form: name -> index
+  bool any_state_ = false;
+  model::StateIndex last_state_ = 0;
   std::uint32_t num_states_;
   std::vector<model::StateIndex>& initial_;
   std::uint32_t count_ = 0;

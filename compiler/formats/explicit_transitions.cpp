@@ -5,12 +5,17 @@
 //   - - INITIAL -          (optional; PRISM writes these for some model types)
 //   SOURCE CHOICE TARGET PROBABILITY [ACTION]                  SOURCE TARGET PROBABILITY [ACTION]
 //
+// Storm's explicit files (its AutoParser) start with the model type, `dtmc` or `mdp`, and have
+// no header: the states are 0 to the largest index a row names. Both forms are read, and a
+// type line before PRISM's header too.
+//
 // Rows of one (SOURCE, CHOICE) must be adjacent, as PRISM writes them; they form one
 // distribution whose probabilities must sum to 1 (or to within ReadOptions::tolerance). A
 // Markov chain is read as an MDP with one action, "[0]": each state's rows are its one
 // distribution, and their action labels, which a chain does not choose by, are read and set
 // aside.
 
+#include <algorithm>
 #include <unordered_map>
 
 #include "formats/exact_sum.hpp"
@@ -54,6 +59,10 @@ class TransitionsReader {
       scan_.error_here("empty transitions file: expected the header 'states choices transitions'");
       return false;
     }
+    if (is_letter(scan_.peek())) {
+      if (!read_type_line()) return false;
+      if (storm_) return count_storm_states();
+    }
     header_ = scan_.position();
     std::uint64_t numbers[4] = {};
     int count = 0;
@@ -84,6 +93,79 @@ class TransitionsReader {
     const std::uint64_t choices = result_.markov_chain ? numbers[0] : declared_choices_;
     result_.collector.reserve(std::min<std::uint64_t>(choices, reserve), reserve);
     scan_.skip_line();
+    return true;
+  }
+
+  static bool is_letter(char c) { return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z'); }
+
+  // Storm's first line, the model type. PRISM's header may follow it (one number fewer than
+  // a row); otherwise the file is in Storm's form.
+  bool read_type_line() {
+    const char* token = scan_.position();
+    std::string type(scan_.read_word());
+    for (char& c : type)
+      c = static_cast<char>(c >= 'A' && c <= 'Z' ? c - 'A' + 'a' : c);
+    if (type != "dtmc" && type != "mdp") {
+      const bool known = type == "ctmc" || type == "ma";
+      scan_.error_at(
+          token, type.size(),
+          known ? "Storm's explicit " + type + " files are not supported: oasis reads dtmc and mdp"
+                : std::string("expected the model type 'dtmc' or 'mdp' (Storm), or "
+                              "the header 'states choices transitions' (PRISM)"));
+      return false;
+    }
+    if (!scan_.expect_line_end("the model type")) return false;
+    result_.markov_chain = type == "dtmc";
+    scan_.skip_line();
+    if (!scan_.next_line()) {
+      scan_.error_here("no transitions after the model type");
+      return false;
+    }
+    storm_ = count_fields(scan_.rest_of_line()) != (result_.markov_chain ? 2 : 3);
+    return true;
+  }
+
+  static int count_fields(std::string_view line) {
+    int fields = 0;
+    bool in_field = false;
+    for (const char c : line) {
+      const bool blank = TextScanner::is_blank(c);
+      if (!blank && !in_field) ++fields;
+      in_field = !blank;
+    }
+    return fields;
+  }
+
+  // Storm's form has no header: the states are 0 to the largest state a row names. Rows
+  // that do not parse are skipped here and reported by read_row().
+  bool count_storm_states() {
+    header_ = scan_.position();
+    std::uint64_t largest = 0;
+    bool any = false;
+    while (scan_.next_line()) {
+      for (int field = 0; field < (result_.markov_chain ? 2 : 3); ++field) {
+        const char* token = scan_.position();
+        const Natural number = scan_.read_natural();
+        if (number.empty()) break;
+        scan_.skip_blanks();
+        if (!result_.markov_chain && field == 1) continue;  // the choice index
+        if (number.overflow || number.value >= options_.max_states) {
+          scan_.error_at(token, number.text.size(),
+                         "state " + std::string(number.text) + " is beyond the limit of " +
+                             std::to_string(options_.max_states) + " states");
+          return false;
+        }
+        largest = std::max<std::uint64_t>(largest, number.value);
+        any = true;
+      }
+      scan_.skip_line();
+    }
+    scan_.seek(header_);
+    if (!any) {
+      scan_.error_here("no transitions after the model type");
+      return false;
+    }
+    result_.num_states = static_cast<std::uint32_t>(largest + 1);
     return true;
   }
 
@@ -199,7 +281,7 @@ class TransitionsReader {
   }
 
   void check_counts() {
-    if (scan_.diagnostics().should_stop()) return;
+    if (scan_.diagnostics().should_stop() || storm_) return;
     if (!result_.markov_chain && choices_ != declared_choices_) {
       scan_.error_at(header_, 1,
                      "the header declares " + std::to_string(declared_choices_) +
@@ -220,6 +302,7 @@ class TransitionsReader {
   std::unordered_map<std::string, model::ActionIndex> action_indices_;
 
   const char* header_ = nullptr;
+  bool storm_ = false;  // Storm's form: a model type line and no header
   std::uint64_t declared_choices_ = 0;
   std::uint64_t declared_rows_ = 0;
   std::uint64_t choices_ = 0;

@@ -68,4 +68,16 @@ TEST_F(ErrorsOnce, AnAutReaderError) {
   expect_once(file, "bad.aut:2:");
 }
 
+TEST_F(ErrorsOnce, ADrnReaderError) {
+  const std::string file =
+      write("bad.drn", "@type: DTMC\n@nr_states\n1\n@model\nstate 0 init\n\taction 0\n\t\t0 : 2\n");
+  expect_once(file, "bad.drn:6:2: error: probabilities of state 0, choice 0 sum to 2");
+}
+
+TEST_F(ErrorsOnce, AStormLabelsError) {
+  const std::string file = write("storm.tra", "dtmc\n0 0 1\n");
+  (void)write("storm.lab", "#DECLARATION\ninit\n#END\n0 init goal\n");
+  expect_once(file, "storm.lab:4:8: error: label 'goal'");
+}
+
 }  // namespace
