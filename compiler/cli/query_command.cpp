@@ -21,6 +21,9 @@ namespace {
 // Models up to this many states are answered exactly when no mode is asked for; past it, or
 // when the exact solve refuses the model, soundly.
 constexpr std::uint32_t kAutoExactStates = 100'000;
+// An exact answer is printed as its fraction up to this many characters; past it, in
+// scientific form with its length (a fraction of megabytes helps nobody on a terminal).
+constexpr std::size_t kMaxPrintedFraction = 2000;
 
 struct QueryOptions {
   std::string model;
@@ -83,7 +86,7 @@ std::string value_text(const modelcheck::Value& value, modelcheck::Mode mode) {
   if (value.infinite) return " = infinity";
   if (mode == modelcheck::Mode::kExact) {
     const std::string exact = to_string(value.exact);
-    if (exact.size() > kMaxDescribedDigits) return " = " + describe(value.exact);
+    if (exact.size() > kMaxPrintedFraction) return " = " + describe(value.exact);
     if (value.exact.get_den() == 1) return " = " + exact;
     std::ostringstream approx;
     approx.precision(10);
