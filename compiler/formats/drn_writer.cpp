@@ -46,8 +46,8 @@ std::optional<std::string> label_problem(const std::string& name) {
 }
 
 std::optional<std::string> reward_model_problem(const std::string& name) {
-  if (name.empty() || has_blank(name) || name.starts_with("//") || name.starts_with('@'))
-    return "context name '" + name + "' cannot name a reward model (empty, blanks, '//' or '@')";
+  if (name.empty() || has_blank(name))
+    return "context name '" + name + "' cannot name a reward model (it is empty or has blanks)";
   return std::nullopt;
 }
 

@@ -1,6 +1,6 @@
 // Storm's explicit files (issue 39): a .tra that starts with its model type (`dtmc`, `mdp`)
 // and has no header, and a .lab in the #DECLARATION ... #END form. Knuth and Yao's die, laid
-// out as Storm's die.tra/die.lab are, gives Storm's counts; PRISM's header after a type line
+// out as Storm's die files are, gives Storm's counts; PRISM's header after a type line
 // is read too; bad files get located errors.
 
 #include <filesystem>
