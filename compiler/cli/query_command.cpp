@@ -7,10 +7,14 @@
 #include <set>
 #include <sstream>
 
+#include <nlohmann/json.hpp>
+
 #include "cli/commands.hpp"
 #include "command_line/number_options.hpp"
 #include "property/evaluator.hpp"
 #include "property/parser.hpp"
+#include "support/atomic_file.hpp"
+#include "support/error_report.hpp"
 #include "support/input_validation.hpp"
 #include "support/mapped_file.hpp"
 #include "support/text.hpp"
@@ -31,6 +35,8 @@ struct QueryOptions {
   std::vector<std::string> prop_files;  // --props files
   std::string mode = "auto";
   double precision = 1e-6;
+  bool bisimulation = false;
+  std::string scheduler_path;  // --scheduler
   CommonOptions common;
 };
 
@@ -108,6 +114,45 @@ std::string truth_text(const property::Answer& answer, const model::ExplicitMode
   return text;
 }
 
+// One property's scheduler as JSON: per state, its name and the action it takes (null where
+// any action will do); a step-bounded property's per step.
+nlohmann::json scheduler_json(const property::Property& property,
+                              const modelcheck::Scheduler& scheduler,
+                              const model::ExplicitModel& model) {
+  const auto actions = [&](const std::vector<model::ActionIndex>& by_state) {
+    nlohmann::json list = nlohmann::json::array();
+    for (model::StateIndex s = 0; s < by_state.size(); ++s) {
+      const model::ActionIndex a = by_state[s];
+      list.push_back({{"state", model.states.name(s)},
+                      {"action", a < model.num_actions() ? nlohmann::json(model.actions[a])
+                                                         : nlohmann::json(nullptr)}});
+    }
+    return list;
+  };
+  nlohmann::json entry = {{"property", property.text}};
+  if (property.name) entry["name"] = *property.name;
+  if (!scheduler.action.empty()) {
+    entry["memoryless"] = actions(scheduler.action);
+  } else {
+    nlohmann::json steps = nlohmann::json::array();
+    for (const auto& step : scheduler.by_step)
+      steps.push_back(actions(step));
+    entry["by_step"] = std::move(steps);
+  }
+  return entry;
+}
+
+bool write_schedulers(const std::string& path, const nlohmann::json& schedulers) {
+  AtomicFile file;
+  std::string error;
+  if (file.open(path, error)) {
+    file.append(nlohmann::json{{"schedulers", schedulers}}.dump(1) + "\n");
+    if (file.commit(error)) return true;
+  }
+  report_error(kProgram, error);
+  return false;
+}
+
 void print_answer(const property::Property& property, const property::Answer& answer,
                   const model::ExplicitModel& model, modelcheck::Mode mode) {
   std::cout << (property.name ? "\"" + *property.name + "\": " : "") << property.text;
@@ -141,10 +186,13 @@ int run_query(const QueryOptions& options) {
   const bool exact =
       options.mode == "exact" || (options.mode == "auto" && model.num_states() <= kAutoExactStates);
   engine.mode = exact ? modelcheck::Mode::kExact : modelcheck::Mode::kSound;
+  engine.want_scheduler = !options.scheduler_path.empty();
   bool all_answered = true;
+  nlohmann::json schedulers = nlohmann::json::array();
   for (const property::PropertiesFile& file : files) {
     property::Evaluator evaluator(model, loaded->names, file, diagnostics, engine);
     evaluator.allow_sound_fallback(options.mode == "auto");
+    evaluator.use_bisimulation(options.bisimulation);
     for (const property::Property& property : file.properties) {
       const std::optional<property::Answer> answer = evaluator.answer(property);
       if (!answer) {
@@ -153,8 +201,12 @@ int run_query(const QueryOptions& options) {
         continue;
       }
       print_answer(property, *answer, model, answer->mode);
+      if (answer->scheduler)
+        schedulers.push_back(scheduler_json(property, *answer->scheduler, model));
     }
   }
+  if (!options.scheduler_path.empty() && !write_schedulers(options.scheduler_path, schedulers))
+    return 1;
   return all_answered ? 0 : 1;
 }
 
@@ -194,6 +246,12 @@ CommandRunner add_query_command(CLI::App& app) {
                    "Sound mode: the widest interval an answer may have")
       ->capture_default_str()
       ->check(CLI::Range(1e-15, 0.5));
+  command->add_flag("--bisimulation", options->bisimulation,
+                    "Answer each operator on the coarsest bisimulation quotient that respects its "
+                    "state sets and rewards, and lift the values back (as Storm's --bisimulation)");
+  command->add_option("--scheduler", options->scheduler_path,
+                      "Write the optimal scheduler of each Pmin/Pmax/Rmin/Rmax property to this "
+                      "JSON file (per state, the action taken; re-checked on the model first)");
   add_common_options(*command, options->common);
   command->callback([command, options] {
     if (options->props.empty() && options->prop_files.empty())

@@ -3,9 +3,11 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <stdexcept>
 #include <string>
 
 #include "prism/expression_lowering.hpp"
+#include "property/quotient_solve.hpp"
 #include "property/value_reduction.hpp"
 #include "support/text.hpp"
 
@@ -237,29 +239,31 @@ Optimum Evaluator::optimum_of(const Quantifier& q) {
 
 modelcheck::Result Evaluator::probability(const Quantifier& q, Optimum optimum) {
   const PathFormula& path = q.path;
-  const modelcheck::Problem problem{*model_.contexts.front().transitions, model_.values, optimum};
-  const StateSet everywhere(model_.num_states(), true);
+  EngineCall call;
+  call.optimum = optimum;
   const std::optional<std::uint32_t> steps =
       path.steps ? std::optional(steps_of(*path.steps, path.strict_bound)) : std::nullopt;
+  call.steps = steps.value_or(0);
   switch (path.kind) {
     case PathFormula::Kind::kNext:
-      return modelcheck::next(problem, states_of(path.right), options_);
+      call.op = EngineCall::Op::kNext;
+      call.psi = states_of(path.right);
+      return solve(call);
     case PathFormula::Kind::kEventually:
-    case PathFormula::Kind::kUntil: {
-      const StateSet phi = path.left ? states_of(*path.left) : everywhere;
-      const StateSet psi = states_of(path.right);
-      return steps ? modelcheck::bounded_until(problem, phi, psi, *steps, options_)
-                   : modelcheck::until(problem, phi, psi, options_);
-    }
+    case PathFormula::Kind::kUntil:
+      call.op = steps ? EngineCall::Op::kBoundedUntil : EngineCall::Op::kUntil;
+      call.phi = path.left ? states_of(*path.left) : StateSet(model_.num_states(), true);
+      call.psi = states_of(path.right);
+      return solve(call);
     case PathFormula::Kind::kGlobally: {
       // G phi is the complement of F !phi, under the opposite optimum.
-      const StateSet leave = complement(states_of(path.right));
-      const modelcheck::Problem turned{problem.matrix, problem.values, opposite(optimum)};
-      modelcheck::Result result =
-          steps ? modelcheck::bounded_until(turned, everywhere, leave, *steps, options_)
-                : modelcheck::until(turned, everywhere, leave, options_);
+      call.op = steps ? EngineCall::Op::kBoundedUntil : EngineCall::Op::kUntil;
+      call.optimum = opposite(optimum);
+      call.phi = StateSet(model_.num_states(), true);
+      call.psi = complement(states_of(path.right));
+      modelcheck::Result result = solve(call);
       one_minus(result.values);
-      result.method += ", as 1 - P" + std::string(optimum_word(opposite(optimum))) + "(F !phi)";
+      result.method += ", as 1 - P" + std::string(optimum_word(call.optimum)) + "(F !phi)";
       return result;
     }
   }
@@ -267,21 +271,42 @@ modelcheck::Result Evaluator::probability(const Quantifier& q, Optimum optimum) 
 }
 
 modelcheck::Result Evaluator::reward(const Quantifier& q, Optimum optimum) {
-  const model::RewardTable& rewards = reward_table(q);
-  const modelcheck::Problem problem{*model_.contexts.front().transitions, model_.values, optimum};
+  EngineCall call;
+  call.optimum = optimum;
+  call.rewards = &reward_table(q);
   const RewardFormula& formula = q.reward_formula;
   switch (formula.kind) {
     case RewardFormula::Kind::kReachability:
-      return modelcheck::reachability_reward(problem, rewards, states_of(*formula.target),
-                                             options_);
+      call.op = EngineCall::Op::kReachabilityReward;
+      call.psi = states_of(*formula.target);
+      break;
     case RewardFormula::Kind::kCumulative:
-      return modelcheck::cumulative_reward(problem, rewards, steps_of(*formula.steps, false),
-                                           options_);
+      call.op = EngineCall::Op::kCumulative;
+      call.steps = steps_of(*formula.steps, false);
+      break;
     case RewardFormula::Kind::kInstantaneous:
-      return modelcheck::instantaneous_reward(problem, rewards, steps_of(*formula.steps, false),
-                                              options_);
+      call.op = EngineCall::Op::kInstantaneous;
+      call.steps = steps_of(*formula.steps, false);
+      break;
   }
-  return {};
+  return solve(call);
+}
+
+modelcheck::Result Evaluator::solve(const EngineCall& call) {
+  modelcheck::Result result;
+  if (bisimulation_) {
+    QuotientSize size;
+    result = solve_on_quotient(model_, call, options_, size);
+  } else {
+    result = run(call, *model_.contexts.front().transitions, model_.values, call.rewards, options_);
+  }
+  if (result.scheduler && !result.scheduler->action.empty()) {
+    // The scheduler is checked on the model itself, whether it was computed there or lifted.
+    if (!scheduler_reproduces(model_, call, result, options_))
+      throw std::logic_error("the optimal scheduler does not reproduce its values on the model");
+    result.method += "; its scheduler re-checked on the model";
+  }
+  return result;
 }
 
 const model::RewardTable& Evaluator::reward_table(const Quantifier& q) {

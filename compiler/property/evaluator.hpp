@@ -18,6 +18,7 @@
 #include "model/explicit_model.hpp"
 #include "model/expression.hpp"
 #include "modelcheck/engine.hpp"
+#include "property/engine_call.hpp"
 #include "property/property.hpp"
 
 namespace oasis::property {
@@ -55,6 +56,9 @@ class Evaluator {
   // In exact mode, a property whose exact solve is refused (modelcheck::ExactLimitExceeded) is
   // answered soundly instead, with a note, rather than reported as an error.
   void allow_sound_fallback(bool allow) { sound_fallback_ = allow; }
+  // Every engine call is solved on the coarsest bisimulation quotient that respects its state
+  // sets and rewards, and lifted back (quotient_solve.hpp).
+  void use_bisimulation(bool use) { bisimulation_ = use; }
 
  private:
   struct Failed {};  // raised after an error was reported
@@ -64,6 +68,7 @@ class Evaluator {
   modelcheck::Result quantify(const Quantifier& q, bool want_scheduler);
   modelcheck::Result probability(const Quantifier& q, modelcheck::Optimum optimum);
   modelcheck::Result reward(const Quantifier& q, modelcheck::Optimum optimum);
+  modelcheck::Result solve(const EngineCall& call);
   modelcheck::Optimum optimum_of(const Quantifier& q);
   modelcheck::StateSet states_of(const prism::ast::Expr& expr);
   modelcheck::StateSet holds(const Quantifier& q);
@@ -86,6 +91,7 @@ class Evaluator {
   std::vector<std::vector<std::int64_t>> columns_;
   std::string method_;  // the last engine call's, for a state formula's answer
   bool sound_fallback_ = false;
+  bool bisimulation_ = false;
 };
 
 }  // namespace oasis::property

@@ -53,8 +53,9 @@ struct Answers {
 };
 
 Answers query(const char* program, const std::string& properties,
-              modelcheck::Mode mode = modelcheck::Mode::kExact,
-              const std::string& rewards = "all") {
+              modelcheck::Mode mode = modelcheck::Mode::kExact, bool bisimulation = false,
+              bool schedulers = false) {
+  const std::string rewards = "all";
   SourceManager sources;
   std::ostringstream out;
   DiagnosticEngine diagnostics(sources, out);
@@ -70,7 +71,9 @@ Answers query(const char* program, const std::string& properties,
   const PropertiesFile file = parse_file(sources.add("--prop", properties), diagnostics);
   modelcheck::Options options;
   options.mode = mode;
+  options.want_scheduler = schedulers;
   Evaluator evaluator(*model, names, file, diagnostics, options);
+  evaluator.use_bisimulation(bisimulation);
   for (const Property& property : file.properties)
     run.answers.push_back(evaluator.answer(property));
   run.messages = out.str();
@@ -146,6 +149,35 @@ TEST(Properties, AnMdpIsOptimisedBothWays) {
   EXPECT_EQ(exact(run, 3), 2);  // go at once
   ASSERT_TRUE(run.answers.at(4)) << run.messages;
   EXPECT_TRUE(run.answers[4]->value.infinite);  // staying forever never reaches x>0
+}
+
+TEST(Properties, TheQuotientGivesTheModelsAnswersRationalForRational) {
+  const std::string die =
+      "P=? [F s=7&d=1]; P=? [G d!=2]; P=? [F<=3 d=1]; P=? [X s=1]; R{\"flips\"}=? [F s=7];"
+      "R=? [C<=2]; R=? [I=3]; P>=1/6 [F \"one\"]";
+  const std::string choice =
+      "Pmax=? [F \"goal\"]; Pmin=? [F \"goal\"]; R{\"cost\"}min=? [F x>0]; Pmax=? [F<=1 x=1]";
+  for (const auto& [program, properties] : {std::pair{kDie, die}, std::pair{kChoice, choice}}) {
+    const Answers plain = query(program, properties);
+    const Answers reduced = query(program, properties, modelcheck::Mode::kExact, true, true);
+    ASSERT_EQ(plain.answers.size(), reduced.answers.size()) << reduced.messages;
+    for (std::size_t i = 0; i < plain.answers.size(); ++i) {
+      ASSERT_TRUE(plain.answers[i] && reduced.answers[i]) << reduced.messages;
+      EXPECT_EQ(plain.answers[i]->value.exact, reduced.answers[i]->value.exact) << i;
+      EXPECT_EQ(plain.answers[i]->verdict, reduced.answers[i]->verdict) << i;
+      EXPECT_NE(reduced.answers[i]->method.find("on the bisimulation quotient"), std::string::npos);
+    }
+  }
+}
+
+TEST(Properties, SchedulersAreReturnedAndRecheckedOnTheModel) {
+  const Answers run = query(kChoice, "Pmax=? [F \"goal\"]", modelcheck::Mode::kExact, true, true);
+  ASSERT_EQ(run.answers.size(), 1u);
+  ASSERT_TRUE(run.answers[0] && run.answers[0]->scheduler) << run.messages;
+  // In x=0 the maximum takes `go`: `stay` keeps the value 1/3 only by never reaching goal.
+  const auto& actions = run.answers[0]->scheduler->action;
+  ASSERT_FALSE(actions.empty());
+  EXPECT_NE(run.answers[0]->method.find("re-checked on the model"), std::string::npos);
 }
 
 // The message and the place of the first error for one property.
