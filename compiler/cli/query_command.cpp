@@ -36,7 +36,8 @@ struct QueryOptions {
   std::string mode = "auto";
   double precision = 1e-6;
   bool bisimulation = false;
-  std::string scheduler_path;  // --scheduler
+  bool whole_fractions = false;  // --whole-fractions
+  std::string scheduler_path;    // --scheduler
   CommonOptions common;
 };
 
@@ -88,11 +89,11 @@ std::string shortest(double value) {
   return {buffer, end};
 }
 
-std::string value_text(const modelcheck::Value& value, modelcheck::Mode mode) {
+std::string value_text(const modelcheck::Value& value, modelcheck::Mode mode, bool whole) {
   if (value.infinite) return " = infinity";
   if (mode == modelcheck::Mode::kExact) {
     const std::string exact = to_string(value.exact);
-    if (exact.size() > kMaxPrintedFraction) return " = " + describe(value.exact);
+    if (!whole && exact.size() > kMaxPrintedFraction) return " = " + describe(value.exact);
     if (value.exact.get_den() == 1) return " = " + exact;
     std::ostringstream approx;
     approx.precision(10);
@@ -154,10 +155,10 @@ bool write_schedulers(const std::string& path, const nlohmann::json& schedulers)
 }
 
 void print_answer(const property::Property& property, const property::Answer& answer,
-                  const model::ExplicitModel& model, modelcheck::Mode mode) {
+                  const model::ExplicitModel& model, bool whole_fractions) {
   std::cout << (property.name ? "\"" + *property.name + "\": " : "") << property.text;
   if (answer.kind == property::Answer::Kind::kNumber) {
-    std::cout << value_text(answer.value, mode);
+    std::cout << value_text(answer.value, answer.mode, whole_fractions);
   } else {
     std::cout << truth_text(answer, model);
   }
@@ -200,7 +201,7 @@ int run_query(const QueryOptions& options) {
         if (diagnostics.should_stop()) return 1;
         continue;
       }
-      print_answer(property, *answer, model, answer->mode);
+      print_answer(property, *answer, model, options.whole_fractions);
       if (answer->scheduler)
         schedulers.push_back(scheduler_json(property, *answer->scheduler, model));
     }
@@ -249,6 +250,9 @@ CommandRunner add_query_command(CLI::App& app) {
   command->add_flag("--bisimulation", options->bisimulation,
                     "Answer each operator on the coarsest bisimulation quotient that respects its "
                     "state sets and rewards, and lift the values back (as Storm's --bisimulation)");
+  command->add_flag("--whole-fractions", options->whole_fractions,
+                    "Print exact answers whole, however long (by default a fraction of more "
+                    "than 2000 characters is shown in scientific form with its length)");
   command->add_option("--scheduler", options->scheduler_path,
                       "Write the optimal scheduler of each Pmin/Pmax/Rmin/Rmax property to this "
                       "JSON file (per state, the action taken; re-checked on the model first)");

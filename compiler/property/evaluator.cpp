@@ -425,8 +425,10 @@ StateSet Evaluator::holds(const Quantifier& q) {
     options_.precision /= 1000;
   }
   options_.precision = saved_precision;
-  fail(q.range, "cannot decide the bound in sound mode: the value lies within " +
-                    std::to_string(saved_precision / 1e9) + " of it in some state; use --exact");
+  fail(q.range,
+       "cannot decide the bound in sound mode: in some state the value is still on "
+       "both sides of it at precision " +
+           scientific(Rational(saved_precision / 1e9)) + "; use --mode exact");
 }
 
 std::uint32_t Evaluator::steps_of(const ast::Expr& expr, bool strict) {

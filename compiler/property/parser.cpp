@@ -15,10 +15,6 @@ using prism::Token;
 using prism::TokenKind;
 namespace ast = prism::ast;
 
-// PRISM reserves these in properties: they cannot name a variable that a property reads.
-constexpr std::array<std::string_view, 11> kOperatorWords = {
-    "P", "Pmin", "Pmax", "R", "Rmin", "Rmax", "F", "G", "X", "U", "filter"};
-
 class PropertyParser : public prism::ExpressionParser {
  public:
   PropertyParser(const std::vector<Token>& tokens, DiagnosticEngine& diagnostics)

@@ -125,33 +125,30 @@ bool reduce_values(Filter::Op op, const std::vector<Value>& values,
 
 bool compare_with_bound(const std::vector<Value>& values, Quantifier::Comparison comparison,
                         const Rational& bound, Mode mode, modelcheck::StateSet& holds) {
-  const double b = bound.get_d();
-  // The double nearest the bound may be off by half an ulp: an interval decides only when it
-  // clears the bound by more than that.
-  const double b_low = down(b);
-  const double b_high = up(b);
+  const bool greater = comparison == Quantifier::Comparison::kGreater ||
+                       comparison == Quantifier::Comparison::kGreaterEqual;
+  const bool strict =
+      comparison == Quantifier::Comparison::kGreater || comparison == Quantifier::Comparison::kLess;
+  // Whether x ~ bound, exactly (a double is a rational: its comparison is exact too).
+  const auto satisfies = [&](const Rational& x) {
+    const int order = cmp(x, bound);
+    return greater ? (strict ? order > 0 : order >= 0) : (strict ? order < 0 : order <= 0);
+  };
   for (std::size_t s = 0; s < values.size(); ++s) {
     const Value& v = values[s];
-    const bool greater = comparison == Quantifier::Comparison::kGreater ||
-                         comparison == Quantifier::Comparison::kGreaterEqual;
-    const bool strict = comparison == Quantifier::Comparison::kGreater ||
-                        comparison == Quantifier::Comparison::kLess;
     if (v.infinite) {
       holds[s] = greater;
       continue;
     }
     if (mode == Mode::kExact) {
-      const int order = cmp(v.exact, bound);
-      holds[s] = greater ? (strict ? order > 0 : order >= 0) : (strict ? order < 0 : order <= 0);
+      holds[s] = satisfies(v.exact);
       continue;
     }
-    if (v.lower > b_high) {
-      holds[s] = greater;
-    } else if (v.upper < b_low) {
-      holds[s] = !greater;
-    } else {
-      return false;
-    }
+    // The true value lies in [lower, upper]: the bound is decided when both ends agree.
+    const bool at_lower = satisfies(Rational(v.lower));
+    const bool at_upper = satisfies(Rational(v.upper));
+    if (at_lower != at_upper) return false;
+    holds[s] = at_lower;
   }
   return true;
 }
