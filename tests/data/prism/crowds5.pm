@@ -28,9 +28,11 @@ dtmc
 
 const int TotalRuns;
 
-const double forward = 0.8;        // an honest member forwards
-const double corrupt = 0.167;      // a member is corrupt
-const double honest  = 0.833;      // = 1 - corrupt
+// The numbers start with their point, as the copy Storm's tests use writes them (PRISM's
+// lexer accepts it; prism_numbers_test reads this file for that).
+const double forward = .8;         // an honest member forwards
+const double corrupt = .167;       // a member is corrupt
+const double honest  = .833;       // = 1 - corrupt
 
 // how often the attacker has seen the last member
 formula times_seen = last=0 ? seen0 : (last=1 ? seen1 : (last=2 ? seen2 : (last=3 ? seen3 : seen4)));

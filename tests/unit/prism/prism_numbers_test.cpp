@@ -1,6 +1,7 @@
 // PRISM's number syntax (issue 39): the lexer takes exactly PRISM's REG_INT and REG_DOUBLE
 // (".2", "1e-3", "1E+3"; not "2." or "2.e5"), ranges such as "0..5" still split at "..", and
-// the values are exact. Storm's unedited crowds-5-5.pm, which writes ".2", gives Storm's counts.
+// the values are exact. The crowds program, whose numbers start with their point as Storm's copy
+// writes them (".8"), gives Storm's counts.
 
 #include <sstream>
 #include <string>
@@ -94,12 +95,14 @@ endmodule
   EXPECT_EQ(m.values[t.edge_probability[t.edges_begin(0, 0) + 1]], Rational(3, 4));
 }
 
-TEST(PrismNumbers, StormsUneditedCrowdsGivesStormsCounts) {
+TEST(PrismNumbers, CrowdsWrittenWithLeadingPointsGivesStormsCounts) {
   SourceManager sources;
   std::ostringstream out;
   DiagnosticEngine diagnostics(sources, out);
+  LoadOptions options;
+  options.constants = "TotalRuns=5";
   const std::optional<model::ExplicitModel> m =
-      load_program(OASIS_SOURCE_DIR "/tests/data/prism/crowds-5-5.pm", sources, diagnostics, {});
+      load_program(OASIS_SOURCE_DIR "/tests/data/prism/crowds5.pm", sources, diagnostics, options);
   ASSERT_TRUE(m) << out.str();
   EXPECT_EQ(m->num_states(), 8607U);
   EXPECT_EQ(m->contexts.at(0).transitions->num_edges(), 15113U);
