@@ -146,7 +146,9 @@ Solved solve_exact_mode(const ReducedSystem& system, const RationalPool& values,
   solved.method = optimum == Optimum::kNone
                       ? "state elimination over GMP rationals"
                       : "policy iteration (" + std::to_string(exact.evaluations) +
-                            " exact policy evaluations by state elimination over GMP rationals)";
+                            (exact.evaluations == 1 ? " exact policy evaluation"
+                                                    : " exact policy evaluations") +
+                            " by state elimination over GMP rationals)";
   return solved;
 }
 
