@@ -1,6 +1,7 @@
 // `oasisc query MODEL --prop '...' [--props FILE]`: answer PRISM properties on a model, each
 // on one line, exactly (rationals) or with a sound interval (docs/properties.md).
 
+#include <algorithm>
 #include <charconv>
 #include <iostream>
 #include <memory>
@@ -25,6 +26,10 @@ namespace {
 // Models up to this many states are answered exactly when no mode is asked for; past it, or
 // when the exact solve refuses the model, soundly.
 constexpr std::uint32_t kAutoExactStates = 100'000;
+// In auto mode the exact solve also gives up once a number passes this many bits (and the
+// answer comes from the sound mode): numbers that long mean slow rational arithmetic, and a
+// model whose elimination grows them so far is answered sooner by interval iteration.
+constexpr std::size_t kAutoExactNumberBits = std::size_t{1} << 16;
 // An exact answer is printed as its fraction up to this many characters; past it, in
 // scientific form with its length (a fraction of megabytes helps nobody on a terminal).
 constexpr std::size_t kMaxPrintedFraction = 2000;
@@ -187,6 +192,8 @@ int run_query(const QueryOptions& options) {
   const bool exact =
       options.mode == "exact" || (options.mode == "auto" && model.num_states() <= kAutoExactStates);
   engine.mode = exact ? modelcheck::Mode::kExact : modelcheck::Mode::kSound;
+  if (options.mode == "auto")
+    engine.max_number_bits = std::min(engine.max_number_bits, kAutoExactNumberBits);
   engine.want_scheduler = !options.scheduler_path.empty();
   bool all_answered = true;
   nlohmann::json schedulers = nlohmann::json::array();
