@@ -116,16 +116,8 @@ class PropertyParser : public prism::ExpressionParser {
     const Token& head = advance();
     Quantifier q;
     q.optimum = optimum_of(head.text);
-    read_comparison(q, head);
-    q.head_range = span(head.range, tokens_[pos_ - 1].range);
-    nest();
-    expect(TokenKind::LeftBracket, "to open the path formula");
-    q.path = path_formula();
-    const Token& close = expect(TokenKind::RightBracket, "to close the path formula");
-    --depth_;
-    q.range = span(head.range, close.range);
-    const SourceRange range = q.range;
-    return extension(std::move(q), range);
+    return bracketed(std::move(q), head, "path formula",
+                     [this](Quantifier& node) { node.path = path_formula(); });
   }
 
   ast::Expr reward() {
@@ -147,12 +139,20 @@ class PropertyParser : public prism::ExpressionParser {
         (peek().text == "min" || peek().text == "max")) {
       q.optimum = advance().text == "min" ? Quantifier::Optimum::kMin : Quantifier::Optimum::kMax;
     }
+    return bracketed(std::move(q), head, "reward formula",
+                     [this](Quantifier& node) { node.reward_formula = reward_formula(); });
+  }
+
+  // The rest of an operator after its name: the comparison, then `[ inner ]`, which `read`
+  // parses into the node; the node spans from its name to the ']'.
+  template <typename ReadInner>
+  ast::Expr bracketed(Quantifier q, const Token& head, const std::string& inner, ReadInner read) {
     read_comparison(q, head);
     q.head_range = span(head.range, tokens_[pos_ - 1].range);
     nest();
-    expect(TokenKind::LeftBracket, "to open the reward formula");
-    q.reward_formula = reward_formula();
-    const Token& close = expect(TokenKind::RightBracket, "to close the reward formula");
+    expect(TokenKind::LeftBracket, "to open the " + inner);
+    read(q);
+    const Token& close = expect(TokenKind::RightBracket, "to close the " + inner);
     --depth_;
     q.range = span(head.range, close.range);
     const SourceRange range = q.range;
