@@ -23,7 +23,7 @@
 namespace oasis::modelcheck {
 
 struct Entry {
-  std::uint32_t column;
+  std::uint32_t column = 0;
   Rational value;
 };
 // Sorted by column, columns distinct.
