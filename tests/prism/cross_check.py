@@ -352,6 +352,44 @@ def check_properties(oasisc, path, entry, report, timeout):
                          f"exit status {done.returncode}: {done.stderr.strip()[:300]}")
 
 
+def answers_by_property(lines, chosen):
+    """Each chosen property's answer without its method: what two runs must agree on."""
+    found = {}
+    for prop in chosen:
+        text = prop["property"].strip()
+        line = next((line for line in lines if line.startswith(text + " ")), None)
+        if line is not None:
+            lines.remove(line)
+            found[text] = line[len(text):].split("  [", 1)[0].strip()
+    return found
+
+
+def check_quotient_answers(oasisc, path, entry, report, timeout):
+    """Issue 39, item 3: every property answered on the bisimulation quotient (--bisimulation)
+    equals its answer on the model, rational for rational (exact mode, fractions printed whole)."""
+    name = label(entry)
+    chosen = [prop for prop in entry.get("properties", []) if "exact" in prop.get("modes", MODES)]
+    if not chosen:
+        return
+    base = [oasisc, "query", path, *constants_args(entry), "--mode", "exact", "--whole-fractions",
+            "--prop", "; ".join(prop["property"] for prop in chosen)]
+    runs = []
+    for extra in ([], ["--bisimulation"]):
+        try:
+            done = subprocess.run(base + extra, stdout=subprocess.PIPE, stderr=subprocess.PIPE,
+                                  text=True, timeout=timeout, check=False)
+        except (subprocess.TimeoutExpired, OSError) as error:
+            report.error(name, "query --bisimulation", f"cannot run: {error}")
+            return
+        runs.append(answers_by_property([l for l in done.stdout.splitlines() if l.strip()], chosen))
+    on_model, on_quotient = runs
+    for text, answer in on_model.items():
+        ours = on_quotient.get(text, "no answer")
+        if ours == answer and len(answer) > 40:  # a fraction printed whole: shown shortened
+            ours = answer = answer[:37] + "..."
+        report.figure(name, f"{text} on the quotient", ours, answer)
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("--oasisc", required=True, help="the oasisc executable")
@@ -399,6 +437,7 @@ def main():
                 check_quotient(oasisc, path, entry, quotient, report, args.timeout)
         if not args.no_properties:
             check_properties(oasisc, path, entry, report, args.timeout)
+            check_quotient_answers(oasisc, path, entry, report, args.timeout)
 
     models = len(entries)
     if report.partial:
