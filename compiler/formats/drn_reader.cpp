@@ -402,6 +402,10 @@ class DrnReader {
       scan_.error_here("expected the action's name");
       return;
     }
+    if (has_control_character(name)) {  // a name the writer could not give back
+      scan_.error_here("an action name holds a control character");
+      return;
+    }
     const std::uint32_t j = choices_in_state_++;
     if (header_.type == model::ModelType::kDtmc && j > 0) {
       scan_.error_at(line, 6,
