@@ -188,6 +188,10 @@ class DrnReader {
       if (scan_.at_line_end()) return true;
       const char* token = scan_.position();
       const std::string name(scan_.read_word());
+      if (has_control_character(name)) {  // a name the writer could not give back
+        scan_.error_at(token, name.size(), "a reward model's name holds a control character");
+        return false;
+      }
       for (const std::string& other : header_.reward_models) {
         if (other == name) {
           scan_.error_at(token, name.size(), "reward model '" + name + "' is named twice");
