@@ -186,6 +186,17 @@ int run_query(const QueryOptions& options) {
     return 1;
   }
   const model::ExplicitModel& model = *loaded->model;
+  for (const model::Context& context : model.contexts) {
+    if (context.transitions != model.contexts.front().transitions) {
+      diagnostics.file_error(options.model,
+                             "context '" + context.name +
+                                 "' has transitions of its own: "
+                                 "properties are answered on models whose contexts share theirs (a "
+                                 "PRISM program, an imported model, a spec without per-context "
+                                 "dynamics)");
+      return 1;
+    }
+  }
   modelcheck::Options engine;
   engine.precision = options.precision;
   engine.max_number_bits = load.max_number_bits;
@@ -231,7 +242,8 @@ CommandRunner add_query_command(CLI::App& app) {
       "  sound  an interval [lower, upper] that contains the true value, of width at most\n"
       "         --precision, by interval iteration with outward rounding; never a value\n"
       "         iteration stopped at a threshold\n"
-      "  auto   exact up to 100000 states (or until the exact solve refuses), sound past it\n"
+      "  auto   exact up to 100000 states, sound past it, or when the exact solve refuses\n"
+      "         or its numbers pass 2^16 bits\n"
       "The language is PRISM's (docs/properties.md): P=? [F \"goal\"], Pmax=? [a U<=10 b],\n"
       "P>=0.5 [G !\"crash\"], R{\"time\"}min=? [F \"done\"], R=? [C<=5], R=? [I=3],\n"
       "filter(max, P=? [F \"one\"], \"init\"); labels in quotes, the program's variables,\n"
@@ -240,8 +252,9 @@ CommandRunner add_query_command(CLI::App& app) {
       "  oasisc query die.pm --prop 'P=? [F s=7&d=1]'\n"
       "  oasisc query leader.nm --const N=4 --props leader.props --mode sound");
   command
-      ->add_option("model", options->model,
-                   "PRISM program (.pm, .nm, .prism), spec (.oasis) or model (.aut, .tra)")
+      ->add_option(
+          "model", options->model,
+          "PRISM program (.pm, .nm, .prism), discrete spec (.oasis) or model (.tra, .drn, .aut)")
       ->required();
   command->add_option("--prop", options->props, "A property, or several separated by ';'");
   command->add_option("--props", options->prop_files, "A file of properties (.props, .pctl)")
