@@ -78,6 +78,7 @@ Evaluator::Evaluator(const model::ExplicitModel& model, const Names& names,
 
 std::optional<Answer> Evaluator::answer(const Property& property) {
   method_.clear();
+  defining_ = 0;
   try {
     Answer result = answer_expression(property.expression);
     result.mode = options_.mode;
@@ -350,6 +351,9 @@ StateSet Evaluator::states_of(const ast::Expr& expr) {
 
 std::optional<model::Expression> Evaluator::resolve(const ast::Expr& name) {
   if (name.kind == ast::Expr::Kind::Name) {
+    for (const Definition& constant : file_.constants) {
+      if (constant.name == name.text) return constant_definition(constant);
+    }
     const auto it = std::lower_bound(
         names_.begin(), names_.end(), name.text,
         [](const auto& entry, const std::string& key) { return entry.first < key; });
@@ -376,10 +380,37 @@ std::optional<model::Expression> Evaluator::resolve(const ast::Expr& name) {
   return std::nullopt;
 }
 
+std::optional<model::Expression> Evaluator::constant_definition(const Definition& constant) {
+  if (++defining_ > static_cast<int>(file_.labels.size() + file_.constants.size())) {
+    --defining_;
+    diagnostics_.error(constant.range, "constant " + quoted(constant.name) + " uses itself");
+    return std::nullopt;
+  }
+  prism::ExpressionLowering lowering(diagnostics_, options_.max_number_bits,
+                                     [this](const ast::Expr& name) { return resolve(name); });
+  std::optional<model::Expression> value = lowering.lower(constant.value);
+  --defining_;
+  if (value && value->depends_on_state()) {
+    diagnostics_.error(constant.range,
+                       "constant " + quoted(constant.name) + " depends on the state");
+    return std::nullopt;
+  }
+  return value;
+}
+
 std::uint32_t Evaluator::label_slot(const LabelReference& label) {
   const std::uint32_t n = model_.num_states();
   std::vector<std::int64_t> column(n, 0);
-  if (const auto index = model_.labels.find(label.name)) {
+  const auto defined = std::find_if(file_.labels.begin(), file_.labels.end(),
+                                    [&](const Definition& d) { return d.name == label.name; });
+  if (defined != file_.labels.end()) {
+    if (++defining_ > static_cast<int>(file_.labels.size() + file_.constants.size()))
+      fail(defined->range, "label \"" + label.name + "\" uses itself");
+    const StateSet set = states_of(defined->value);
+    --defining_;
+    for (model::StateIndex s = 0; s < n; ++s)
+      column[s] = set[s] ? 1 : 0;
+  } else if (const auto index = model_.labels.find(label.name)) {
     for (model::StateIndex s = 0; s < n; ++s) {
       const auto held = model_.labels.of(s);
       column[s] = std::find(held.begin(), held.end(), *index) != held.end() ? 1 : 0;

@@ -77,6 +77,7 @@ class Evaluator {
   const model::RewardTable& reward_table(const Quantifier& q);
   std::optional<model::Expression> resolve(const prism::ast::Expr& name);
   std::uint32_t label_slot(const LabelReference& label);
+  std::optional<model::Expression> constant_definition(const Definition& constant);
   std::uint32_t quantifier_slot(const Quantifier& q, const prism::ast::Expr& node);
   [[noreturn]] void fail(SourceRange where, const std::string& message);
 
@@ -92,6 +93,7 @@ class Evaluator {
   std::string method_;  // the last engine call's, for a state formula's answer
   bool sound_fallback_ = false;
   bool bisimulation_ = false;
+  int defining_ = 0;  // definitions being expanded, one inside another (a cycle passes the count)
 };
 
 }  // namespace oasis::property

@@ -23,6 +23,7 @@ class PropertyParser : public prism::ExpressionParser {
   PropertiesFile run() {
     while (!at(TokenKind::EndOfFile) && !diagnostics_.should_stop()) {
       try {
+        if (definition()) continue;
         file_.properties.push_back(property());
         if (!accept(TokenKind::Semicolon) && !at(TokenKind::EndOfFile) &&
             !starts_property(peek())) {
@@ -44,6 +45,38 @@ class PropertyParser : public prism::ExpressionParser {
             (token.text == "P" || token.text == "Pmin" || token.text == "Pmax" ||
              token.text == "R" || token.text == "Rmin" || token.text == "Rmax" ||
              token.text == "filter"));
+  }
+
+  // `const [int|double|bool] NAME = value;` or `label "NAME" = value;`; false at anything else.
+  bool definition() {
+    if (!at(TokenKind::Identifier)) return false;
+    if (peek().text == "const") {
+      advance();
+      if (at(TokenKind::Identifier) &&
+          (peek().text == "int" || peek().text == "double" || peek().text == "bool"))
+        advance();
+      const Token& name = identifier("a constant's name");
+      if (!at(TokenKind::Equal)) {
+        fail(peek(),
+             "a constant of a properties file needs its value here ('= ...'): --const "
+             "sets the program's constants only");
+      }
+      advance();
+      depth_ = 0;
+      file_.constants.push_back({std::string(name.text), expression(), name.range});
+    } else if (peek().text == "label") {
+      advance();
+      const Token& name = peek();
+      if (name.kind != TokenKind::String) fail(name, "expected the label's name in quotes");
+      advance();
+      expect(TokenKind::Equal, "after the label's name");
+      depth_ = 0;
+      file_.labels.push_back({std::string(name.text), expression(), name.range});
+    } else {
+      return false;
+    }
+    expect(TokenKind::Semicolon, "to end the definition");
+    return true;
   }
 
   Property property() {

@@ -78,9 +78,20 @@ struct Property {
   SourceRange range;
 };
 
+// `const int k = 3;` or `label "safe" = x < 4;` in a properties file: a name its
+// properties may use, defined there. A constant must have its value (`--const` sets the
+// program's constants only).
+struct Definition {
+  std::string name;
+  prism::ast::Expr value;
+  SourceRange range;  // the name
+};
+
 struct PropertiesFile {
   std::vector<Property> properties;
   std::vector<Extension> extensions;  // indexed by the Extension nodes' text
+  std::vector<Definition> constants;
+  std::vector<Definition> labels;
 };
 
 }  // namespace oasis::property

@@ -180,6 +180,21 @@ TEST(Properties, SchedulersAreReturnedAndRecheckedOnTheModel) {
   EXPECT_NE(run.answers[0]->method.find("re-checked on the model"), std::string::npos);
 }
 
+TEST(Properties, APropertiesFileDefinesConstantsAndLabels) {
+  const Answers run = query(kDie,
+                            "const int face = 2; const double half = 1/2;\n"
+                            "label \"shown\" = s=7 & d=face; label \"early\" = \"shown\" & true;\n"
+                            "P=? [F \"early\"]; P<half [F d=face]");
+  ASSERT_EQ(run.answers.size(), 2u) << run.messages;
+  EXPECT_EQ(exact(run, 0), Rational(1, 6));
+  ASSERT_TRUE(run.answers[1]) << run.messages;
+  EXPECT_TRUE(run.answers[1]->verdict);
+  const Answers cycle = query(kDie, "label \"a\" = \"b\"; label \"b\" = \"a\"; P=? [F \"a\"]");
+  ASSERT_EQ(cycle.answers.size(), 1u) << cycle.messages;
+  EXPECT_FALSE(cycle.answers[0]);
+  EXPECT_NE(cycle.messages.find("uses itself"), std::string::npos) << cycle.messages;
+}
+
 // The message and the place of the first error for one property.
 std::string first_error(const char* program, const std::string& property) {
   const Answers run = query(program, property);
