@@ -277,10 +277,9 @@ CommandRunner add_query_command(CLI::App& app) {
                       "Write the optimal scheduler of each Pmin/Pmax/Rmin/Rmax property to this "
                       "JSON file (per state, the action taken; re-checked on the model first)");
   add_common_options(*command, options->common);
-  command->callback([command, options] {
+  command->callback([options] {
     if (options->props.empty() && options->prop_files.empty())
       throw CLI::ValidationError("query", "give at least one --prop or --props");
-    static_cast<void>(command);
   });
   return [options] { return run_query(*options); };
 }

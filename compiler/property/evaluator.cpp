@@ -374,7 +374,7 @@ std::optional<model::Expression> Evaluator::resolve(const ast::Expr& name) {
                          "bound instead, as in P>=0.5 [ ... ]");
       return std::nullopt;
     }
-    return column_holds(quantifier_slot(*q, name), name.range);
+    return column_holds(quantifier_slot(*q), name.range);
   }
   diagnostics_.error(name.range, "a filter can only be the whole property");
   return std::nullopt;
@@ -430,9 +430,8 @@ std::uint32_t Evaluator::label_slot(const LabelReference& label) {
   return width_ + static_cast<std::uint32_t>(columns_.size() - 1);
 }
 
-std::uint32_t Evaluator::quantifier_slot(const Quantifier& q, const ast::Expr& node) {
+std::uint32_t Evaluator::quantifier_slot(const Quantifier& q) {
   const StateSet set = holds(q);
-  static_cast<void>(node);
   std::vector<std::int64_t> column(set.size());
   for (std::size_t s = 0; s < set.size(); ++s)
     column[s] = set[s] ? 1 : 0;

@@ -78,7 +78,7 @@ class Evaluator {
   std::optional<model::Expression> resolve(const prism::ast::Expr& name);
   std::uint32_t label_slot(const LabelReference& label);
   std::optional<model::Expression> constant_definition(const Definition& constant);
-  std::uint32_t quantifier_slot(const Quantifier& q, const prism::ast::Expr& node);
+  std::uint32_t quantifier_slot(const Quantifier& q);
   [[noreturn]] void fail(SourceRange where, const std::string& message);
 
   const model::ExplicitModel& model_;
