@@ -14,6 +14,7 @@
 #include "command_line/number_options.hpp"
 #include "property/evaluator.hpp"
 #include "property/parser.hpp"
+#include "property/quotient_solve.hpp"
 #include "support/atomic_file.hpp"
 #include "support/error_report.hpp"
 #include "support/input_validation.hpp"
@@ -148,15 +149,37 @@ nlohmann::json scheduler_json(const property::Property& property,
   return entry;
 }
 
-bool write_schedulers(const std::string& path, const nlohmann::json& schedulers) {
+// PRISM's -exportadv form: the Markov chain a memoryless scheduler induces, as a .tra file
+// ("STATES TRANSITIONS", then "SOURCE TARGET PROBABILITY ACTION" rows), probabilities exact.
+std::string adversary_text(const model::ExplicitModel& model,
+                           const std::vector<model::ActionIndex>& actions) {
+  const model::TransitionMatrix& matrix = *model.contexts.front().transitions;
+  std::string rows;
+  std::size_t count = 0;
+  for (model::StateIndex s = 0; s < matrix.num_states; ++s) {
+    const model::ActionIndex a = property::scheduled_action(matrix, actions, s);
+    if (a >= matrix.num_actions) continue;
+    for (model::EdgeIndex e = matrix.edges_begin(s, a); e < matrix.edges_end(s, a); ++e, ++count) {
+      rows += std::to_string(s) + " " + std::to_string(matrix.edge_target[e]) + " " +
+              to_string(model.values[matrix.edge_probability[e]]) + " " + model.actions[a] + "\n";
+    }
+  }
+  return std::to_string(matrix.num_states) + " " + std::to_string(count) + "\n" + rows;
+}
+
+bool write_text(const std::string& path, const std::string& text) {
   AtomicFile file;
   std::string error;
   if (file.open(path, error)) {
-    file.append(nlohmann::json{{"schedulers", schedulers}}.dump(1) + "\n");
+    file.append(text);
     if (file.commit(error)) return true;
   }
   report_error(kProgram, error);
   return false;
+}
+
+bool write_schedulers(const std::string& path, const nlohmann::json& schedulers) {
+  return write_text(path, nlohmann::json{{"schedulers", schedulers}}.dump(1) + "\n");
 }
 
 void print_answer(const property::Property& property, const property::Answer& answer,
@@ -208,6 +231,7 @@ int run_query(const QueryOptions& options) {
   engine.want_scheduler = !options.scheduler_path.empty();
   bool all_answered = true;
   nlohmann::json schedulers = nlohmann::json::array();
+  std::vector<std::vector<model::ActionIndex>> memoryless;  // for an .adv file
   for (const property::PropertiesFile& file : files) {
     property::Evaluator evaluator(model, loaded->names, file, diagnostics, engine);
     evaluator.allow_sound_fallback(options.mode == "auto");
@@ -220,12 +244,25 @@ int run_query(const QueryOptions& options) {
         continue;
       }
       print_answer(property, *answer, model, options.whole_fractions);
-      if (answer->scheduler)
-        schedulers.push_back(scheduler_json(property, *answer->scheduler, model));
+      if (!answer->scheduler) continue;
+      schedulers.push_back(scheduler_json(property, *answer->scheduler, model));
+      memoryless.push_back(answer->scheduler->action);
     }
   }
-  if (!options.scheduler_path.empty() && !write_schedulers(options.scheduler_path, schedulers))
+  if (options.scheduler_path.ends_with(".adv")) {
+    // PRISM's adversary file holds one memoryless scheduler.
+    if (memoryless.size() != 1 || memoryless.front().empty()) {
+      report_error(kProgram, "an .adv file holds one memoryless scheduler, and " +
+                                 std::to_string(memoryless.size()) +
+                                 " properties gave one: ask for one unbounded Pmin/Pmax/Rmin/Rmax "
+                                 "property, or write JSON");
+      return 1;
+    }
+    if (!write_text(options.scheduler_path, adversary_text(model, memoryless.front()))) return 1;
+  } else if (!options.scheduler_path.empty() &&
+             !write_schedulers(options.scheduler_path, schedulers)) {
     return 1;
+  }
   return all_answered ? 0 : 1;
 }
 
@@ -275,7 +312,9 @@ CommandRunner add_query_command(CLI::App& app) {
                     "than 2000 characters is shown in scientific form with its length)");
   command->add_option("--scheduler", options->scheduler_path,
                       "Write the optimal scheduler of each Pmin/Pmax/Rmin/Rmax property to this "
-                      "JSON file (per state, the action taken; re-checked on the model first)");
+                      "JSON file (per state, the action taken; re-checked on the model first); "
+                      "a name ending in .adv gets PRISM's adversary form instead (the chain the "
+                      "one scheduler induces, as a .tra file)");
   add_common_options(*command, options->common);
   command->callback([options] {
     if (options->props.empty() && options->prop_files.empty())

@@ -67,20 +67,6 @@ void lift(modelcheck::Result& result, const model::Partition& partition) {
     step = lift_actions(step);
 }
 
-// The action the scheduler takes in s: its own, or the first enabled one where it leaves s free
-// (num_actions where none is enabled).
-model::ActionIndex chosen_action(const model::TransitionMatrix& matrix,
-                                 const std::vector<model::ActionIndex>& actions,
-                                 model::StateIndex s) {
-  const model::ActionIndex a = actions[s];
-  if (a != modelcheck::Scheduler::kAnyAction && a < matrix.num_actions && matrix.enabled(s, a))
-    return a;
-  model::ActionIndex first = 0;
-  while (first < matrix.num_actions && !matrix.enabled(s, first))
-    ++first;
-  return first;
-}
-
 // The chain `actions` induces: each state keeps the edges of the action it takes.
 model::TransitionMatrix induced_chain(const model::TransitionMatrix& matrix,
                                       const std::vector<model::ActionIndex>& actions) {
@@ -89,7 +75,7 @@ model::TransitionMatrix induced_chain(const model::TransitionMatrix& matrix,
   chain.num_actions = 1;
   chain.choice_begin.push_back(0);
   for (model::StateIndex s = 0; s < matrix.num_states; ++s) {
-    const model::ActionIndex a = chosen_action(matrix, actions, s);
+    const model::ActionIndex a = scheduled_action(matrix, actions, s);
     if (a < matrix.num_actions) {
       for (model::EdgeIndex e = matrix.edges_begin(s, a); e < matrix.edges_end(s, a); ++e) {
         chain.edge_target.push_back(matrix.edge_target[e]);
@@ -110,7 +96,7 @@ model::RewardTable induced_rewards(const model::RewardTable& rewards,
   chain.state = rewards.state;
   if (rewards.choice.empty()) return chain;
   for (model::StateIndex s = 0; s < matrix.num_states; ++s) {
-    const model::ActionIndex a = chosen_action(matrix, actions, s);
+    const model::ActionIndex a = scheduled_action(matrix, actions, s);
     if (a >= matrix.num_actions) continue;
     const Rational total = values[rewards.state[s]] + values[rewards.choice[matrix.choice(s, a)]];
     chain.state[s] = values.intern(total);
@@ -125,6 +111,18 @@ bool same_value(const modelcheck::Value& a, const modelcheck::Value& b, modelche
 }
 
 }  // namespace
+
+model::ActionIndex scheduled_action(const model::TransitionMatrix& matrix,
+                                    const std::vector<model::ActionIndex>& actions,
+                                    model::StateIndex s) {
+  const model::ActionIndex a = actions[s];
+  if (a != modelcheck::Scheduler::kAnyAction && a < matrix.num_actions && matrix.enabled(s, a))
+    return a;
+  model::ActionIndex first = 0;
+  while (first < matrix.num_actions && !matrix.enabled(s, first))
+    ++first;
+  return first;
+}
 
 modelcheck::Result solve_on_quotient(const model::ExplicitModel& model, const EngineCall& call,
                                      const modelcheck::Options& options, QuotientSize& size) {

@@ -10,6 +10,7 @@
 // solved and must give every state the lifted value (scheduler_reproduces).
 
 #include <cstdint>
+#include <vector>
 
 #include "model/explicit_model.hpp"
 #include "property/engine_call.hpp"
@@ -23,6 +24,12 @@ struct QuotientSize {
 
 modelcheck::Result solve_on_quotient(const model::ExplicitModel& model, const EngineCall& call,
                                      const modelcheck::Options& options, QuotientSize& size);
+
+// The action a memoryless scheduler takes in s: its own, or the first enabled one where it
+// leaves s free (kAnyAction); num_actions where s has no enabled action.
+model::ActionIndex scheduled_action(const model::TransitionMatrix& matrix,
+                                    const std::vector<model::ActionIndex>& actions,
+                                    model::StateIndex s);
 
 // Whether the chain `scheduler` induces on the model (its first context's transitions) gives
 // every state the value `result` holds for it: equal rationals in exact mode, overlapping

@@ -2,7 +2,9 @@
 // statuses (0 answered, 1 an error in a property or the model, 2 bad usage), each error
 // printed once, and a properties file read as PRISM writes them.
 
+#include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <string>
 
 #include <gtest/gtest.h>
@@ -71,6 +73,33 @@ TEST(QueryCommand, ReadsAPropertiesFile) {
   EXPECT_NE(result.output.find("\"one\": P=? [ F face=1 ] = 1/6"), std::string::npos)
       << result.output;
   EXPECT_NE(result.output.find("\"flips\": P=? [ F<=3 face=1 ] = 1/8"), std::string::npos)
+      << result.output;
+}
+
+TEST(QueryCommand, WritesTheSchedulerAsJsonAndAsPrismsAdversary) {
+  test::ScratchDirectory dir("query_command_test");
+  const std::string dice = std::string(OASIS_SOURCE_DIR) + "/tests/data/prism/two_dice.nm";
+  const std::string json = (dir.path() / "s.json").string();
+  const std::string adv = (dir.path() / "s.adv").string();
+  auto result = run_oasisc("query " + dice + " --prop 'Pmax=? [F \"seven\"]' --scheduler " + json);
+  EXPECT_EQ(result.status, 0) << result.output;
+  std::ifstream json_in(json);
+  const std::string json_text((std::istreambuf_iterator<char>(json_in)), {});
+  EXPECT_NE(json_text.find("\"memoryless\""), std::string::npos) << json_text;
+  EXPECT_NE(json_text.find("\"property\": \"Pmax=? [F \\\"seven\\\"]\""), std::string::npos)
+      << json_text;
+  result = run_oasisc("query " + dice + " --prop 'Pmax=? [F \"seven\"]' --scheduler " + adv);
+  EXPECT_EQ(result.status, 0) << result.output;
+  // The induced chain as a .tra file: every state of the MDP, one distribution each.
+  const std::string tra = (dir.path() / "chain.tra").string();
+  std::filesystem::copy_file(adv, tra);
+  result = run_oasisc("info " + tra);
+  EXPECT_EQ(result.status, 0) << result.output;
+  EXPECT_NE(result.output.find("169         169"), std::string::npos) << result.output;
+  result = run_oasisc("query " + dice + " --prop 'Pmax=? [F \"seven\"]; Pmin=? [F \"two\"]' " +
+                      "--scheduler " + adv);
+  EXPECT_EQ(result.status, 1) << result.output;
+  EXPECT_NE(result.output.find("an .adv file holds one memoryless scheduler"), std::string::npos)
       << result.output;
 }
 
