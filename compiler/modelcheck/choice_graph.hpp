@@ -7,6 +7,7 @@
 // action of each state.
 
 #include <cstdint>
+#include <deque>
 #include <vector>
 
 #include "model/explicit_model.hpp"
@@ -34,6 +35,28 @@ struct ChoiceGraph {
 };
 
 ChoiceGraph make_choice_graph(const Problem& problem);
+
+// The backward search every precomputation and the scheduler's expansion share: from the
+// states in `queue`, along the choices that lead into them. A choice c of a state s not yet
+// `reached` for which take(s, c) holds marks s reached, is passed to taken(s, c), and the
+// search goes on from s. The start states are not marked here: `reached` holds what the
+// caller counts as found already.
+template <typename Take, typename Taken>
+void search_backwards(const ChoiceGraph& graph, std::deque<model::StateIndex> queue,
+                      std::vector<bool>& reached, Take take, Taken taken) {
+  while (!queue.empty()) {
+    const model::StateIndex t = queue.front();
+    queue.pop_front();
+    for (std::uint32_t i = graph.first_incoming[t]; i < graph.first_incoming[t + 1]; ++i) {
+      const ChoiceId c = graph.incoming[i];
+      const model::StateIndex s = graph.owner[c];
+      if (reached[s] || !take(s, c)) continue;
+      reached[s] = true;
+      taken(s, c);
+      queue.push_back(s);
+    }
+  }
+}
 
 // R(s, a) of one choice: the state reward plus, for a real action, its choice reward. Empty
 // reward vectors count as zero.

@@ -47,19 +47,10 @@ StateSet minus(const StateSet& a, const StateSet& b) {
 
 WitnessedSet can_reach(const ChoiceGraph& graph, const StateSet& through, const StateSet& goal) {
   WitnessedSet result{goal, std::vector<ChoiceId>(graph.num_states, kNoChoice)};
-  std::deque<model::StateIndex> queue = members(goal);
-  while (!queue.empty()) {
-    const model::StateIndex t = queue.front();
-    queue.pop_front();
-    for (std::uint32_t i = graph.first_incoming[t]; i < graph.first_incoming[t + 1]; ++i) {
-      const ChoiceId c = graph.incoming[i];
-      const model::StateIndex s = graph.owner[c];
-      if (result.states[s] || !through[s]) continue;
-      result.states[s] = true;
-      result.witness[s] = c;
-      queue.push_back(s);
-    }
-  }
+  search_backwards(
+      graph, members(goal), result.states,
+      [&](model::StateIndex s, ChoiceId) { return through[s]; },
+      [&](model::StateIndex s, ChoiceId c) { result.witness[s] = c; });
   return result;
 }
 
@@ -118,19 +109,10 @@ WitnessedSet prob1e(const ChoiceGraph& graph, const StateSet& phi, const StateSe
     for (ChoiceId c = 0; c < graph.num_choices(); ++c)
       stays[c] = all_successors_in(graph, c, outer);
     WitnessedSet inner{psi, std::vector<ChoiceId>(graph.num_states, kNoChoice)};
-    std::deque<model::StateIndex> queue = members(psi);
-    while (!queue.empty()) {
-      const model::StateIndex t = queue.front();
-      queue.pop_front();
-      for (std::uint32_t i = graph.first_incoming[t]; i < graph.first_incoming[t + 1]; ++i) {
-        const ChoiceId c = graph.incoming[i];
-        const model::StateIndex s = graph.owner[c];
-        if (inner.states[s] || !phi[s] || !stays[c]) continue;
-        inner.states[s] = true;
-        inner.witness[s] = c;
-        queue.push_back(s);
-      }
-    }
+    search_backwards(
+        graph, members(psi), inner.states,
+        [&](model::StateIndex s, ChoiceId c) { return phi[s] && stays[c]; },
+        [&](model::StateIndex s, ChoiceId c) { inner.witness[s] = c; });
     if (inner.states == outer) return inner;
     outer = inner.states;
   }

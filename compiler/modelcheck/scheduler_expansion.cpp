@@ -2,8 +2,6 @@
 
 #include "modelcheck/scheduler_expansion.hpp"
 
-#include <deque>
-
 namespace oasis::modelcheck {
 namespace {
 
@@ -11,20 +9,12 @@ namespace {
 void steer_to_exit(const ChoiceGraph& graph, const ReducedSystem& system, std::uint32_t var,
                    model::StateIndex exit, const std::vector<bool>& internal, Scheduler& scheduler,
                    std::vector<bool>& assigned) {
-  std::deque<model::StateIndex> queue{exit};
-  while (!queue.empty()) {
-    const model::StateIndex t = queue.front();
-    queue.pop_front();
-    for (std::uint32_t i = graph.first_incoming[t]; i < graph.first_incoming[t + 1]; ++i) {
-      const ChoiceId c = graph.incoming[i];
-      const model::StateIndex s = graph.owner[c];
-      if (assigned[s] || system.var_of_state[s] != var || internal.empty() || !internal[c])
-        continue;
-      scheduler.action[s] = graph.action[c];
-      assigned[s] = true;
-      queue.push_back(s);
-    }
-  }
+  search_backwards(
+      graph, {exit}, assigned,
+      [&](model::StateIndex s, ChoiceId c) {
+        return system.var_of_state[s] == var && !internal.empty() && internal[c];
+      },
+      [&](model::StateIndex s, ChoiceId c) { scheduler.action[s] = graph.action[c]; });
 }
 
 }  // namespace
