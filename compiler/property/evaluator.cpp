@@ -38,6 +38,22 @@ model::Expression column_holds(std::uint32_t slot, SourceRange range) {
   return test;
 }
 
+// Sets one engine option for as long as it lives. The old value comes back however the scope
+// ends: an error in a property leaves through it (Failed), and the next property must find the
+// options as the command set them.
+template <typename T>
+class OptionOverride {
+ public:
+  OptionOverride(T& slot, T value) : slot_(slot), saved_(slot) { slot_ = value; }
+  ~OptionOverride() { slot_ = saved_; }
+  OptionOverride(const OptionOverride&) = delete;
+  OptionOverride& operator=(const OptionOverride&) = delete;
+
+ private:
+  T& slot_;
+  T saved_;
+};
+
 Optimum opposite(Optimum optimum) {
   if (optimum == Optimum::kMin) return Optimum::kMax;
   if (optimum == Optimum::kMax) return Optimum::kMin;
@@ -91,11 +107,8 @@ std::optional<Answer> Evaluator::answer(const Property& property) {
       return std::nullopt;
     }
     diagnostics_.note(property.range, std::string(e.what()) + "; answering in sound mode");
-    const modelcheck::Mode saved = options_.mode;
-    options_.mode = modelcheck::Mode::kSound;
-    std::optional<Answer> result = answer(property);
-    options_.mode = saved;
-    return result;
+    const OptionOverride<modelcheck::Mode> sound(options_.mode, modelcheck::Mode::kSound);
+    return answer(property);
   }
 }
 
@@ -195,17 +208,9 @@ Answer Evaluator::answer_filter(const Filter& filter) {
 
 modelcheck::Result Evaluator::quantify(const Quantifier& q, bool want_scheduler) {
   const Optimum optimum = optimum_of(q);
-  modelcheck::Options options = options_;
-  options.want_scheduler = want_scheduler && optimum != Optimum::kNone;
-  std::swap(options, options_);
-  modelcheck::Result result;
-  try {
-    result = q.reward ? reward(q, optimum) : probability(q, optimum);
-  } catch (...) {
-    std::swap(options, options_);
-    throw;
-  }
-  std::swap(options, options_);
+  const OptionOverride<bool> scheduler(options_.want_scheduler,
+                                       want_scheduler && optimum != Optimum::kNone);
+  modelcheck::Result result = q.reward ? reward(q, optimum) : probability(q, optimum);
   method_ = result.method;
   return result;
 }
@@ -445,16 +450,13 @@ StateSet Evaluator::holds(const Quantifier& q) {
     fail(q.bound->range, "a probability bound must lie in [0, 1], not " + describe(bound));
   }
   const double saved_precision = options_.precision;
+  const OptionOverride<double> precision(options_.precision, saved_precision);
   for (int round = 0; round <= kRefinements; ++round) {
     const modelcheck::Result result = quantify(q, false);
     StateSet set(result.values.size(), false);
-    if (compare_with_bound(result.values, q.comparison, bound, options_.mode, set)) {
-      options_.precision = saved_precision;
-      return set;
-    }
+    if (compare_with_bound(result.values, q.comparison, bound, options_.mode, set)) return set;
     options_.precision /= 1000;
   }
-  options_.precision = saved_precision;
   fail(q.range,
        "cannot decide the bound in sound mode: in some state the value is still on "
        "both sides of it at precision " +
