@@ -404,6 +404,9 @@ std::optional<model::Expression> Evaluator::constant_definition(const Definition
 }
 
 std::uint32_t Evaluator::label_slot(const LabelReference& label) {
+  // A label's states never change: its column is made once, however often properties read it.
+  if (const auto known = label_slots_.find(label.name); known != label_slots_.end())
+    return known->second;
   const std::uint32_t n = model_.num_states();
   std::vector<std::int64_t> column(n, 0);
   const auto defined = std::find_if(file_.labels.begin(), file_.labels.end(),
@@ -432,7 +435,9 @@ std::uint32_t Evaluator::label_slot(const LabelReference& label) {
              (known.empty() ? " (the model has no labels)" : " (known: " + known + ")"));
   }
   columns_.push_back(std::move(column));
-  return width_ + static_cast<std::uint32_t>(columns_.size() - 1);
+  const std::uint32_t slot = width_ + static_cast<std::uint32_t>(columns_.size() - 1);
+  label_slots_.emplace(label.name, slot);
+  return slot;
 }
 
 std::uint32_t Evaluator::quantifier_slot(const Quantifier& q) {

@@ -10,6 +10,7 @@
 // formula is needed.
 
 #include <cstdint>
+#include <map>
 #include <optional>
 #include <string>
 #include <utility>
@@ -90,6 +91,7 @@ class Evaluator {
   // formula is lowered to a model expression over the valuation and these columns.
   std::uint32_t width_ = 0;  // the model's own variables
   std::vector<std::vector<std::int64_t>> columns_;
+  std::map<std::string, std::uint32_t, std::less<>> label_slots_;  // label name -> its column
   std::string method_;  // the last engine call's, for a state formula's answer
   bool sound_fallback_ = false;
   bool bisimulation_ = false;
