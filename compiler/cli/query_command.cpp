@@ -303,7 +303,7 @@ CommandRunner add_query_command(CLI::App& app) {
       ->add_option("--precision", options->precision,
                    "Sound mode: the widest interval an answer may have")
       ->capture_default_str()
-      ->check(CLI::Range(1e-15, 0.5));
+      ->check(real_in(closed(1e-15, 0.5)));
   command->add_flag("--bisimulation", options->bisimulation,
                     "Answer each operator on the coarsest bisimulation quotient that respects its "
                     "state sets and rewards, and lift the values back (as Storm's --bisimulation)");

@@ -103,6 +103,15 @@ TEST(QueryCommand, WritesTheSchedulerAsJsonAndAsPrismsAdversary) {
       << result.output;
 }
 
+TEST(QueryCommand, ThePrecisionIsANumberAsEveryRealOptionIs) {
+  for (const char* bad : {"nan", "inf", "0x1p-20", "1e-6x", "0", "1"}) {
+    const auto result = run_oasisc("query " + kDie + " --prop 'P=? [F face=1]' --precision " + bad);
+    EXPECT_EQ(result.status, 2) << bad << ": " << result.output;
+    EXPECT_NE(result.output.find("is not a number in [1e-15, 0.5]"), std::string::npos)
+        << result.output;
+  }
+}
+
 TEST(QueryCommand, WithoutAPropertyIsBadUsage) {
   const auto result = run_oasisc("query " + kDie);
   EXPECT_EQ(result.status, 2) << result.output;
