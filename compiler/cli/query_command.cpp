@@ -294,8 +294,7 @@ CommandRunner add_query_command(CLI::App& app) {
           "PRISM program (.pm, .nm, .prism), discrete spec (.oasis) or model (.tra, .drn, .aut)")
       ->required();
   command->add_option("--prop", options->props, "A property, or several separated by ';'");
-  command->add_option("--props", options->prop_files, "A file of properties (.props, .pctl)")
-      ->check(CLI::ExistingFile);
+  command->add_option("--props", options->prop_files, "A file of properties (.props, .pctl)");
   command->add_option("--mode", options->mode, "exact, sound or auto")
       ->capture_default_str()
       ->check(CLI::IsMember({"exact", "sound", "auto"}));
