@@ -106,8 +106,10 @@ class LabelsReader {
   }
 
   // A name is a model's atomic proposition: it must be one a user can name (not empty, no NUL
-  // or other control character, which no message or file could show as it is) and appear
-  // once, so that "init" gives the initial states once and --respect-labels picks one label.
+  // or other control character, which no message or file could show as it is, and no '"',
+  // which PRISM's .lab and a property's "label" use to quote it, so neither could write it)
+  // and appear once, so that "init" gives the initial states once and --respect-labels picks
+  // one label.
   bool acceptable_name(std::string_view name, const char* at) {
     if (name.empty()) {
       scan_.error_at(at, 1, "empty label name");
@@ -115,6 +117,12 @@ class LabelsReader {
     }
     for (std::size_t i = 0; i < name.size(); ++i) {
       const auto byte = static_cast<unsigned char>(name[i]);
+      if (byte == '"') {
+        scan_.error_at(at + i, 1,
+                       "a label name cannot hold '\"' (PRISM's labels and properties quote "
+                       "names with it)");
+        return false;
+      }
       if (byte >= 0x20 && byte != 0x7f) continue;
       scan_.error_at(at + i, 1,
                      byte == 0 ? std::string("a label name cannot hold a NUL character")

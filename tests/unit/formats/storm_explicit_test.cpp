@@ -161,7 +161,10 @@ INSTANTIATE_TEST_SUITE_P(
         ErrorCase{kTwo, "#DECLARATION\ninit init\n#END\n",
                   "x.lab:2:6: error: label 'init' is declared twice"},
         ErrorCase{kTwo, "#DECLARATION\ninit\n#END\n2 init\n",
-                  "x.lab:4:1: error: state 2 is out of range"}));
+                  "x.lab:4:1: error: state 2 is out of range"},
+        // Found by the lab_reader fuzzer: PRISM's form and properties could not name it.
+        ErrorCase{kTwo, "#DECLARATION\ninit say\"hi\"\n#END\n",
+                  "x.lab:2:9: error: a label name cannot hold '\"'"}));
 
 }  // namespace
 }  // namespace oasis::formats
