@@ -24,6 +24,8 @@ tolerance t); a sound interval must contain the fraction, or meet the decimal's 
 at most the entry's sound_precision wide; verdicts and infinity must be the published ones.
 A long fraction that oasisc prints only as "about X (an exact fraction of N characters)" is
 compared as far as it is printed (its six digits and its length) and reported as partial.
+A program written by a generator (an entry's generated_by: the script, relative to the
+repository, and its arguments) must be byte for byte what the generator writes now.
 
 It prints one line per model and figure, ours against the published value, and exits with
 status 1 on any mismatch or error (0 when every figure matches).
@@ -138,6 +140,30 @@ def check_info(oasisc, path, entry, report, timeout):
         report.figure(name, "transitions", first.get("transitions"), entry["transitions"])
     if "choices" in entry:
         report.figure(name, "choices", first.get("choices"), entry["choices"])
+
+
+def check_generated(path, entry, report, checked):
+    """A generated program (generated_by) must be what its generator writes today: the figures
+    checked on the file are then the generator's."""
+    command = entry.get("generated_by")
+    if not command or (path, tuple(command)) in checked:
+        return
+    checked.add((path, tuple(command)))
+    root = os.path.normpath(os.path.join(HERE, "..", ".."))
+    script = os.path.join(root, command[0])
+    try:
+        done = subprocess.run([sys.executable, script, *command[1:]], stdout=subprocess.PIPE,
+                              stderr=subprocess.PIPE, text=True, timeout=60, check=False)
+        with open(path, encoding="utf-8") as stream:
+            current = stream.read()
+    except (OSError, subprocess.TimeoutExpired) as error:
+        report.error(label(entry), "generated", f"{' '.join(command)}: {error}")
+        return
+    if done.returncode != 0:
+        report.error(label(entry), "generated", f"{' '.join(command)}: {done.stderr.strip()[:300]}")
+        return
+    report.figure(entry["file"], f"= {os.path.basename(command[0])} output",
+                  "same" if done.stdout == current else "differs", "same")
 
 
 def check_quotient(oasisc, path, entry, quotient, report, timeout):
@@ -426,11 +452,13 @@ def main():
             return 1
 
     report = Report()
+    generated = set()
     for entry in entries:
         path = os.path.join(args.data, entry["file"])
         if not os.path.isfile(path):
             report.error(label(entry), "file", f"{path} does not exist")
             continue
+        check_generated(path, entry, report, generated)
         if not args.properties_only:
             check_info(oasisc, path, entry, report, args.timeout)
             for quotient in entry.get("quotients", []):
