@@ -56,6 +56,8 @@ OUTSIDE = {
     "cv_bridge": r"ROS1::cv_bridge",
     "rosbag": r"ROS1::rosbag",
     "benchmark": r"benchmark::benchmark(_main)?",
+    "archive.h": r"LibArchive::LibArchive",
+    "archive_entry.h": r"LibArchive::LibArchive",
 }
 
 

@@ -1,7 +1,7 @@
-// `oasisc export FILE --format aut|prism|drn -o OUT`: a model as a file other tools read
-// (mCRL2's .aut, PRISM's explicit files, Storm's DRN), to cross-check our results with
-// theirs. .aut and PRISM files carry one context; DRN carries every context that shares the
-// transitions, one reward model each.
+// `oasisc export FILE --format aut|prism|drn|umb -o OUT`: a model as a file other tools read
+// (mCRL2's .aut, PRISM's explicit files, Storm's DRN, PRISM and Storm's UMB), to cross-check
+// our results with theirs. .aut and PRISM files carry one context; DRN and UMB carry every
+// context that shares the transitions, one reward model each.
 
 #include <iostream>
 #include <memory>
@@ -11,6 +11,7 @@
 #include "formats/aut_writer.hpp"
 #include "formats/drn_writer.hpp"
 #include "formats/explicit_writer.hpp"
+#include "formats/umb_writer.hpp"
 #include "support/error_report.hpp"
 
 namespace oasis::cli {
@@ -39,9 +40,9 @@ std::optional<std::size_t> choose_context(const model::ExplicitModel& model,
   return std::nullopt;
 }
 
-// DRN: the named context, else every context (which must share their transitions).
-bool write_drn(const model::ExplicitModel& model, const ExportOptions& options,
-               std::string& error) {
+// DRN and UMB: the named context, else every context (which must share their transitions).
+bool write_reward_models(const model::ExplicitModel& model, const ExportOptions& options,
+                         std::string& error) {
   std::vector<std::size_t> contexts;
   if (options.context.empty()) {
     for (std::size_t c = 0; c < model.contexts.size(); ++c)
@@ -51,7 +52,8 @@ bool write_drn(const model::ExplicitModel& model, const ExportOptions& options,
     if (!context) return false;
     contexts.push_back(*context);
   }
-  return formats::write_drn_file(model, contexts, options.output, error);
+  return options.format == "umb" ? formats::write_umb_file(model, contexts, options.output, error)
+                                 : formats::write_drn_file(model, contexts, options.output, error);
 }
 
 int run_export(const ExportOptions& options) {
@@ -74,8 +76,8 @@ int run_export(const ExportOptions& options) {
   }
   std::string error;
   bool written = false;
-  if (options.format == "drn") {
-    written = write_drn(*loaded->model, options, error);
+  if (options.format == "drn" || options.format == "umb") {
+    written = write_reward_models(*loaded->model, options, error);
     if (!written && error.empty()) return 1;  // a context that does not exist, reported
   } else {
     const auto context = choose_context(*loaded->model, options.context, options.file);
@@ -104,24 +106,27 @@ CommandRunner add_export_command(CLI::App& app) {
       "         when the model has variables / state-action rewards\n"
       "  drn    Storm's DRN: labels, and every context as a reward model (or the one\n"
       "         chosen with --context)\n"
+      "  umb    UMB, the binary format of PRISM 4.10 and Storm (a gzip-compressed tar):\n"
+      "         what drn carries, every number an exact rational\n"
       "Probabilities are written exactly. Output appears whole or not at all. See\n"
       "docs/formats.md.\n\n"
       "Examples:\n"
       "  oasisc export specs/discrete_tracking.oasis --context object_at_s1 --format aut -o t.aut\n"
-      "  oasisc export model.aut --format prism -o model   # writes model.tra, model.lab, ...");
+      "  oasisc export model.aut --format prism -o model   # writes model.tra, model.lab, ...\n"
+      "  oasisc export tests/data/prism/two_dice.nm --format umb -o dice.umb");
   command
       ->add_option("file", options->file,
-                   "Spec (.oasis), PRISM program (.pm, .nm, .prism) or model (.aut, .tra, .drn) "
-                   "file")
+                   "Spec (.oasis), PRISM program (.pm, .nm, .prism) or model (.aut, .tra, .drn, "
+                   ".umb) file")
       ->required();
   command->add_option("-c,--context", options->context,
                       "Context to export (needed for aut and prism when the model has several)");
   command->add_option("-f,--format", options->format, "Output format")
       ->required()
-      ->check(CLI::IsMember({"aut", "prism", "drn"}));
+      ->check(CLI::IsMember({"aut", "prism", "drn", "umb"}));
   command
       ->add_option("-o,--output", options->output,
-                   "Output file (aut, drn; '-' for standard output) or base name (prism; "
+                   "Output file (aut, drn, umb; '-' for standard output) or base name (prism; "
                    "'.tra' may be given)")
       ->required();
   add_common_options(*command, options->common);

@@ -282,9 +282,10 @@ CommandRunner add_info_command(CLI::App& app) {
       "Examples:\n  oasisc info specs/discrete_tracking.oasis\n"
       "  oasisc info specs/discrete_tracking.oasis --json | jq '.contexts[].name'");
   command
-      ->add_option("file", options->file,
-                   "Spec (.oasis), PRISM program (.pm, .nm, .prism) or model (.aut, .tra, .drn) "
-                   "file")
+      ->add_option(
+          "file", options->file,
+          "Spec (.oasis), PRISM program (.pm, .nm, .prism) or model (.aut, .tra, .drn, .umb) "
+          "file")
       ->required();
   command->add_flag("--json", options->json,
                     "Print JSON (keys: model, states, actions, contexts[])");

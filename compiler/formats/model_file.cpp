@@ -8,6 +8,7 @@
 #include "formats/aut_reader.hpp"
 #include "formats/drn_reader.hpp"
 #include "formats/explicit_reader.hpp"
+#include "formats/umb_reader.hpp"
 
 namespace oasis::formats {
 namespace {
@@ -70,10 +71,15 @@ std::optional<model::ExplicitModel> read_model_file(const std::string& path, Sou
     if (!file) return std::nullopt;
     return read_drn(*file, diagnostics, options);
   }
+  if (extension == ".umb") {
+    const std::optional<FileId> file = open_file(path, sources, diagnostics, options);
+    if (!file) return std::nullopt;
+    return read_umb(*file, diagnostics, options);
+  }
   if (extension == ".tra") return read_prism_file(path, sources, diagnostics, options);
   diagnostics.file_error(path, "unknown model file type '" + extension +
-                                   "': expected .aut (mCRL2), .tra (PRISM or Storm explicit) or "
-                                   ".drn (Storm)");
+                                   "': expected .aut (mCRL2), .tra (PRISM or Storm explicit), "
+                                   ".drn (Storm) or .umb (PRISM and Storm's binary format)");
   return std::nullopt;
 }
 

@@ -11,7 +11,7 @@
 
 namespace oasis::formats {
 
-// Reads `path` (.aut: mCRL2; .drn: Storm's DRN; .tra: PRISM or Storm, with its
+// Reads `path` (.aut: mCRL2; .drn: Storm's DRN; .umb: UMB; .tra: PRISM or Storm, with its
 // .sta/.lab/.srew/.trew siblings when they exist). Files are memory-mapped and registered in
 // `sources`; a file that cannot be opened, or an unknown extension, is reported with
 // diagnostics.file_error().

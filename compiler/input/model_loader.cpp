@@ -99,7 +99,8 @@ std::optional<LoadedModel> load_model(const std::string& path, SourceManager& so
     hash_input();
     return loaded;
   }
-  if (path.ends_with(".aut") || path.ends_with(".tra") || path.ends_with(".drn")) {
+  if (path.ends_with(".aut") || path.ends_with(".tra") || path.ends_with(".drn") ||
+      path.ends_with(".umb")) {
     formats::ReadOptions read_options;
     read_options.max_bytes = options.max_input_bytes;
     read_options.max_number_bits = options.max_number_bits;

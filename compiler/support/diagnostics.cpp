@@ -100,6 +100,11 @@ void DiagnosticEngine::file_error(std::string_view path, std::string_view messag
   out_ << report_line(path, "error", text::printable_message(message));
 }
 
+void DiagnosticEngine::file_warning(std::string_view path, std::string_view message) {
+  count(Severity::Warning);
+  out_ << report_line(path, "warning", text::printable_message(message));
+}
+
 void DiagnosticEngine::plain_error(std::string_view message) {
   count(Severity::Error);
   // The program that runs (oasisc, oasisc-mpi, oasis-sim), as its other messages name it.

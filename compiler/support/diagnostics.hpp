@@ -54,6 +54,8 @@ class DiagnosticEngine {
 
   // For problems that belong to a file but to no place in it (cannot open, too large).
   void file_error(std::string_view path, std::string_view message);
+  // The same for a warning (a binary file's doubtful value): "PATH: warning: ...".
+  void file_warning(std::string_view path, std::string_view message);
   // For problems that belong to no file (bad command-line values): "PROGRAM: error: ...".
   void plain_error(std::string_view message);
 

@@ -1,0 +1,252 @@
+// The index of a UMB file (umb_index.hpp), on nlohmann/json. Objects keep the order of the
+// file (ordered_json), so reward annotations become contexts in the order they are listed.
+
+#include "formats/umb_index.hpp"
+
+#include <limits>
+
+#include <nlohmann/json.hpp>
+
+namespace oasis::formats {
+namespace {
+
+using Json = nlohmann::ordered_json;
+
+// Thrown inside this file only, caught by read_umb_index: the first problem ends the reading.
+struct IndexError {
+  std::string message;
+};
+
+[[noreturn]] void fail(std::string message) {
+  throw IndexError{std::move(message)};
+}
+
+const Json& member(const Json& object, const char* key, const std::string& where) {
+  const auto it = object.find(key);
+  if (it == object.end()) fail(where + "has no \"" + key + "\"");
+  return *it;
+}
+
+const Json& object_at(const Json& object, const char* key, const std::string& where) {
+  const Json& value = member(object, key, where);
+  if (!value.is_object()) fail(where + "\"" + key + "\" is not an object");
+  return value;
+}
+
+std::uint64_t count_at(const Json& object, const char* key, const std::string& where,
+                       std::uint64_t max) {
+  const Json& value = member(object, key, where);
+  if (!value.is_number_unsigned() && !(value.is_number_integer() && value.get<std::int64_t>() >= 0))
+    fail(where + "\"" + key + "\" is not a whole number");
+  const auto count = value.get<std::uint64_t>();
+  if (count > max) {
+    fail(where + "\"" + key + "\" is " + std::to_string(count) + ", more than oasis reads (" +
+         std::to_string(max) + ")");
+  }
+  return count;
+}
+
+std::string string_at(const Json& object, const char* key, const std::string& where) {
+  const Json& value = member(object, key, where);
+  if (!value.is_string()) fail(where + "\"" + key + "\" is not a string");
+  return value.get<std::string>();
+}
+
+std::uint64_t default_bits(const std::string& type) {
+  if (type == "bool") return 1;
+  if (type == "rational" || type == "int-interval" || type == "uint-interval" ||
+      type == "double-interval")
+    return 128;
+  if (type == "rational-interval") return 256;
+  return 64;
+}
+
+umb::ValueType type_at(const Json& object, const char* key, const std::string& where) {
+  const Json& value = member(object, key, where);
+  if (!value.is_object()) fail(where + "\"" + key + "\" is not a type object");
+  const std::string inner = where + "\"" + key + "\": ";
+  umb::ValueType type;
+  type.name = string_at(value, "type", inner);
+  type.bits =
+      value.contains("size") ? count_at(value, "size", inner, UINT32_MAX) : default_bits(type.name);
+  if (type.bits == 0) fail(inner + "\"size\" is 0");
+  return type;
+}
+
+// A number type oasis reads exactly: a 64-bit double or a rational of 128k bits.
+void check_number_type(const umb::ValueType& type, const std::string& where) {
+  if (type.name == "double") {
+    if (type.bits != 64) fail(where + "a double has 64 bits, not " + std::to_string(type.bits));
+    return;
+  }
+  if (type.name == "rational") {
+    if (type.bits % 128 != 0) {
+      fail(where + "a rational's size must be a multiple of 128 bits, not " +
+           std::to_string(type.bits));
+    }
+    return;
+  }
+  fail(where + "values of type '" + type.name +
+       "' are not supported: oasis reads double and rational numbers");
+}
+
+bool is_identifier(const std::string& id) {
+  if (id.empty()) return false;
+  for (const char c : id) {
+    if (!((c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '_' || c == '-')) return false;
+  }
+  return true;
+}
+
+std::vector<UmbAnnotation> read_group(const Json& annotations, const char* group, bool aps) {
+  std::vector<UmbAnnotation> result;
+  const auto found = annotations.find(group);
+  if (found == annotations.end()) return result;
+  const std::string where = std::string("annotations: \"") + group + "\": ";
+  if (!found->is_object()) fail(where + "is not an object");
+  for (const auto& [id, value] : found->items()) {
+    const std::string here = where + "\"" + id + "\": ";
+    if (!is_identifier(id)) {
+      fail(here + "an identifier holds only lower-case letters, digits, '_' and '-'");
+    }
+    if (!value.is_object()) fail(here + "is not an object");
+    UmbAnnotation annotation;
+    annotation.id = id;
+    annotation.name = value.contains("alias") ? string_at(value, "alias", here) : id;
+    if (!is_umb_name(annotation.name) || annotation.name.empty())
+      fail(here + "the alias is empty or holds a control character");
+    if (value.contains("probability-type"))
+      fail(here + "annotations with distributions over values are not supported");
+    const Json& applies = member(value, "applies-to", here);
+    if (!applies.is_array() || applies.empty()) fail(here + "\"applies-to\" is not a list");
+    for (const Json& entity : applies) {
+      const std::string text = entity.is_string() ? entity.get<std::string>() : "";
+      if (text == "states") {
+        annotation.states = true;
+      } else if (text == "choices" && !aps) {
+        annotation.choices = true;
+      } else if (text == "branches" && !aps) {
+        annotation.branches = true;
+      } else {
+        fail(here + "applies to " + (entity.is_string() ? "'" + text + "'" : entity.dump()) +
+             (aps ? ": an atomic proposition applies to states"
+                  : ": oasis reads rewards of "
+                    "states, choices and branches"));
+      }
+    }
+    annotation.type = type_at(value, "type", here);
+    if (aps && (annotation.type.name != "bool" || annotation.type.bits != 1)) {
+      fail(here + "an atomic proposition has the type bool (1 bit)");
+    }
+    if (!aps) check_number_type(annotation.type, here);
+    for (const UmbAnnotation& other : result) {
+      if (other.name == annotation.name) fail(here + "'" + annotation.name + "' is named twice");
+    }
+    result.push_back(std::move(annotation));
+  }
+  return result;
+}
+
+void read_transition_system(const Json& ts, const ReadOptions& options, UmbIndex& index) {
+  const std::string where = "transition-system: ";
+  const std::string time = string_at(ts, "time", where);
+  if (time != "discrete") {
+    fail(where + "time '" + time +
+         "' is not supported: oasis reads discrete-time models (DTMCs and MDPs)");
+  }
+  const std::uint64_t players = count_at(ts, "#players", where, UINT32_MAX);
+  if (players > 1) {
+    fail(where + "a game of " + std::to_string(players) +
+         " players is not supported: oasis reads DTMCs (0 players) and MDPs (1)");
+  }
+  index.markov_chain = players == 0;
+  index.num_states = count_at(ts, "#states", where, options.max_states);
+  if (index.num_states == 0) fail(where + "\"#states\" is 0: the model has no states");
+  index.num_initial_states = count_at(ts, "#initial-states", where, index.num_states);
+  // Edge and choice indices are 32-bit.
+  index.num_choices = count_at(ts, "#choices", where, UINT32_MAX - 1);
+  index.num_choice_actions = count_at(ts, "#choice-actions", where, UINT32_MAX);
+  index.num_branches = count_at(ts, "#branches", where, UINT32_MAX - 2);
+  if (count_at(ts, "#observations", where, std::numeric_limits<std::uint64_t>::max()) != 0)
+    fail(where + "observations are not supported: oasis reads fully observable models");
+  if (!ts.contains("branch-probability-type")) {
+    fail(where +
+         "there is no \"branch-probability-type\": a model without probabilities "
+         "(an LTS) is not supported");
+  }
+  index.probability = type_at(ts, "branch-probability-type", where);
+  check_number_type(index.probability, where + "\"branch-probability-type\": ");
+}
+
+}  // namespace
+
+bool is_umb_name(std::string_view text) {
+  std::size_t i = 0;
+  while (i < text.size()) {
+    const auto byte = static_cast<unsigned char>(text[i]);
+    if (byte < 0x20 || byte == 0x7f) return false;
+    std::size_t length = 1;
+    std::uint32_t code = byte;
+    if (byte >= 0x80) {
+      if (byte >= 0xc2 && byte <= 0xdf) {
+        length = 2;
+        code = byte & 0x1fU;
+      } else if (byte >= 0xe0 && byte <= 0xef) {
+        length = 3;
+        code = byte & 0x0fU;
+      } else if (byte >= 0xf0 && byte <= 0xf4) {
+        length = 4;
+        code = byte & 0x07U;
+      } else {
+        return false;
+      }
+      if (i + length > text.size()) return false;
+      for (std::size_t k = 1; k < length; ++k) {
+        const auto next = static_cast<unsigned char>(text[i + k]);
+        if ((next & 0xc0U) != 0x80U) return false;
+        code = (code << 6) | (next & 0x3fU);
+      }
+      // Overlong forms, surrogates and code points past U+10FFFF are not UTF-8.
+      const std::uint32_t least = length == 2 ? 0x80 : length == 3 ? 0x800 : 0x10000;
+      if (code < least || code > 0x10ffff || (code >= 0xd800 && code <= 0xdfff)) return false;
+      if (code >= 0x80 && code < 0xa0) return false;  // C1 control characters
+    }
+    i += length;
+  }
+  return true;
+}
+
+bool read_umb_index(std::string_view text, const ReadOptions& options, UmbIndex& index,
+                    std::string& error) {
+  Json json;
+  try {
+    json = Json::parse(text);
+  } catch (const Json::parse_error& problem) {
+    error = "index.json is not valid JSON (at byte " + std::to_string(problem.byte) + ")";
+    return false;
+  }
+  try {
+    if (!json.is_object()) fail("is not a JSON object");
+    const std::uint64_t version = count_at(json, "format-version", "", UINT32_MAX);
+    if (version != 1) {
+      fail("format version " + std::to_string(version) +
+           " is not supported: oasis reads version 1");
+    }
+    read_transition_system(object_at(json, "transition-system", ""), options, index);
+    const auto annotations = json.find("annotations");
+    if (annotations != json.end()) {
+      if (!annotations->is_object()) fail("\"annotations\" is not an object");
+      index.aps = read_group(*annotations, "aps", true);
+      index.rewards = read_group(*annotations, "rewards", false);
+    }
+  } catch (const IndexError& problem) {
+    error = "index.json: " + problem.message;
+    return false;
+  } catch (const Json::exception& problem) {  // a value of another type than checked
+    error = "index.json: unexpected content (" + std::string(problem.what()) + ")";
+    return false;
+  }
+  return true;
+}
+
+}  // namespace oasis::formats
