@@ -56,10 +56,9 @@ bool read_data(archive* a, const std::string& name, std::size_t& room, std::stri
   }
 }
 
-la_ssize_t write_to_file(archive* /*a*/, void* client, const void* buffer, std::size_t length) {
-  auto* out = static_cast<AtomicFile*>(client);
-  out->append(std::string_view(static_cast<const char*>(buffer), length));
-  return out->good() ? static_cast<la_ssize_t>(length) : -1;
+la_ssize_t write_to_string(archive* /*a*/, void* client, const void* buffer, std::size_t length) {
+  static_cast<std::string*>(client)->append(static_cast<const char*>(buffer), length);
+  return static_cast<la_ssize_t>(length);
 }
 
 }  // namespace
@@ -107,11 +106,11 @@ bool read_umb_archive(std::string_view bytes, std::size_t max_bytes, std::vector
   }
 }
 
-bool write_umb_archive(const std::vector<UmbEntry>& entries, AtomicFile& out, std::string& error) {
+bool write_umb_archive(const std::vector<UmbEntry>& entries, std::string& out, std::string& error) {
   const std::unique_ptr<archive, WriteCloser> owner(archive_write_new());
   archive* a = owner.get();
   const auto fail = [&](const char* what) {
-    error = out.good() ? std::string(what) + ": " + reason(a, "libarchive failed") : out.error();
+    error = std::string(what) + ": " + reason(a, "libarchive failed");
     return false;
   };
   if (a == nullptr) return fail("cannot start the archive");
@@ -123,7 +122,7 @@ bool write_umb_archive(const std::vector<UmbEntry>& entries, AtomicFile& out, st
       archive_write_set_bytes_in_last_block(a, 1) != ARCHIVE_OK) {
     return fail("cannot set up the archive");
   }
-  if (archive_write_open(a, &out, nullptr, write_to_file, nullptr) != ARCHIVE_OK)
+  if (archive_write_open(a, &out, nullptr, write_to_string, nullptr) != ARCHIVE_OK)
     return fail("cannot start the archive");
   for (const UmbEntry& item : entries) {
     const std::unique_ptr<archive_entry, EntryCloser> entry(archive_entry_new());

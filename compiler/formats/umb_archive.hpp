@@ -14,8 +14,6 @@
 #include <utility>
 #include <vector>
 
-#include "support/atomic_file.hpp"
-
 namespace oasis::formats {
 
 struct UmbEntry {
@@ -29,8 +27,8 @@ struct UmbEntry {
 bool read_umb_archive(std::string_view bytes, std::size_t max_bytes, std::vector<UmbEntry>& entries,
                       std::string& error);
 
-// Writes `entries`, in order, as a gzip-compressed tar archive to `out` (already open; the
-// caller commits). Returns false and sets `error` when libarchive or the file fails.
-bool write_umb_archive(const std::vector<UmbEntry>& entries, AtomicFile& out, std::string& error);
+// Writes `entries`, in order, as a gzip-compressed tar archive into `out`. Returns false and
+// sets `error` when libarchive fails.
+bool write_umb_archive(const std::vector<UmbEntry>& entries, std::string& out, std::string& error);
 
 }  // namespace oasis::formats

@@ -338,8 +338,8 @@ class UmbWriter {
 
 }  // namespace
 
-bool write_umb(const model::ExplicitModel& model, std::span<const std::size_t> contexts,
-               AtomicFile& out, std::string& error) {
+bool write_umb_bytes(const model::ExplicitModel& model, std::span<const std::size_t> contexts,
+                     std::string& bytes, std::string& error) {
   if (contexts.empty()) {
     error = "cannot write a UMB file: no context chosen";
     return false;
@@ -357,7 +357,18 @@ bool write_umb(const model::ExplicitModel& model, std::span<const std::size_t> c
     error = "cannot write a UMB file: " + *problem;
     return false;
   }
-  return write_umb_archive(writer.entries(), out, error);
+  bytes.clear();
+  return write_umb_archive(writer.entries(), bytes, error);
+}
+
+bool write_umb(const model::ExplicitModel& model, std::span<const std::size_t> contexts,
+               AtomicFile& out, std::string& error) {
+  std::string bytes;
+  if (!write_umb_bytes(model, contexts, bytes, error)) return false;
+  out.append(bytes);
+  if (out.good()) return true;
+  error = out.error();
+  return false;
 }
 
 bool write_umb_file(const model::ExplicitModel& model, std::span<const std::size_t> contexts,

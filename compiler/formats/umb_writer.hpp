@@ -24,6 +24,10 @@ namespace oasis::formats {
 bool write_umb(const model::ExplicitModel& model, std::span<const std::size_t> contexts,
                AtomicFile& out, std::string& error);
 
+// The same into `bytes` (replaced).
+bool write_umb_bytes(const model::ExplicitModel& model, std::span<const std::size_t> contexts,
+                     std::string& bytes, std::string& error);
+
 // The same into the file at `path`, which appears only if everything was written.
 bool write_umb_file(const model::ExplicitModel& model, std::span<const std::size_t> contexts,
                     const std::string& path, std::string& error);
