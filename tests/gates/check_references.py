@@ -38,6 +38,7 @@ NOT_REFERENCES = (
     r"(build|out|b)/.*",  # build outputs
     r"(oasis|rt)/.*",  # installed header paths, include/oasis/rt
     r"(lib|bin|share|include)/.*",  # the install tree
+    r"(actions|annotations|observations|valuations)/.*",  # entries inside a UMB file
     r"(nlohmann|CLI|yaml-cpp|opencv2|CGAL|Eigen|ros|rosbag|cv_bridge|sensor_msgs|std_msgs|"
     r"geometry_msgs|nav_msgs|visualization_msgs|diagnostic_msgs|message_filters|gtest|gmock|"
     r"benchmark|apriltag|linux|sys|unitree_legged_sdk|lib/cpp)/.*",  # outside libraries' headers
