@@ -24,6 +24,7 @@
 #include "pipeline/continuous_catalog_data.hpp"
 #include "pipeline/continuous_options.hpp"
 #include "pipeline/discrete_catalog.hpp"
+#include "property/catalog_guarantees.hpp"
 #include "support/atomic_file.hpp"
 #include "support/error_report.hpp"
 #include "support/limits.hpp"
@@ -69,6 +70,23 @@ void print_continuous_summary(const pipeline::ContinuousCatalog& catalog, std::F
       std::fprintf(stream,
                    "  note: the cell budget (--max-cells) stopped the refinement above the "
                    "target epsilon\n");
+    }
+  }
+}
+
+// What each context's policy and the optimum give the spec's properties, one line each.
+void print_guarantees(const model::CatalogData& catalog, std::FILE* stream) {
+  const auto value = [](const double* bounds, const std::string& exact) {
+    if (!exact.empty()) return exact;
+    return "[" + shortest_double(bounds[0]) + ", " + shortest_double(bounds[1]) + "]";
+  };
+  for (const model::AbstractionData& a : catalog.abstractions) {
+    for (std::size_t k = 0; k < catalog.properties.size(); ++k) {
+      const double* bounds = a.guarantee.data() + k * rt::kGuaranteeFields;
+      std::fprintf(stream, "context %s: %s = %s under its policy, %s at the optimum\n",
+                   a.context.c_str(), catalog.properties[k].name.c_str(),
+                   value(bounds + rt::kPolicyLower, a.guarantee_exact[k * 2]).c_str(),
+                   value(bounds + rt::kOptimumLower, a.guarantee_exact[k * 2 + 1]).c_str());
     }
   }
 }
@@ -158,6 +176,10 @@ int run_compile(CompileOptions options) {
       report_error(options.spec, error);
       return 1;
     }
+    if (!property::state_guarantees(*loaded->model, loaded->names, loaded->properties, *catalog,
+                                    diagnostics))
+      return 1;
+    print_guarantees(*catalog, to_standard_output ? stderr : stdout);
     written = codegen::write_discrete_catalog(options, *catalog, out, error);
   }
   if (!written ||

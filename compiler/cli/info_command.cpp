@@ -155,6 +155,15 @@ nlohmann::json to_json(const LoadedModel& loaded,
     contexts.push_back(context);
   }
   out["contexts"] = contexts;
+  // The stated properties (docs/spec-language.md, "Properties"); their values are the
+  // catalog's, which `compile` prints and writes.
+  nlohmann::json properties = nlohmann::json::array();
+  for (std::size_t k = 0; k < loaded.properties.size(); ++k) {
+    const auto& stated = loaded.model ? loaded.model->properties : loaded.ir->properties;
+    properties.push_back(
+        {{"name", stated[k].name}, {"property", loaded.properties[k].properties.front().text}});
+  }
+  out["properties"] = properties;
   out["observation"] = observation_json(
       loaded.model ? loaded.model->observation : loaded.ir->observation,
       loaded.model ? &loaded.model->states : nullptr, loaded.ir ? &*loaded.ir : nullptr);
@@ -246,6 +255,10 @@ void print_text(const LoadedModel& loaded, const std::vector<model::ContextStati
     } else {
       print_relevance(summary["contexts"][c]);
     }
+  }
+  for (const auto& property : summary["properties"]) {
+    std::cout << "  property " << property["name"].get<std::string>() << " = "
+              << property["property"].get<std::string>() << '\n';
   }
 }
 

@@ -2,7 +2,6 @@
 // on one line, exactly (rationals) or with a sound interval (docs/properties.md).
 
 #include <algorithm>
-#include <charconv>
 #include <iostream>
 #include <memory>
 #include <set>
@@ -24,13 +23,6 @@
 namespace oasis::cli {
 namespace {
 
-// Models up to this many states are answered exactly when no mode is asked for; past it, or
-// when the exact solve refuses the model, soundly.
-constexpr std::uint32_t kAutoExactStates = 100'000;
-// In auto mode the exact solve also gives up once a number passes this many bits (and the
-// answer comes from the sound mode): numbers that long mean slow rational arithmetic, and a
-// model whose elimination grows them so far is answered sooner by interval iteration.
-constexpr std::size_t kAutoExactNumberBits = std::size_t{1} << 16;
 // An exact answer is printed as its fraction up to this many characters; past it, in
 // scientific form with its length (a fraction of megabytes helps nobody on a terminal).
 constexpr std::size_t kMaxPrintedFraction = 2000;
@@ -89,12 +81,6 @@ std::string rewards_used(const std::vector<property::PropertiesFile>& files) {
   return list;
 }
 
-std::string shortest(double value) {
-  char buffer[32];
-  const auto end = std::to_chars(buffer, buffer + sizeof buffer, value).ptr;
-  return {buffer, end};
-}
-
 std::string value_text(const modelcheck::Value& value, modelcheck::Mode mode, bool whole) {
   if (value.infinite) return " = infinity";
   if (mode == modelcheck::Mode::kExact) {
@@ -106,7 +92,7 @@ std::string value_text(const modelcheck::Value& value, modelcheck::Mode mode, bo
     approx << value.exact.get_d();
     return " = " + exact + " (about " + approx.str() + ")";
   }
-  return " in [" + shortest(value.lower) + ", " + shortest(value.upper) + "]";
+  return " in [" + shortest_double(value.lower) + ", " + shortest_double(value.upper) + "]";
 }
 
 std::string truth_text(const property::Answer& answer, const model::ExplicitModel& model) {
@@ -223,11 +209,11 @@ int run_query(const QueryOptions& options) {
   modelcheck::Options engine;
   engine.precision = options.precision;
   engine.max_number_bits = load.max_number_bits;
-  const bool exact =
-      options.mode == "exact" || (options.mode == "auto" && model.num_states() <= kAutoExactStates);
+  const bool exact = options.mode == "exact" ||
+                     (options.mode == "auto" && model.num_states() <= modelcheck::kAutoExactStates);
   engine.mode = exact ? modelcheck::Mode::kExact : modelcheck::Mode::kSound;
   if (options.mode == "auto")
-    engine.max_number_bits = std::min(engine.max_number_bits, kAutoExactNumberBits);
+    engine.max_number_bits = std::min(engine.max_number_bits, modelcheck::kAutoExactNumberBits);
   engine.want_scheduler = !options.scheduler_path.empty();
   bool all_answered = true;
   nlohmann::json schedulers = nlohmann::json::array();

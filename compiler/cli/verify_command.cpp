@@ -13,6 +13,7 @@
 #include "oasis/rt/catalog_file.hpp"
 #include "oasis/rt/catalog_validation.hpp"
 #include "oasis/rt/spec_hash.hpp"
+#include "property/catalog_guarantees.hpp"
 #include "support/error_report.hpp"
 #include "text/printable_text.hpp"
 #include "verify/continuous_check.hpp"
@@ -47,8 +48,10 @@ bool compiled_from_model(const VerifyOptions& options, std::uint64_t hash,
 
 // `verify MODEL CATALOG.bin`: the file loads (magic, checksum, structure), was compiled from
 // this spec, and every item it carries holds (verify/discrete_catalog_check.hpp).
-int verify_catalog(const VerifyOptions& options, const model::ExplicitModel& model,
-                   std::uint64_t hash) {
+int verify_catalog(const VerifyOptions& options, const LoadedModel& loaded,
+                   DiagnosticEngine& diagnostics) {
+  const model::ExplicitModel& model = *loaded.model;
+  const std::uint64_t hash = loaded.source_hash;
   const rt::LoadedCatalog catalog = rt::LoadedCatalog::from_file(options.result);
   if (!catalog.ok()) {
     std::cerr << catalog.error() << '\n';
@@ -60,8 +63,13 @@ int verify_catalog(const VerifyOptions& options, const model::ExplicitModel& mod
     report_error(options.result, "a continuous catalog, but the model is explicit");
     return 1;
   }
-  return print_checks(
-      verify::check_discrete_catalog(model, view, {.robust_p_correct = options.p_correct}));
+  std::vector<verify::CatalogCheck> checks =
+      verify::check_discrete_catalog(model, view, {.robust_p_correct = options.p_correct});
+  // The stated properties, recomputed on the model's own states (catalog_guarantees.hpp).
+  for (property::GuaranteeVerdict& verdict :
+       property::check_guarantees(model, loaded.names, loaded.properties, view, diagnostics))
+    checks.push_back({std::move(verdict.item), std::move(verdict.verdict), verdict.ok});
+  return print_checks(checks);
 }
 
 // The checks of a continuous catalog, whichever file it came from (the binary file, loaded
@@ -127,7 +135,7 @@ int run_verify(const VerifyOptions& options) {
   const model::ExplicitModel& model = *loaded->model;
   std::string error;
   // A compiled binary catalog (oasisc compile): everything it carries is checked.
-  if (options.result.ends_with(".bin")) return verify_catalog(options, model, loaded->source_hash);
+  if (options.result.ends_with(".bin")) return verify_catalog(options, *loaded, diagnostics);
   const auto result = verify::read_partition_result(options.result, model,
                                                     options.common.load.max_input_bytes, error);
   if (!result) {

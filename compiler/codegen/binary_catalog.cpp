@@ -151,6 +151,22 @@ void add_grid(const model::AbstractionData& abstraction, std::uint32_t i, Builde
   out.of_abstraction<rt::Section::kBspCell>(i, abstraction.bsp_cell);
 }
 
+// The stated properties: their names and texts, "name\0text\0" each, and per abstraction its
+// guarantees (absent, as the loader expects, when the catalog states none).
+void add_properties(const model::CatalogData& catalog, Builder& out) {
+  if (catalog.properties.empty()) return;
+  std::string text;
+  for (const model::StatedProperty& property : catalog.properties) {
+    text += property.name;
+    text += '\0';
+    text += property.text;
+    text += '\0';
+  }
+  out.wide<rt::Section::kPropertyText>(text.data(), text.size());
+  for (std::uint32_t i = 0; i < catalog.abstractions.size(); ++i)
+    out.of_abstraction<rt::Section::kGuarantee>(i, catalog.abstractions[i].guarantee);
+}
+
 }  // namespace
 
 std::string binary_catalog(const model::CatalogData& catalog) {
@@ -202,6 +218,7 @@ std::string binary_catalog(const model::CatalogData& catalog) {
     add_csr<rt::Section::kStateRows, rt::Section::kStateTargets, rt::Section::kStateProbabilities>(
         abstraction.state_transitions, i, out);
   }
+  add_properties(catalog, out);
   return out.finish();
 }
 

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <charconv>
+#include <cmath>
 #include <cstdio>
 
 #include "support/text.hpp"
@@ -28,6 +29,7 @@ std::string number(std::uint32_t value) {
 }
 
 std::string number(double value) {
+  if (std::isinf(value)) return value > 0 ? "HUGE_VAL" : "-HUGE_VAL";  // an infinite reward
   char text[32];
   const auto result = std::to_chars(text, text + sizeof text, value);  // shortest round-trip form
   std::string out(text, result.ptr);
@@ -104,9 +106,42 @@ std::string abstraction(std::string& out, std::size_t index, const model::Abstra
   const std::string policy = array(out, "std::uint32_t", p + "_policy", data.policy);
   const std::string value = array(out, "double", p + "_value", data.value);
   const std::string state_transitions = csr(out, p + "_state_transitions", data.state_transitions);
+  const std::string guarantee =
+      data.guarantee.empty() ? "nullptr" : "&kGuarantees[" + std::to_string(index) + "][0][0]";
   return "    {" + literal(data.context) + ", " + std::to_string(data.num_blocks) + "u, " +
          block_of + ", " + block_reward + ", " + quotient + ", " + reward + ", " + policy + ", " +
-         value + ", " + state_transitions + ",\n     " + grid(out, p, data) + "},\n";
+         value + ", " + state_transitions + ",\n     " + grid(out, p, data) + ", " + guarantee +
+         "},\n";
+}
+
+// The stated properties as constants of the header: an index per property and, per context
+// and property, the rt::GuaranteeField bounds (the view's guarantee arrays point into them).
+std::string guarantee_constants(const model::CatalogData& catalog) {
+  if (catalog.properties.empty()) return "";
+  std::string out =
+      "// The spec's properties, and what each context's policy and the optimum give them: per\n"
+      "// context and property, bounds on the policy's value and on the optimum (lower, upper,\n"
+      "// lower, upper; oasis::rt::GuaranteeField). Exact values are in the catalog's JSON.\n";
+  out += "inline constexpr std::uint32_t kNumProperties = " +
+         std::to_string(catalog.properties.size()) + ";\nnamespace property {\n";
+  for (std::size_t k = 0; k < catalog.properties.size(); ++k) {
+    out += "inline constexpr std::uint32_t " + catalog.properties[k].name + " = " +
+           std::to_string(k) + ";  // " + catalog.properties[k].text + "\n";
+  }
+  out +=
+      "}  // namespace property\ninline constexpr double kGuarantees[kNumAbstractions]"
+      "[kNumProperties][oasis::rt::kGuaranteeFields] = {\n";
+  for (const model::AbstractionData& data : catalog.abstractions) {
+    out += "    {  // " + data.context + "\n";
+    for (std::size_t k = 0; k < data.guarantee.size(); k += rt::kGuaranteeFields) {
+      out += "        {";
+      for (std::size_t f = 0; f < rt::kGuaranteeFields; ++f)
+        out += (f ? ", " : "") + number(data.guarantee[k + f]);
+      out += "},\n";
+    }
+    out += "    },\n";
+  }
+  return out + "};\n\n";
 }
 
 std::string header(const model::CatalogData& catalog, std::string_view spec_file_name) {
@@ -127,6 +162,7 @@ std::string header(const model::CatalogData& catalog, std::string_view spec_file
   out += "inline constexpr std::uint32_t kNumAbstractions = " +
          std::to_string(catalog.abstractions.size()) + ";\n";
   out += "inline constexpr std::uint32_t kMaxBlocks = " + std::to_string(max_blocks) + ";\n\n";
+  out += guarantee_constants(catalog);
   out += "// The catalog, linked into the program (trusted: no validation needed).\n";
   out += "const oasis::rt::CatalogView& catalog();\n\n}  // namespace " + catalog.name + "\n";
   return out;
@@ -148,6 +184,16 @@ CppSources cpp_catalog(const model::CatalogData& catalog, std::string_view basen
   const std::string variable_names = catalog.variable_names.empty()
                                          ? "nullptr"
                                          : strings(out, "kVariableNames", catalog.variable_names);
+  std::vector<std::string> names;
+  std::vector<std::string> texts;
+  for (const model::StatedProperty& property : catalog.properties) {
+    names.push_back(property.name);
+    texts.push_back(property.text);
+  }
+  const std::string property_names =
+      names.empty() ? "nullptr" : strings(out, "kPropertyNames", names);
+  const std::string property_texts =
+      texts.empty() ? "nullptr" : strings(out, "kPropertyTexts", texts);
   const std::string switching = array(out, "double", "kSwitching", catalog.switching);
   const std::string prior = array(out, "double", "kPrior", catalog.prior);
   const std::string confusion = array(out, "double", "kConfusion", catalog.confusion);
@@ -175,8 +221,9 @@ CppSources cpp_catalog(const model::CatalogData& catalog, std::string_view basen
          std::to_string(static_cast<std::uint32_t>(catalog.reward_source)) + "u), {" +
          std::to_string(noise.detection.size()) + "u, " + object_of + ", " + object_sigma + ", " +
          object_detection + "}},\n";
-  out +=
-      "    " + std::to_string(catalog.variable_names.size()) + "u, " + variable_names + ",\n};\n\n";
+  out += "    " + std::to_string(catalog.variable_names.size()) + "u, " + variable_names + ",\n";
+  out += "    {" + std::to_string(catalog.properties.size()) + "u, " + property_names + ", " +
+         property_texts + "},\n};\n\n";
   out +=
       "}  // namespace\n\nconst oasis::rt::CatalogView& catalog() { return kCatalog; }\n\n}  // "
       "namespace " +

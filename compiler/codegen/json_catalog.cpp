@@ -1,9 +1,41 @@
 #include "codegen/json_catalog.hpp"
 
+#include <cmath>
+
 #include "oasis/rt/spec_hash.hpp"
 
 namespace oasis::codegen {
 namespace {
+
+// A bound as JSON: a number, or "infinity" (an expected reward that is), which JSON's numbers
+// cannot hold.
+nlohmann::json bound_json(double bound) {
+  if (std::isinf(bound)) return bound > 0 ? "infinity" : "-infinity";
+  return bound;
+}
+
+// One value of a guarantee: its exact fraction when known, and the interval around it.
+nlohmann::json guarantee_value_json(const model::AbstractionData& data, std::size_t property,
+                                    std::size_t which) {
+  const std::size_t at = property * rt::kGuaranteeFields + which * 2;
+  nlohmann::json value = {{"lower", bound_json(data.guarantee[at])},
+                          {"upper", bound_json(data.guarantee[at + 1])}};
+  const std::string& exact = data.guarantee_exact[property * 2 + which];
+  if (!exact.empty()) value["exact"] = exact;
+  return value;
+}
+
+// What the abstraction's policy and the optimum give each stated property.
+nlohmann::json guarantees_json(const model::CatalogData& catalog,
+                               const model::AbstractionData& data) {
+  nlohmann::json list = nlohmann::json::array();
+  for (std::size_t k = 0; k < catalog.properties.size(); ++k) {
+    list.push_back({{"property", catalog.properties[k].name},
+                    {"policy", guarantee_value_json(data, k, 0)},
+                    {"optimum", guarantee_value_json(data, k, 1)}});
+  }
+  return list;
+}
 
 nlohmann::json abstraction_json(const model::CatalogData& catalog,
                                 const model::AbstractionData& data) {
@@ -35,7 +67,10 @@ nlohmann::json abstraction_json(const model::CatalogData& catalog,
                              {"successors", std::move(successors)}});
     }
   }
-  return {{"context", data.context}, {"blocks", blocks}, {"transitions", std::move(transitions)}};
+  nlohmann::json out = {
+      {"context", data.context}, {"blocks", blocks}, {"transitions", std::move(transitions)}};
+  if (!catalog.properties.empty()) out["guarantees"] = guarantees_json(catalog, data);
+  return out;
 }
 
 // null without an observation model; else its kind, p_correct (symmetric) or the confusion
@@ -77,6 +112,12 @@ nlohmann::json catalog_json(const model::CatalogData& catalog) {
   out["switching"] = matrix_rows_json(catalog.switching, catalog.abstractions.size());
   out["prior"] = catalog.prior;
   out["observation"] = observation_json(catalog);
+  if (!catalog.properties.empty()) {
+    nlohmann::json properties = nlohmann::json::array();
+    for (const model::StatedProperty& property : catalog.properties)
+      properties.push_back({{"name", property.name}, {"property", property.text}});
+    out["properties"] = std::move(properties);
+  }
   nlohmann::json abstractions = nlohmann::json::array();
   for (const model::AbstractionData& data : catalog.abstractions)
     abstractions.push_back(abstraction_json(catalog, data));

@@ -201,8 +201,16 @@ struct ObservationDecl {
   SourceRange range;
 };
 
+// `property NAME = P=? [...];`: a PRISM property the catalog states a value for in every
+// context (docs/spec-language.md, "Properties"); its text is read by the property parser.
+struct PropertyDecl {
+  Name name;
+  SourceRange text;
+};
+
 struct CatalogDecl {
   std::optional<Name> name;
+  std::vector<PropertyDecl> properties;
   std::vector<ContextDecl> contexts;
   std::optional<SwitchingDecl> switching;
   std::optional<PriorDecl> prior;

@@ -130,6 +130,23 @@ void check_switching_and_prior(const ast::CatalogDecl& catalog,
   }
 }
 
+void check_properties(const ast::CatalogDecl& catalog, bool continuous, model::ModelIR& ir,
+                      DiagnosticEngine& diagnostics) {
+  NameTable<std::uint32_t> names;
+  for (const ast::PropertyDecl& decl : catalog.properties) {
+    if (continuous) {
+      diagnostics.error(decl.name.range,
+                        "properties are stated for discrete models: a continuous catalog's "
+                        "policies act on cells, whose bounds on the true system are not "
+                        "computed yet");
+      return;
+    }
+    const auto index = static_cast<std::uint32_t>(ir.properties.size());
+    if (!names.declare(decl.name.text, decl.name.range, index, "property", diagnostics)) continue;
+    ir.properties.push_back({std::string(decl.name.text), decl.name.range, decl.text});
+  }
+}
+
 bool check_context_count(const ast::CatalogDecl& catalog, DiagnosticEngine& diagnostics) {
   if (catalog.contexts.empty()) {
     diagnostics.error(catalog.range, "catalog is empty: declare at least one 'context'");

@@ -20,4 +20,10 @@ void check_switching_and_prior(const ast::CatalogDecl& catalog,
                                const NameTable<std::uint32_t>& contexts, model::ModelIR& ir,
                                DiagnosticEngine& diagnostics, ExpressionChecker& expressions);
 
+// Puts the catalog's `property` items into ir.properties: each name once. Their texts are read
+// by the property parser later (input/, which links it); a continuous model, whose catalog
+// states no property values yet, refuses them here.
+void check_properties(const ast::CatalogDecl& catalog, bool continuous, model::ModelIR& ir,
+                      DiagnosticEngine& diagnostics);
+
 }  // namespace oasis::frontend

@@ -403,6 +403,7 @@ class Checker {
     }
     if (diagnostics_.has_errors()) return;
     check_switching_and_prior(catalog, names, ir_, diagnostics_, expressions_);
+    check_properties(catalog, !ir_.continuous.empty(), ir_, diagnostics_);
     if (catalog.observation)
       check_observation(*catalog.observation, scope_, ir_, diagnostics_, expressions_);
   }

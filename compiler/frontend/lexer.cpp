@@ -59,6 +59,7 @@ class Lexer {
       if (diagnostics_.should_stop()) break;
       if (pos_ >= text_.size()) break;
       tokens.push_back(next());
+      if (starts_property(tokens)) tokens.push_back(property_text());
     }
     tokens.push_back(make(TokenKind::EndOfFile, text_.size(), text_.size()));
     return tokens;
@@ -100,6 +101,37 @@ class Lexer {
       return;
     }
     pos_ = end + 2;
+  }
+
+  // `property NAME =` just read: the property's text follows.
+  static bool starts_property(const std::vector<Token>& tokens) {
+    const std::size_t n = tokens.size();
+    return n >= 3 && tokens[n - 1].is(TokenKind::Assign) &&
+           tokens[n - 2].is(TokenKind::Identifier) && tokens[n - 3].is(TokenKind::Identifier) &&
+           tokens[n - 3].text == "property";
+  }
+
+  // Everything up to the next `;` outside a quoted label and a `//` comment, blanks trimmed:
+  // the property language's own lexer reads it later, with its errors placed in this file.
+  Token property_text() {
+    skip_space_and_comments();
+    const std::size_t begin = pos_;
+    std::size_t end = begin;
+    while (pos_ < text_.size() && text_[pos_] != ';') {
+      if (text_[pos_] == '"') {
+        const std::size_t close = text_.find_first_of("\"\n", pos_ + 1);
+        pos_ = close == std::string_view::npos || text_[close] == '\n' ? close : close + 1;
+        if (pos_ == std::string_view::npos) pos_ = text_.size();
+      } else if (text_[pos_] == '/' && peek(1) == '/') {
+        skip_space_and_comments();
+        continue;
+      } else {
+        ++pos_;
+      }
+      end = pos_;
+      skip_space_and_comments();
+    }
+    return make(TokenKind::PropertyText, begin, end);
   }
 
   Token next() {
@@ -309,6 +341,8 @@ std::string_view describe(TokenKind kind) {
       return "'..'";
     case TokenKind::Tilde:
       return "'~'";
+    case TokenKind::PropertyText:
+      return "property";
     case TokenKind::Invalid:
       return "invalid token";
     default:

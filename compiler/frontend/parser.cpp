@@ -540,15 +540,33 @@ class Parser {
         decl.prior = prior();
         return;
       default:
-        // `observation` is contextual, like `epsilon`: no other catalog item starts with a name.
+        // `observation` and `property` are contextual, like `epsilon`: no other catalog item
+        // starts with a name.
         if (at_word("observation")) {
           if (decl.observation) fail(peek(), "the catalog already has an observation model");
           decl.observation = observation();
           return;
         }
+        if (accept_word("property")) {
+          decl.properties.push_back(property());
+          return;
+        }
         fail(peek(),
-             "expected 'context', 'switching', 'prior' or 'observation', found " + found(peek()));
+             "expected 'context', 'switching', 'prior', 'observation' or 'property', found " +
+                 found(peek()));
     }
+  }
+
+  // After `property`: `NAME = TEXT;` (the lexer took TEXT whole, see PropertyText).
+  PropertyDecl property() {
+    PropertyDecl decl;
+    decl.name = expect_name("a property name after 'property'");
+    expect(TokenKind::Assign, "after the property's name");
+    if (!at(TokenKind::PropertyText) || peek().text.empty())
+      fail(peek(), "expected a PRISM property such as 'Pmax=? [F \"goal\"]' after '='");
+    decl.text = range_of(advance());
+    expect(TokenKind::Semicolon, "after the property");
+    return decl;
   }
 
   ObservationDecl observation() {

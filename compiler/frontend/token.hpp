@@ -67,6 +67,9 @@ enum class TokenKind : std::uint8_t {
   Arrow,
   DotDot,
   Tilde,
+  // The text of a PRISM property after `property NAME =`, up to (not with) its `;`: the
+  // property language (docs/properties.md) has its own lexer, so the spec's keeps it whole.
+  PropertyText,
   Invalid,  // the lexer has reported an error for it
 };
 

@@ -11,6 +11,7 @@
 #include "policy/solvability.hpp"
 #include "prism/imported_catalog.hpp"
 #include "prism/load_program.hpp"
+#include "property/catalog_guarantees.hpp"
 
 namespace oasis::input {
 namespace {
@@ -59,14 +60,25 @@ std::optional<model::ExplicitModel> load_prism_program(const std::string& path,
   return model;
 }
 
+// The model's stated properties, parsed into `loaded` (errors placed in the spec).
+bool parse_properties(LoadedModel& loaded, DiagnosticEngine& diagnostics) {
+  auto properties = property::parse_stated_properties(
+      loaded.model ? loaded.model->properties : loaded.ir->properties, diagnostics);
+  if (!properties) return false;
+  loaded.properties = std::move(*properties);
+  return true;
+}
+
 // A spec that imports a PRISM program: the program explored, with the spec's catalog. The
 // hash covers the spec's bytes followed by the program's, so that a catalog compiled from them
 // is stale when either changes.
 bool load_imported_program(LoadedModel& loaded, FileId spec_file, SourceManager& sources,
                            DiagnosticEngine& diagnostics, const LoadOptions& options) {
   const FileId program_file = sources.num_files();
-  loaded.model = prism::load_imported_catalog(*loaded.ir, loaded.path, sources, diagnostics,
-                                              prism_load_options(options));
+  prism::LoadOptions prism_options = prism_load_options(options);
+  prism_options.names = &loaded.names;
+  loaded.model =
+      prism::load_imported_catalog(*loaded.ir, loaded.path, sources, diagnostics, prism_options);
   if (options.progress) std::cerr << "\r\033[K" << std::flush;
   if (!loaded.model) return false;
   std::string both(sources.file(spec_file).text());
@@ -78,7 +90,7 @@ bool load_imported_program(LoadedModel& loaded, FileId spec_file, SourceManager&
   }
   loaded.ir.reset();  // what the spec says is in the model now
   loaded.prism_program = true;
-  return true;
+  return parse_properties(loaded, diagnostics);
 }
 
 }  // namespace
@@ -123,7 +135,10 @@ std::optional<LoadedModel> load_model(const std::string& path, SourceManager& so
     if (!load_imported_program(loaded, input, sources, diagnostics, options)) return std::nullopt;
     return loaded;
   }
-  if (!options.explore || loaded.ir->kind == model::ModelKind::Continuous) return loaded;
+  if (!options.explore || loaded.ir->kind == model::ModelKind::Continuous) {
+    if (!parse_properties(loaded, diagnostics)) return std::nullopt;
+    return loaded;
+  }
 
   model::ExploreOptions explore_options{.max_states = options.max_states, .progress = {}};
   if (options.progress) explore_options.progress = print_progress;
@@ -135,6 +150,7 @@ std::optional<LoadedModel> load_model(const std::string& path, SourceManager& so
     diagnostics.error(loaded.ir->objective_range, *reason);
     return std::nullopt;
   }
+  if (!parse_properties(loaded, diagnostics)) return std::nullopt;
   return loaded;
 }
 

@@ -12,6 +12,7 @@
 #include "model/explicit_model.hpp"
 #include "model/expression.hpp"
 #include "model/model_ir.hpp"
+#include "property/property.hpp"
 #include "support/diagnostics.hpp"
 #include "support/limits.hpp"
 
@@ -34,9 +35,12 @@ struct LoadedModel {
   std::optional<model::ModelIR> ir;           // .oasis specs that write their model
   std::optional<model::ExplicitModel> model;  // discrete specs, PRISM programs and imports
   bool prism_program = false;                 // a PRISM program, given or imported by the spec
-  // A PRISM program given directly: its constants, formulas and variables, which properties
-  // may read (prism::Program::names).
+  // A PRISM program, given directly or imported by a spec: its constants, formulas and
+  // variables, which properties may read (prism::Program::names).
   std::vector<std::pair<std::string, model::Expression>> names;
+  // A spec's stated properties (`property NAME = ...;`), parsed, one file each, in the model's
+  // order (property/catalog_guarantees.hpp answers them).
+  std::vector<property::PropertiesFile> properties;
   // rt::spec_hash of the bytes the front end or the reader parsed, read once: a catalog
   // remembers which spec it was compiled from by it. 0 when LoadOptions::hash_source is false.
   std::uint64_t source_hash = 0;

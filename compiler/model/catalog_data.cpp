@@ -63,6 +63,7 @@ rt::CatalogView CatalogData::view() {
                     data.bsp_cell.data()};
       }
     }
+    view.guarantee = data.guarantee.empty() ? nullptr : data.guarantee.data();
     abstraction_views_.push_back(view);
   }
   rt::CatalogView view;
@@ -91,6 +92,16 @@ rt::CatalogView CatalogData::view() {
     variable_name_pointers_.push_back(variable.c_str());
   view.state_dimension = static_cast<std::uint32_t>(variable_names.size());
   view.variable_names = variable_names.empty() ? nullptr : variable_name_pointers_.data();
+  property_name_pointers_.clear();
+  property_text_pointers_.clear();
+  for (const StatedProperty& property : properties) {
+    property_name_pointers_.push_back(property.name.c_str());
+    property_text_pointers_.push_back(property.text.c_str());
+  }
+  if (!properties.empty()) {
+    view.properties = {static_cast<std::uint32_t>(properties.size()),
+                       property_name_pointers_.data(), property_text_pointers_.data()};
+  }
   return view;
 }
 

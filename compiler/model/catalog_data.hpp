@@ -48,6 +48,18 @@ struct AbstractionData {
   std::vector<std::uint32_t> bsp_below;
   std::vector<std::uint32_t> bsp_above;
   std::vector<std::uint32_t> bsp_cell;  // rt::kInternalNode for internal nodes
+  // The catalog's stated properties (CatalogData::properties), each as rt::kGuaranteeFields
+  // doubles: the policy's value and the optimum, each an interval around the exact value.
+  std::vector<double> guarantee;
+  // [properties * 2]: the policy's and the optimum's exact values as fractions ("1/6"), for
+  // the JSON; empty strings where only the interval is known (a sound answer).
+  std::vector<std::string> guarantee_exact;
+};
+
+// A property a catalog states values for (a spec's `property` item): its name and its text.
+struct StatedProperty {
+  std::string name;
+  std::string text;
 };
 
 // Continuous catalogs: the position noise (rt::PositionNoise); all empty without one.
@@ -78,7 +90,8 @@ struct CatalogData {
   // Continuous catalogs: the state vector's variables (empty for a discrete catalog, which
   // has num_states explicit states instead).
   std::vector<std::string> variable_names;
-  PositionNoiseData position;  // continuous catalogs
+  PositionNoiseData position;              // continuous catalogs
+  std::vector<StatedProperty> properties;  // each abstraction's guarantee, in this order
 
   // A view into this object: valid until it is changed, moved or destroyed. Not const: the
   // view's name tables are kept here.
@@ -88,6 +101,8 @@ struct CatalogData {
   std::vector<const char*> action_name_pointers_;
   std::vector<const char*> state_name_pointers_;
   std::vector<const char*> variable_name_pointers_;
+  std::vector<const char*> property_name_pointers_;
+  std::vector<const char*> property_text_pointers_;
   std::vector<rt::AbstractionView> abstraction_views_;
 };
 

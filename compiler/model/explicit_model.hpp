@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "model/state_labels.hpp"
+#include "support/diagnostics.hpp"
 #include "support/rational.hpp"
 
 namespace oasis::model {
@@ -120,6 +121,14 @@ struct Objective {
 // PRISM's mdp are MDPs, even where each state happens to have one action.
 enum class ModelType { kMdp, kDtmc };
 
+// A spec's `property NAME = ...;` (docs/spec-language.md, "Properties"): where its text is,
+// for the property parser, which reads it there so that its errors point into the spec.
+struct PropertySource {
+  std::string name;
+  SourceRange name_range;
+  SourceRange text;
+};
+
 struct ExplicitModel {
   std::string name;
   ModelType type = ModelType::kMdp;
@@ -131,6 +140,7 @@ struct ExplicitModel {
   Objective objective;
   ObservationSpec observation;
   StateLabels labels;  // atomic propositions; empty for .oasis specs and .aut files
+  std::vector<PropertySource> properties;  // a spec's catalog properties
 
   [[nodiscard]] std::uint32_t num_states() const { return states.size; }
   [[nodiscard]] std::uint32_t num_actions() const {

@@ -346,6 +346,7 @@ class Explorer {
     model.switching = ir_.switching;
     model.objective = ir_.objective;
     model.observation = ir_.observation;
+    model.properties = ir_.properties;
     fill_state_space(model.states);
     std::vector<std::shared_ptr<const TransitionMatrix>> matrices;
     for (Table& table : tables_) {

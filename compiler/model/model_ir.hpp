@@ -131,6 +131,7 @@ struct ModelIR {
   std::vector<Region> regions;
   std::vector<ContextIR> contexts;
   SwitchingModel switching;
+  std::vector<PropertySource> properties;  // the catalog's `property` items
   Objective objective;
   SourceRange objective_range;     // the spec's discount or horizon; else the model's name
   std::optional<Rational> period;  // seconds per step (continuous models)

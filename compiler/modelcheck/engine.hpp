@@ -48,6 +48,14 @@ enum class Optimum { kNone, kMin, kMax };
 
 enum class Mode { kExact, kSound };
 
+// The automatic choice of mode (`oasisc query --mode auto`, a catalog's stated properties):
+// exact up to this many states, sound past it; and the exact solve gives up (for the sound
+// one) once a number passes this many bits, since numbers that long mean slow rational
+// arithmetic, and a model whose elimination grows them so far is answered sooner by interval
+// iteration.
+inline constexpr std::uint32_t kAutoExactStates = 100'000;
+inline constexpr std::size_t kAutoExactNumberBits = std::size_t{1} << 16;
+
 struct Options {
   Mode mode = Mode::kSound;
   double precision = 1e-6;      // kSound: the widest interval allowed

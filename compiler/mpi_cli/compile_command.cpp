@@ -48,6 +48,10 @@ std::optional<model::ExplicitModel> load_discrete_model(
     problem = "a continuous spec's contexts share its geometry: compile it with 'oasisc compile'";
   } else if (loaded->model->num_states() == 0 || loaded->model->contexts.empty()) {
     problem = "the model has no states or no contexts";
+  } else if (!loaded->properties.empty()) {
+    problem =
+        "the spec states properties, which oasisc-mpi does not answer yet: compile it "
+        "with 'oasisc compile'";
   } else if (codegen::wants(options, "svg")) {
     problem = "--format svg draws continuous abstractions; use dot for a discrete model";
   }

@@ -86,6 +86,7 @@ std::optional<model::ExplicitModel> load_imported_catalog(const model::ModelIR& 
   model.switching = ir.switching;
   model.objective = ir.objective;
   model.observation = ir.observation;
+  model.properties = ir.properties;
   return model;
 }
 

@@ -1,5 +1,6 @@
 #include "prism/lexer.hpp"
 
+#include <algorithm>
 #include <array>
 #include <optional>
 #include <string>
@@ -44,6 +45,12 @@ class Lexer {
  public:
   Lexer(FileId file, DiagnosticEngine& diagnostics)
       : file_(file), text_(diagnostics.sources().file(file).text()), diagnostics_(diagnostics) {}
+  // Only [begin, end) of the file; tokens keep their places in the whole file.
+  Lexer(FileId file, std::size_t begin, std::size_t end, DiagnosticEngine& diagnostics)
+      : Lexer(file, diagnostics) {
+    text_ = text_.substr(0, std::min(end, text_.size()));
+    pos_ = std::min(begin, text_.size());
+  }
 
   std::vector<Token> run() {
     std::vector<Token> tokens;
@@ -200,6 +207,11 @@ std::string_view spell(TokenKind kind) {
 
 std::vector<Token> lex(FileId file, DiagnosticEngine& diagnostics) {
   return Lexer(file, diagnostics).run();
+}
+
+std::vector<Token> lex(SourceRange range, DiagnosticEngine& diagnostics) {
+  return Lexer(range.begin.file, range.begin.offset, range.begin.offset + range.length, diagnostics)
+      .run();
 }
 
 }  // namespace oasis::prism

@@ -10,5 +10,7 @@ namespace oasis::prism {
 
 // The tokens of `file`, ending with one EndOfFile token.
 std::vector<Token> lex(FileId file, DiagnosticEngine& diagnostics);
+// The tokens of `range` of a file (a property inside a spec), placed in the whole file.
+std::vector<Token> lex(SourceRange range, DiagnosticEngine& diagnostics);
 
 }  // namespace oasis::prism

@@ -354,6 +354,19 @@ StateSet Evaluator::states_of(const ast::Expr& expr) {
   return set;
 }
 
+// A factored spec's variable (a PRISM program's come with its names): its valuation column.
+std::optional<model::Expression> Evaluator::spec_variable(const ast::Expr& name) const {
+  const auto& variables = model_.states.variables;
+  const auto found = std::find(variables.begin(), variables.end(), name.text);
+  if (found == variables.end()) return std::nullopt;
+  model::Expression variable;
+  variable.op = model::Op::Variable;
+  variable.type = model::Type::Int;
+  variable.slot = static_cast<std::uint32_t>(found - variables.begin());
+  variable.range = name.range;
+  return variable;
+}
+
 std::optional<model::Expression> Evaluator::resolve(const ast::Expr& name) {
   if (name.kind == ast::Expr::Kind::Name) {
     for (const Definition& constant : file_.constants) {
@@ -363,10 +376,12 @@ std::optional<model::Expression> Evaluator::resolve(const ast::Expr& name) {
         names_.begin(), names_.end(), name.text,
         [](const auto& entry, const std::string& key) { return entry.first < key; });
     if (it != names_.end() && it->first == name.text) return it->second;
+    if (const auto variable = spec_variable(name)) return variable;
     diagnostics_.error(name.range, "unknown name " + quoted(name.text) +
-                                       (names_.empty() ? " (this model's states are read through "
-                                                         "its labels, written in quotes: \"goal\")"
-                                                       : ""));
+                                       (names_.empty() && model_.states.variables.empty()
+                                            ? " (this model's states are read through "
+                                              "its labels, written in quotes: \"goal\")"
+                                            : ""));
     return std::nullopt;
   }
   const Extension& node = file_.extensions.at(std::stoul(name.text));
@@ -426,13 +441,24 @@ std::uint32_t Evaluator::label_slot(const LabelReference& label) {
   } else if (label.name == "init") {
     for (const model::StateIndex s : model_.states.initial)
       column[s] = 1;
+  } else if (const auto state =
+                 std::find(model_.states.names.begin(), model_.states.names.end(), label.name);
+             state != model_.states.names.end()) {
+    // A spec's named state is a label that holds in it alone (docs/properties.md).
+    column[static_cast<std::size_t>(state - model_.states.names.begin())] = 1;
   } else {
     std::string known;
     for (const std::string& name : model_.labels.names)
       known += (known.empty() ? "" : ", ") + ("\"" + name + "\"");
+    for (const std::string& name : model_.states.names)
+      known += (known.empty() ? "" : ", ") + ("\"" + name + "\"");
     fail(label.range,
          "unknown label \"" + label.name + "\"" +
-             (known.empty() ? " (the model has no labels)" : " (known: " + known + ")"));
+             (!known.empty() ? " (known: " + known + ")"
+              : model_.states.variables.empty()
+                  ? " (the model has no labels)"
+                  : " (the model has no labels; its variables say which states, as in " +
+                        model_.states.variables.front() + "=0)"));
   }
   columns_.push_back(std::move(column));
   const std::uint32_t slot = width_ + static_cast<std::uint32_t>(columns_.size() - 1);

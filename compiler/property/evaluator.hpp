@@ -77,6 +77,7 @@ class Evaluator {
   Rational constant_number(const prism::ast::Expr& expr, const std::string& what);
   const model::RewardTable& reward_table(const Quantifier& q);
   std::optional<model::Expression> resolve(const prism::ast::Expr& name);
+  std::optional<model::Expression> spec_variable(const prism::ast::Expr& name) const;
   std::uint32_t label_slot(const LabelReference& label);
   std::optional<model::Expression> constant_definition(const Definition& constant);
   std::uint32_t quantifier_slot(const Quantifier& q);

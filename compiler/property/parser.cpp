@@ -351,4 +351,8 @@ PropertiesFile parse_file(FileId file, DiagnosticEngine& diagnostics) {
   return parse(prism::lex(file, diagnostics), diagnostics);
 }
 
+PropertiesFile parse_range(SourceRange range, DiagnosticEngine& diagnostics) {
+  return parse(prism::lex(range, diagnostics), diagnostics);
+}
+
 }  // namespace oasis::property

@@ -15,5 +15,8 @@ PropertiesFile parse(const std::vector<prism::Token>& tokens, DiagnosticEngine& 
 
 // Lexes and parses `file` (which must be text: input validation is the caller's).
 PropertiesFile parse_file(FileId file, DiagnosticEngine& diagnostics);
+// Lexes and parses `range` of a file: a spec's `property NAME = TEXT;` (its TEXT), errors placed
+// in the spec.
+PropertiesFile parse_range(SourceRange range, DiagnosticEngine& diagnostics);
 
 }  // namespace oasis::property

@@ -1,6 +1,7 @@
 #pragma once
 // Small text helpers shared by diagnostics, readers and emitters.
 
+#include <charconv>
 #include <string>
 #include <string_view>
 
@@ -35,6 +36,14 @@ inline std::string_view trim_blanks(std::string_view text) {
   while (!text.empty() && blank(text.back()))
     text.remove_suffix(1);
   return text;
+}
+
+// The shortest decimal that reads back as `value` ("0.1", "1e-06"), as messages and outputs
+// print a double.
+inline std::string shortest_double(double value) {
+  char buffer[32];
+  const auto end = std::to_chars(buffer, buffer + sizeof buffer, value).ptr;
+  return {buffer, end};
 }
 
 }  // namespace oasis

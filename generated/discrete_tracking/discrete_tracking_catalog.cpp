@@ -90,9 +90,9 @@ const double k1_state_transitions_probabilities[] = {
 };
 const oasis::rt::AbstractionView kAbstractions[] = {
     {"object_at_s3", 2u, k0_block_of, k0_block_reward, {k0_quotient_rows, k0_quotient_targets, k0_quotient_probabilities, 5u}, k0_reward, k0_policy, k0_value, {k0_state_transitions_rows, k0_state_transitions_targets, k0_state_transitions_probabilities, 10u},
-     {0u, nullptr, nullptr, nullptr}, nullptr, 0u, 0.0, {0u, 0u, nullptr, nullptr, nullptr, nullptr, nullptr}},
+     {0u, nullptr, nullptr, nullptr}, nullptr, 0u, 0.0, {0u, 0u, nullptr, nullptr, nullptr, nullptr, nullptr}, nullptr},
     {"object_at_s1", 2u, k1_block_of, k1_block_reward, {k1_quotient_rows, k1_quotient_targets, k1_quotient_probabilities, 5u}, k1_reward, k1_policy, k1_value, {k1_state_transitions_rows, k1_state_transitions_targets, k1_state_transitions_probabilities, 10u},
-     {0u, nullptr, nullptr, nullptr}, nullptr, 0u, 0.0, {0u, 0u, nullptr, nullptr, nullptr, nullptr, nullptr}},
+     {0u, nullptr, nullptr, nullptr}, nullptr, 0u, 0.0, {0u, 0u, nullptr, nullptr, nullptr, nullptr, nullptr}, nullptr},
 };
 
 const oasis::rt::CatalogView kCatalog = {
@@ -101,6 +101,7 @@ const oasis::rt::CatalogView kCatalog = {
     2u, kSwitching, kPrior, kAbstractions,
     {static_cast<oasis::rt::ObservationKind>(1u), 0.3, nullptr, static_cast<oasis::rt::RewardSource>(0u), {0u, nullptr, nullptr, nullptr}},
     0u, nullptr,
+    {0u, nullptr, nullptr},
 };
 
 }  // namespace

@@ -10710,9 +10710,9 @@ const std::uint32_t k1_cell_block[] = {
 };
 const oasis::rt::AbstractionView kAbstractions[] = {
     {"human1_holds_treat", 8485u, nullptr, k0_block_reward, {nullptr, nullptr, nullptr, 0u}, k0_reward, k0_policy, k0_value, {nullptr, nullptr, nullptr, 0u},
-     {2u, k0_grid_axes, k0_grid_break_begin, k0_grid_breaks}, k0_cell_block, 8484u, 0.09981884057971015, {0u, 0u, nullptr, nullptr, nullptr, nullptr, nullptr}},
+     {2u, k0_grid_axes, k0_grid_break_begin, k0_grid_breaks}, k0_cell_block, 8484u, 0.09981884057971015, {0u, 0u, nullptr, nullptr, nullptr, nullptr, nullptr}, nullptr},
     {"human2_holds_treat", 8485u, nullptr, k1_block_reward, {nullptr, nullptr, nullptr, 0u}, k1_reward, k1_policy, k1_value, {nullptr, nullptr, nullptr, 0u},
-     {2u, k1_grid_axes, k1_grid_break_begin, k1_grid_breaks}, k1_cell_block, 8484u, 0.09981884057971015, {0u, 0u, nullptr, nullptr, nullptr, nullptr, nullptr}},
+     {2u, k1_grid_axes, k1_grid_break_begin, k1_grid_breaks}, k1_cell_block, 8484u, 0.09981884057971015, {0u, 0u, nullptr, nullptr, nullptr, nullptr, nullptr}, nullptr},
 };
 
 const oasis::rt::CatalogView kCatalog = {
@@ -10721,6 +10721,7 @@ const oasis::rt::CatalogView kCatalog = {
     2u, kSwitching, kPrior, kAbstractions,
     {static_cast<oasis::rt::ObservationKind>(0u), 1.0, nullptr, static_cast<oasis::rt::RewardSource>(0u), {2u, kObjectOf, kObjectSigma, kObjectDetection}},
     4u, kVariableNames,
+    {0u, nullptr, nullptr},
 };
 
 }  // namespace

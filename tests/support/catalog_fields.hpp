@@ -22,10 +22,10 @@ namespace oasis::test {
 static_assert(sizeof(void*) != 8 || sizeof(rt::TransitionsCsr) == 32, "compare the new field");
 static_assert(sizeof(void*) != 8 || sizeof(rt::GridView) == 32, "compare the new field");
 static_assert(sizeof(void*) != 8 || sizeof(rt::BspView) == 48, "compare the new field");
-static_assert(sizeof(void*) != 8 || sizeof(rt::AbstractionView) == 224, "compare the new field");
+static_assert(sizeof(void*) != 8 || sizeof(rt::AbstractionView) == 232, "compare the new field");
 static_assert(sizeof(void*) != 8 || sizeof(rt::PositionNoise) == 32, "compare the new field");
 static_assert(sizeof(void*) != 8 || sizeof(rt::ObservationModel) == 64, "compare the new field");
-static_assert(sizeof(void*) != 8 || sizeof(rt::CatalogView) == 168, "compare the new field");
+static_assert(sizeof(void*) != 8 || sizeof(rt::CatalogView) == 192, "compare the new field");
 
 // Collects the fields that differ. A field is named "abstraction 'CONTEXT': FIELD" or
 // "FIELD"; those whose FIELD (or its part before the first '.') is in `not_carried` are not
@@ -154,6 +154,8 @@ inline void compare_abstraction(FieldComparison& out, const rt::CatalogView& cat
             expected.grid.dimension == 0 ? 0 : rt::partition_cells(expected));
   out.value("outside_block", expected.outside_block, actual.outside_block);
   out.value("epsilon", expected.epsilon, actual.epsilon);
+  out.array("guarantee", expected.guarantee, actual.guarantee,
+            std::uint64_t{catalog.properties.count} * rt::kGuaranteeFields);
 }
 
 inline void compare_observation(FieldComparison& out, const rt::CatalogView& catalog,
@@ -196,6 +198,12 @@ inline std::vector<std::string> compare_catalogs(const rt::CatalogView& expected
   out.texts("state_names", expected.state_names, actual.state_names, expected.num_states);
   out.texts("variable_names", expected.variable_names, actual.variable_names,
             expected.state_dimension);
+  out.value("properties.count", expected.properties.count, actual.properties.count);
+  if (!out.differences().empty()) return out.differences();  // the guarantees' size
+  out.texts("properties.names", expected.properties.names, actual.properties.names,
+            expected.properties.count);
+  out.texts("properties.texts", expected.properties.texts, actual.properties.texts,
+            expected.properties.count);
   const std::uint64_t n = expected.num_abstractions;
   out.array("switching", expected.switching, actual.switching, n * n);
   out.array("prior", expected.prior, actual.prior, n);

@@ -14,6 +14,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include "../../support/catalog_bytes.hpp"
 #include "../../support/run_oasisc.hpp"
 #include "../../support/scratch_directory.hpp"
 #include "oasis/rt/catalog_file.hpp"
@@ -156,41 +157,8 @@ TEST_F(Cli, OneBadFileDoesNotHideTheOthers) {
 
 namespace {
 
-std::string read_all(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
-
-void write_all(const std::filesystem::path& path, const std::string& bytes) {
-  std::ofstream(path, std::ios::binary) << bytes;
-}
-
-// Writes the checksum a catalog file must carry (FNV-1a of bytes 32..end, at offset 24).
-void fix_checksum(std::string& bytes) {
-  const std::uint64_t checksum = oasis::rt::fnv1a64(
-      reinterpret_cast<const unsigned char*>(bytes.data()) + 32, bytes.size() - 32);
-  std::memcpy(bytes.data() + 24, &checksum, sizeof checksum);
-}
-
-// Where a section of a catalog file starts (catalog_sections.hpp, format 2); 0 if absent.
-std::uint64_t section_offset(const std::string& bytes, oasis::rt::Section tag,
-                             std::uint32_t abstraction) {
-  std::uint32_t entries = 0;
-  std::memcpy(&entries, bytes.data() + 12, sizeof entries);
-  for (std::uint32_t k = 0; k < entries; ++k) {
-    const char* entry = bytes.data() + oasis::rt::kCatalogHeaderBytes +
-                        std::size_t{k} * oasis::rt::kFormat2EntryBytes;
-    std::uint32_t entry_tag = 0;
-    std::uint32_t entry_abstraction = 0;
-    std::uint64_t offset = 0;
-    std::memcpy(&entry_tag, entry, sizeof entry_tag);
-    std::memcpy(&entry_abstraction, entry + 4, sizeof entry_abstraction);
-    std::memcpy(&offset, entry + 8, sizeof offset);
-    if (entry_tag == static_cast<std::uint32_t>(tag) && entry_abstraction == abstraction)
-      return offset;
-  }
-  return 0;
-}
+using oasis::test::fix_checksum;
+using oasis::test::section_offset;
 
 TEST_F(Cli, CompileThenVerifyTheCatalog) {
   const auto dir = scratch_.path() / "compiled";
@@ -208,10 +176,10 @@ TEST_F(Cli, CompileThenVerifyTheCatalog) {
             std::string::npos);
 
   // A flipped byte: the checksum refuses the file.
-  std::string bytes = read_all(catalog);
+  std::string bytes = oasis::test::read_bytes(catalog);
   std::string damaged = bytes;
   damaged[damaged.size() - 3] ^= 0x10;
-  write_all(dir / "damaged.bin", damaged);
+  oasis::test::write_bytes(dir / "damaged.bin", damaged);
   result = run("verify " + spec("discrete_tracking.oasis") + " " + (dir / "damaged.bin").string());
   EXPECT_EQ(result.status, 1);
   EXPECT_NE(result.output.find("checksum mismatch"), std::string::npos) << result.output;
@@ -223,7 +191,7 @@ TEST_F(Cli, CompileThenVerifyTheCatalog) {
   const std::uint32_t swapped[3] = {0, 1, 1};
   std::memcpy(bytes.data() + offset, swapped, sizeof swapped);
   fix_checksum(bytes);
-  write_all(dir / "swapped.bin", bytes);
+  oasis::test::write_bytes(dir / "swapped.bin", bytes);
   result = run("verify " + spec("discrete_tracking.oasis") + " " + (dir / "swapped.bin").string());
   EXPECT_EQ(result.status, 1) << result.output;
   EXPECT_NE(result.output.find("context object_at_s3: FAILED"), std::string::npos) << result.output;
@@ -247,8 +215,8 @@ TEST_F(Cli, DiscreteCompileTakesJobsAndExplainsEpsilon) {
   EXPECT_NE(two.output.find("warning: --epsilon is the error bound of continuous specs"),
             std::string::npos)
       << two.output;
-  EXPECT_EQ(read_all(base / "one" / "discrete_tracking.bin"),
-            read_all(base / "two" / "discrete_tracking.bin"));
+  EXPECT_EQ(oasis::test::read_bytes(base / "one" / "discrete_tracking.bin"),
+            oasis::test::read_bytes(base / "two" / "discrete_tracking.bin"));
   EXPECT_EQ(run("verify " + input + " " + (base / "two" / "discrete_tracking.bin").string()).status,
             0);
 }

@@ -30,6 +30,7 @@
 #include "pipeline/continuous_catalog_data.hpp"
 #include "pipeline/continuous_options.hpp"
 #include "pipeline/discrete_catalog.hpp"
+#include "property/catalog_guarantees.hpp"
 #include "verify/continuous_json_reader.hpp"
 
 namespace oasis {
@@ -57,7 +58,11 @@ Compiled compile(const std::string& name) {
   if (loaded->model) {
     auto data = pipeline::build_catalog(*loaded->model, loaded->source_hash, {}, error);
     EXPECT_TRUE(data) << error;
-    if (data) out.data = std::move(*data);
+    if (!data) return out;
+    EXPECT_TRUE(property::state_guarantees(*loaded->model, loaded->names, loaded->properties, *data,
+                                           diagnostics))
+        << messages.str();
+    out.data = std::move(*data);
     return out;
   }
   pipeline::ContinuousCatalogOptions options;
@@ -151,6 +156,28 @@ void read_transitions(const nlohmann::json& transitions, const model::CatalogDat
   }
 }
 
+// A bound: a number, or "infinity".
+double bound_of(const nlohmann::json& bound) {
+  if (bound.is_string()) return bound == "infinity" ? HUGE_VAL : -HUGE_VAL;
+  return bound.get<double>();
+}
+
+// Each property's policy and optimum intervals; an exact value, where stated, must lie in its
+// interval.
+void read_guarantees(const nlohmann::json& guarantees, model::AbstractionData& data) {
+  for (const nlohmann::json& guarantee : guarantees) {
+    for (const char* which : {"policy", "optimum"}) {
+      const nlohmann::json& value = guarantee.at(which);
+      data.guarantee.push_back(bound_of(value.at("lower")));
+      data.guarantee.push_back(bound_of(value.at("upper")));
+      if (!value.contains("exact") || value.at("exact") == "infinity") continue;
+      const Rational exact(value.at("exact").get<std::string>());
+      EXPECT_LE(Rational(data.guarantee[data.guarantee.size() - 2]), exact);
+      EXPECT_GE(Rational(data.guarantee.back()), exact);
+    }
+  }
+}
+
 model::CatalogData read_discrete_json(const std::string& text) {
   const nlohmann::json document = nlohmann::json::parse(text);
   model::CatalogData catalog;
@@ -167,11 +194,17 @@ model::CatalogData read_discrete_json(const std::string& text) {
       catalog.switching.push_back(p.get<double>());
   catalog.prior = document.at("prior").get<std::vector<double>>();
   read_observation(document.at("observation"), catalog);
+  if (document.contains("properties")) {
+    for (const nlohmann::json& property : document.at("properties"))
+      catalog.properties.push_back(
+          {property.at("name").get<std::string>(), property.at("property").get<std::string>()});
+  }
   for (const nlohmann::json& abstraction : document.at("abstractions")) {
     model::AbstractionData& data = catalog.abstractions.emplace_back();
     data.context = abstraction.at("context").get<std::string>();
     read_blocks(abstraction.at("blocks"), catalog, data);
     read_transitions(abstraction.at("transitions"), catalog, data);
+    if (abstraction.contains("guarantees")) read_guarantees(abstraction.at("guarantees"), data);
   }
   return catalog;
 }
@@ -185,11 +218,13 @@ TEST(CatalogCarriers, TheDiscreteCatalogFillsEveryOptionalPart) {
   EXPECT_EQ(view.observation.kind, rt::ObservationKind::kMatrix);
   EXPECT_NE(view.observation.confusion, nullptr);
   EXPECT_EQ(view.observation.reward_source, rt::RewardSource::kObservedState);
+  EXPECT_EQ(view.properties.count, 2u) << "stated properties";
   for (std::uint32_t i = 0; i < view.num_abstractions; ++i) {
     const rt::AbstractionView& abstraction = view.abstractions[i];
     EXPECT_LT(abstraction.num_blocks, view.num_states) << "blocks of several states";
     EXPECT_GT(abstraction.quotient.num_edges, 0u);
     EXPECT_GT(abstraction.state_transitions.num_edges, 0u);
+    EXPECT_NE(abstraction.guarantee, nullptr);
   }
 }
 

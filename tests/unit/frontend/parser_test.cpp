@@ -706,7 +706,8 @@ TEST(ParserErrors, BadCatalogItems) {
       "}\n");
   EXPECT_EQ(parsed.errors(), 3U) << parsed.output();
   EXPECT_TRUE(parsed.reported(
-      "2:3: error: expected 'context', 'switching', 'prior' or 'observation', found 'states'"))
+      "2:3: error: expected 'context', 'switching', 'prior', 'observation' or 'property', found "
+      "'states'"))
       << parsed.output();
   EXPECT_TRUE(parsed.reported(
       "3:15: error: expected 'base' or 'rewards \"name\"' after '=', found 'other'"))

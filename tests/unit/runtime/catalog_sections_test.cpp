@@ -54,6 +54,8 @@ bool names_an_enumerator(Section tag) {
     case Section::kBspBelow:
     case Section::kBspAbove:
     case Section::kBspCell:
+    case Section::kPropertyText:
+    case Section::kGuarantee:
       return true;
   }
   return false;

@@ -328,6 +328,30 @@ class LoadedCatalog {
     return true;
   }
 
+  // The stated properties: pairs of NUL-terminated strings (name, text), none when the
+  // section is absent. Each abstraction's guarantees are then required (parse_abstraction).
+  bool parse_properties() {
+    const std::uint64_t size = count_of(Section::kPropertyText, kCatalogWide);
+    const char* text = wide<Section::kPropertyText>(size, true);
+    if (!ok_) return false;
+    if (size == 0) return true;
+    if (text[size - 1] != '\0') return fail("malformed property text");
+    std::vector<const char*> strings;
+    for (std::uint64_t at = 0; at < size; at += std::strlen(text + at) + 1)
+      strings.push_back(text + at);
+    if (strings.size() % 2 != 0) return fail("property text: a name without its property");
+    if (strings.size() / 2 >= UINT32_MAX / kGuaranteeFields)
+      return fail("property text: too many properties");
+    for (std::size_t k = 0; k < strings.size(); k += 2) {
+      property_names_.push_back(strings[k]);
+      property_texts_.push_back(strings[k + 1]);
+    }
+    view_.properties.count = static_cast<std::uint32_t>(property_names_.size());
+    view_.properties.names = property_names_.data();
+    view_.properties.texts = property_texts_.data();
+    return true;
+  }
+
   // A continuous abstraction's grid and cell map, each count checked before it is used.
   void parse_grid(std::uint32_t i, AbstractionView& a) {
     const std::uint64_t d = count_of(Section::kGridAxes, i);
@@ -411,11 +435,14 @@ class LoadedCatalog {
     a.value = of_abstraction<Section::kValue>(i, a.num_blocks);
     parse_transitions<Section::kStateRows, Section::kStateTargets, Section::kStateProbabilities>(
         i, states * actions, a.state_transitions, true);
+    const std::uint64_t properties = view_.properties.count;
+    a.guarantee =
+        of_abstraction<Section::kGuarantee>(i, properties * kGuaranteeFields, properties == 0);
   }
 
   void parse() {
     ok_ = true;
-    if (!parse_header() || !parse_strings() || !parse_observation()) return;
+    if (!parse_header() || !parse_strings() || !parse_properties() || !parse_observation()) return;
     const std::uint32_t n = view_.num_abstractions;
     view_.switching = wide<Section::kSwitching>(std::uint64_t{n} * n);
     view_.prior = wide<Section::kPrior>(n);
@@ -433,6 +460,8 @@ class LoadedCatalog {
   std::unique_ptr<unsigned char[]> storage_;  // the file's bytes
   std::size_t size_ = 0;
   std::vector<const char*> names_;
+  std::vector<const char*> property_names_;  // the stated properties' (view_.properties)
+  std::vector<const char*> property_texts_;
   std::vector<AbstractionView> abstractions_;
   std::vector<Entry> entries_;  // the section table, as read
   std::uint32_t format_ = 0;    // the file's format

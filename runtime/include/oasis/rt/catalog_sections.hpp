@@ -98,6 +98,9 @@ enum class Section : std::uint32_t {
   kObjectOf = 9,          ///< u32 [state_dimension]: each variable's object, or kExactVariable
   kObjectSigma = 10,      ///< f64 [objects * 3]: a, b, c of sigma(d)
   kObjectDetection = 11,  ///< f64 [objects]: detection probability
+  // Stated properties (PropertyStatements), optional: a runtime that skips them runs the
+  // catalog as it always did.
+  kPropertyText = 12,                       ///< char: per property its name, NUL, its text, NUL
   kGridAxes = kRequiredSection | 32,        ///< u32 [d], per abstraction
   kGridBreakBegin = kRequiredSection | 33,  ///< u32 [d + 1]
   kGridBreaks = kRequiredSection | 34,      ///< f64 [break_begin[d]]
@@ -111,6 +114,7 @@ enum class Section : std::uint32_t {
   kBspBelow = kRequiredSection | 41,   ///< u32 [num_nodes]
   kBspAbove = kRequiredSection | 42,   ///< u32 [num_nodes]
   kBspCell = kRequiredSection | 43,    ///< u32 [num_nodes]
+  kGuarantee = 44,  ///< f64 [properties * kGuaranteeFields], per abstraction; optional
 };
 
 /// Where a section belongs: the catalog as a whole (its table entry's abstraction is
@@ -215,6 +219,8 @@ inline constexpr SectionInfo kSectionRows[] = {
     each(Section::kBspBelow,              "BSP below",                SectionElement::kU32,  2),
     each(Section::kBspAbove,              "BSP above",                SectionElement::kU32,  2),
     each(Section::kBspCell,               "BSP cells",                SectionElement::kU32,  2),
+    wide(Section::kPropertyText,          "property text",            SectionElement::kChar, 2),
+    each(Section::kGuarantee,             "guarantees",               SectionElement::kF64,  2),
 };
 // clang-format on
 

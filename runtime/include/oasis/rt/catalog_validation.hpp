@@ -275,6 +275,38 @@ inline bool validate_cells(const CatalogView& catalog, const AbstractionView& ab
   return true;
 }
 
+// The stated properties: named, and per abstraction an interval per value, lower <= upper
+// (infinite only for a reward that is: a probability's interval lies in [0, 1], but the view
+// does not say which property is which, so the compiler's checks, not these, hold that).
+inline bool validate_properties(const CatalogView& catalog, std::string* why) {
+  const PropertyStatements& properties = catalog.properties;
+  if (properties.count == 0) {
+    for (std::uint32_t i = 0; i < catalog.num_abstractions; ++i)
+      if (catalog.abstractions[i].guarantee != nullptr)
+        return fail(why, "abstraction " + std::to_string(i) + ": guarantees without properties");
+    return true;
+  }
+  if (properties.names == nullptr || properties.texts == nullptr)
+    return fail(why, "property names or texts are null");
+  for (std::uint32_t k = 0; k < properties.count; ++k)
+    if (properties.names[k] == nullptr || properties.texts[k] == nullptr)
+      return fail(why, "property " + std::to_string(k) + ": name or text is null");
+  for (std::uint32_t i = 0; i < catalog.num_abstractions; ++i) {
+    const double* guarantee = catalog.abstractions[i].guarantee;
+    const std::string where = "abstraction " + std::to_string(i);
+    if (guarantee == nullptr) return fail(why, where + ": the stated properties have no values");
+    for (std::uint32_t k = 0; k < properties.count * kGuaranteeFields; k += 2) {
+      const double lower = guarantee[k];
+      const double upper = guarantee[k + 1];
+      if (std::isnan(lower) || std::isnan(upper) || !(lower <= upper) || lower == HUGE_VAL ||
+          upper == -HUGE_VAL)
+        return fail(why, where + ": the value of property " + std::to_string(k / kGuaranteeFields) +
+                             " is not an interval");
+    }
+  }
+  return true;
+}
+
 inline bool validate_abstraction(const CatalogView& catalog, std::uint32_t i, std::string* why) {
   const AbstractionView& abs = catalog.abstractions[i];
   const std::string where = "abstraction " + std::to_string(i);
@@ -329,6 +361,7 @@ inline bool validate(const CatalogView& catalog, std::string* why = nullptr) {
   if (catalog.abstractions == nullptr) return detail::fail(why, "abstractions is null");
   for (std::uint32_t i = 0; i < catalog.num_abstractions; ++i)
     if (!detail::validate_abstraction(catalog, i, why)) return false;
+  if (!detail::validate_properties(catalog, why)) return false;
   if (why != nullptr) why->clear();
   return true;
 }

@@ -129,6 +129,31 @@ struct AbstractionView {
   /// domain box, which then has a single cell; the BSP's leaves are the cells of cell_block.
   /// Empty (num_nodes 0) for gridded abstractions.
   BspView bsp;
+
+  /// Optional: [catalog.properties.count * kGuaranteeFields] what this abstraction's policy
+  /// and the optimum give each of the catalog's properties (PropertyStatements), property
+  /// by property: kPolicyLower, kPolicyUpper, kOptimumLower, kOptimumUpper. Null when the
+  /// catalog states no properties.
+  const double* guarantee = nullptr;
+};
+
+/// The fields of one property's guarantee (AbstractionView::guarantee): each value as an
+/// interval that contains the exact one (lower == upper only when the double is exact).
+enum GuaranteeField : std::uint32_t {
+  kPolicyLower = 0,  ///< the property's value when the abstraction's policy acts
+  kPolicyUpper = 1,
+  kOptimumLower = 2,  ///< its value at the optimum its operator names (Pmax, Rmin, ...)
+  kOptimumUpper = 3,
+};
+inline constexpr std::uint32_t kGuaranteeFields = 4;
+
+/// The properties a catalog states values for (a spec's `property` items,
+/// docs/spec-language.md): PRISM properties answered by the compiler in every context, under
+/// the context's policy and at the optimum (AbstractionView::guarantee).
+struct PropertyStatements {
+  std::uint32_t count = 0;
+  const char* const* names = nullptr;  ///< [count]
+  const char* const* texts = nullptr;  ///< [count] each property as written
 };
 
 /// The cells of a continuous abstraction (the length of cell_block): its BSP's leaves, or
@@ -267,6 +292,9 @@ struct CatalogView {
 
   /// True for a catalog over continuous states.
   bool is_continuous() const noexcept { return state_dimension > 0; }
+
+  /// Optional: the properties whose values every abstraction states (count 0: none).
+  PropertyStatements properties;
 
   /// True if a filter that models the noise can run on this catalog (FilterMode::kJoint on a
   /// discrete catalog with a robust section, FilterMode::kNoiseAware on a continuous one with a
