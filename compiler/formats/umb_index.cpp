@@ -128,7 +128,8 @@ std::vector<UmbAnnotation> read_group(const Json& annotations, const char* group
       } else if (text == "branches" && !aps) {
         annotation.branches = true;
       } else {
-        fail(here + "applies to " + (entity.is_string() ? "'" + text + "'" : entity.dump()) +
+        // Never dump() the value: a hostile one nests deep enough to exhaust the stack.
+        fail(here + "applies to " + (entity.is_string() ? "'" + text + "'" : "a non-string") +
              (aps ? ": an atomic proposition applies to states"
                   : ": oasis reads rewards of "
                     "states, choices and branches"));
@@ -223,6 +224,9 @@ bool read_umb_index(std::string_view text, const ReadOptions& options, UmbIndex&
     json = Json::parse(text);
   } catch (const Json::parse_error& problem) {
     error = "index.json is not valid JSON (at byte " + std::to_string(problem.byte) + ")";
+    return false;
+  } catch (const Json::exception&) {  // a number beyond a double's range (1e400)
+    error = "index.json holds a number out of range";
     return false;
   }
   try {

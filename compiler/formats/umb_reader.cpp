@@ -169,15 +169,13 @@ class UmbReader {
 
   // --- Numbers ---------------------------------------------------------------------------
 
-  // `count` numbers of `type` from `name` (absent: all 0, when `zero_if_absent`).
+  // `count` numbers of `type` from `name`, which must be present: the format would read an
+  // absent array as zeros, but an index that names many such arrays would then make a model
+  // far larger than its file.
   bool read_numbers(const std::string& name, const umb::ValueType& type, std::uint64_t count,
-                    const char* what, bool zero_if_absent, std::vector<ValueId>& out) {
+                    const char* what, std::vector<ValueId>& out) {
     const std::string* bytes = entry(name);
-    if (bytes == nullptr) {
-      if (!zero_if_absent) return fail(name + ": absent, but the model needs its " + what);
-      out.assign(count, RationalPool::kZero);
-      return true;
-    }
+    if (bytes == nullptr) return fail(name + ": absent, though the index says it is there");
     const std::uint64_t item = type.bits / 8;
     if (!check_size(name, *bytes, count, item, "the index (" + type.name + ")")) return false;
     out.resize(count);
@@ -253,7 +251,7 @@ class UmbReader {
 
   bool read_probabilities() {
     return read_numbers("branch-to-probability.bin", index_.probability, index_.num_branches,
-                        "the probability", false, probabilities_);
+                        "the probability", probabilities_);
   }
 
   // --- Initial states, actions, labels -------------------------------------------------
@@ -416,15 +414,15 @@ class UmbReader {
       std::vector<ValueId> by_choice;
       std::vector<ValueId> by_branch;
       if (reward.states && !read_numbers(folder + "states/values.bin", reward.type,
-                                         index_.num_states, "the reward", true, state)) {
+                                         index_.num_states, "the reward", state)) {
         return false;
       }
       if (reward.choices && !read_numbers(folder + "choices/values.bin", reward.type,
-                                          index_.num_choices, "the reward", true, by_choice)) {
+                                          index_.num_choices, "the reward", by_choice)) {
         return false;
       }
       if (reward.branches && !read_numbers(folder + "branches/values.bin", reward.type,
-                                           index_.num_branches, "the reward", true, by_branch)) {
+                                           index_.num_branches, "the reward", by_branch)) {
         return false;
       }
       if (state.empty()) state.assign(index_.num_states, RationalPool::kZero);

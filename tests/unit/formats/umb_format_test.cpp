@@ -338,6 +338,10 @@ INSTANTIATE_TEST_SUITE_P(
         ErrorCase{"no_probabilities",
                   [](HandMade& f) { f.files.erase("branch-to-probability.bin"); },
                   "branch-to-probability.bin: absent, but the model needs its probabilities"},
+        ErrorCase{"reward_absent",
+                  [](HandMade& f) { f.files.erase("annotations/rewards/cost/states/values.bin"); },
+                  "annotations/rewards/cost/states/values.bin: absent, though the index says it "
+                  "is there"},
         ErrorCase{"short_targets",
                   [](HandMade& f) {
                     f.files["branch-to-target.bin"] = u64s({1, 2, 0});
@@ -424,6 +428,10 @@ TEST(Umb, WhatIsNotAUmbFileSaysSo) {
   EXPECT_NE(json.messages.find("x.umb: error: index.json is not valid JSON (at byte 20)"),
             std::string::npos)
       << json.messages;
+  const Read huge = read_bytes(tar({{"index.json", "{\"format-version\": 1e400}"}}));
+  EXPECT_NE(huge.messages.find("x.umb: error: index.json holds a number out of range"),
+            std::string::npos)
+      << huge.messages;
   const Read none = read_bytes(tar({{"model.json", "{}"}}));
   EXPECT_NE(none.messages.find("x.umb: error: the archive has no index.json"), std::string::npos)
       << none.messages;
