@@ -4,6 +4,7 @@
 #include "formats/umb_index.hpp"
 
 #include <limits>
+#include <set>
 
 #include <nlohmann/json.hpp>
 
@@ -179,6 +180,83 @@ void read_transition_system(const Json& ts, const ReadOptions& options, UmbIndex
   check_number_type(index.probability, where + "\"branch-probability-type\": ");
 }
 
+// Thrown for state valuations of a form oasis does not keep: they are read past.
+struct Unsupported {
+  std::string reason;
+};
+
+UmbField read_field(const Json& variable, std::set<std::string>& names) {
+  if (!variable.is_object()) throw Unsupported{"a variable is not an object"};
+  if (variable.contains("padding")) {
+    const Json& bits = variable["padding"];
+    if (!bits.is_number_unsigned() || bits.get<std::uint64_t>() == 0 ||
+        bits.get<std::uint64_t>() > UINT32_MAX)
+      throw Unsupported{"a padding is not a positive whole number"};
+    return {"", UmbField::Kind::kPadding, bits.get<std::uint64_t>(), 0};
+  }
+  if (!variable.contains("name") || !variable["name"].is_string())
+    throw Unsupported{"a variable has no name"};
+  UmbField field;
+  field.name = variable["name"].get<std::string>();
+  if (!is_umb_variable_name(field.name) || !names.insert(field.name).second)
+    throw Unsupported{"variable names are not distinct identifiers"};
+  if (variable.contains("is-optional") && variable["is-optional"] != false)
+    throw Unsupported{"variable '" + field.name + "' is optional"};
+  if (!variable.contains("type") || !variable["type"].is_object() ||
+      !variable["type"].contains("type") || !variable["type"]["type"].is_string())
+    throw Unsupported{"variable '" + field.name + "' has no type"};
+  const std::string type = variable["type"]["type"].get<std::string>();
+  if (type != "bool" && type != "int" && type != "uint")
+    throw Unsupported{"variable '" + field.name + "' is of type '" + type + "'"};
+  field.kind = type == "bool"  ? UmbField::Kind::kBool
+               : type == "int" ? UmbField::Kind::kInt
+                               : UmbField::Kind::kUint;
+  field.bits = type == "bool" ? 1 : 64;
+  if (variable["type"].contains("size")) {
+    const Json& size = variable["type"]["size"];
+    if (!size.is_number_unsigned() || size.get<std::uint64_t>() == 0 ||
+        size.get<std::uint64_t>() > 64)
+      throw Unsupported{"variable '" + field.name + "' is not of 1 to 64 bits"};
+    field.bits = size.get<std::uint64_t>();
+  }
+  if (variable.contains("offset") && field.kind != UmbField::Kind::kBool) {
+    const Json& offset = variable["offset"];
+    if (!offset.is_number_integer() ||
+        (offset.is_number_unsigned() && offset.get<std::uint64_t>() > INT64_MAX))
+      throw Unsupported{"the offset of variable '" + field.name + "' is not a 64-bit integer"};
+    field.offset = offset.get<std::int64_t>();
+  }
+  return field;
+}
+
+// The index's "valuations" of states, if any: into index.valuations, or the reason they are
+// read past into index.valuations_skipped.
+void read_valuations(const Json& json, UmbIndex& index) {
+  const auto valuations = json.find("valuations");
+  if (valuations == json.end() || !valuations->is_object() || !valuations->contains("states"))
+    return;
+  try {
+    const Json& states = (*valuations)["states"];
+    if (!states.is_object() || !states.contains("classes") || !states["classes"].is_array())
+      throw Unsupported{"there is no list of classes"};
+    if (states["classes"].size() != 1) throw Unsupported{"there is not exactly one class"};
+    const Json& shape = states["classes"][0];
+    if (!shape.is_object() || !shape.contains("variables") || !shape["variables"].is_array())
+      throw Unsupported{"the class lists no variables"};
+    UmbValuationClass result;
+    std::set<std::string> names;
+    for (const Json& variable : shape["variables"]) {
+      result.fields.push_back(read_field(variable, names));
+      result.bits += result.fields.back().bits;
+    }
+    if (names.empty()) throw Unsupported{"the class has no variables"};
+    if (result.bits % 8 != 0) throw Unsupported{"a valuation is not a whole number of bytes"};
+    index.valuations = std::move(result);
+  } catch (const Unsupported& problem) {
+    index.valuations_skipped = problem.reason;
+  }
+}
+
 }  // namespace
 
 bool is_umb_name(std::string_view text) {
@@ -243,6 +321,7 @@ bool read_umb_index(std::string_view text, const ReadOptions& options, UmbIndex&
       index.aps = read_group(*annotations, "aps", true);
       index.rewards = read_group(*annotations, "rewards", false);
     }
+    read_valuations(json, index);
   } catch (const IndexError& problem) {
     error = "index.json: " + problem.message;
     return false;

@@ -6,12 +6,14 @@
 // reason, so the reader of the arrays meets only what it can build.
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
 
 #include "formats/read_options.hpp"
 #include "formats/umb_binary.hpp"
+#include "formats/umb_valuations.hpp"
 
 namespace oasis::formats {
 
@@ -34,6 +36,10 @@ struct UmbIndex {
   umb::ValueType probability;
   std::vector<UmbAnnotation> aps;      // in the order of the index
   std::vector<UmbAnnotation> rewards;  // in the order of the index
+  // The states' valuation class when the index has one that oasis keeps; else, when it has
+  // one, why it is read past.
+  std::optional<UmbValuationClass> valuations;
+  std::string valuations_skipped;
 };
 
 // Parses and checks `text`; on failure returns false and sets `error` (a message about

@@ -18,6 +18,7 @@
 #include "formats/umb_archive.hpp"
 #include "formats/umb_binary.hpp"
 #include "formats/umb_index.hpp"
+#include "formats/umb_valuations.hpp"
 #include "formats/value_cache.hpp"
 #include "support/double_range.hpp"
 
@@ -48,7 +49,7 @@ class UmbReader {
     if (index == nullptr) return fail("the archive has no index.json");
     if (!read_umb_index(*index, options_, index_, error)) return fail(error);
     return read_structure() && read_probabilities() && read_initial_states() && read_actions() &&
-           read_choices() && read_labels() && read_rewards() && build();
+           read_choices() && read_labels() && read_rewards() && build() && read_valuations();
   }
 
  private:
@@ -482,6 +483,35 @@ class UmbReader {
     model_.type = index_.markov_chain ? model::ModelType::kDtmc : model::ModelType::kMdp;
     model_.states.size = n;
     build_contexts(std::make_shared<const model::TransitionMatrix>(std::move(*matrix)));
+    return true;
+  }
+
+  // The states' valuations, where the file has them in a form the model keeps; else they are
+  // read past with a warning (they name states, nothing depends on them).
+  bool read_valuations() {
+    std::string why = index_.valuations_skipped;
+    if (index_.valuations) {
+      const std::string name = "valuations/states/valuations.bin";
+      const std::string* bytes = entry(name);
+      const std::uint64_t stride = index_.valuations->bits / 8;
+      if (entry("valuations/states/valuation-to-class.bin") != nullptr) {
+        why = "valuations/states/valuation-to-class.bin gives states several classes";
+      } else if (bytes == nullptr) {
+        why = name + " is absent";
+      } else if (bytes->size() % stride != 0 || bytes->size() / stride != index_.num_states) {
+        why = name + " holds " + std::to_string(bytes->size()) + " bytes, not " +
+              std::to_string(index_.num_states) + " valuations of " + std::to_string(stride);
+      } else if (decode_umb_valuations(*index_.valuations, *bytes, index_.num_states,
+                                       model_.states.valuations, why)) {
+        for (const UmbField& field : index_.valuations->fields) {
+          if (field.kind != UmbField::Kind::kPadding) model_.states.variables.push_back(field.name);
+        }
+        return true;
+      }
+      model_.states.valuations.clear();
+    }
+    if (!why.empty())
+      diagnostics_.file_warning(path_, "the state valuations are read past: " + why);
     return true;
   }
 

@@ -11,6 +11,7 @@
 //   actions/choices/{values,string-mapping,strings}.bin   the choices' action names
 //   annotations/aps/ID/states/values.bin     bitset: an atomic proposition (a label)
 //   annotations/rewards/ID/{states,choices,branches}/values.bin   a reward model
+//   valuations/states/valuations.bin         the states' variables (umb_valuations.hpp)
 //
 // Numbers are exact: a rational is read as it is; a double as the shortest decimal that reads
 // back as it (0.1, not 3602879701896397/2^55), as the text readers read what other tools print.
@@ -19,8 +20,8 @@
 // context "default". An MDP's choice is named by its action's string, an unlabelled one (the
 // empty string, or no strings at all) by its place in its state, "[j]", as the other readers
 // name them; a DTMC's one choice per state is the action "[0]". The initial states carry the
-// label "init". Everything else of the file (valuations, other annotation groups, branch
-// actions, metadata) is read past.
+// label "init". Everything else of the file (other annotation groups, branch actions,
+// metadata, valuations of a form the model does not hold) is read past.
 
 #include <optional>
 

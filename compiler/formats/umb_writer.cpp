@@ -15,6 +15,7 @@
 #include "formats/umb_archive.hpp"
 #include "formats/umb_binary.hpp"
 #include "formats/umb_index.hpp"
+#include "formats/umb_valuations.hpp"
 
 namespace oasis::formats {
 namespace {
@@ -139,7 +140,8 @@ class UmbWriter {
     Json annotations = Json::object();
     write_labels(files, annotations);
     write_rewards(files, annotations);
-    files.front().bytes = index(actions, annotations).dump(2) + "\n";
+    Json valuations = write_valuations(files);
+    files.front().bytes = index(actions, annotations, valuations).dump(2) + "\n";
     return files;
   }
 
@@ -299,7 +301,28 @@ class UmbWriter {
     annotations["rewards"] = std::move(rewards);
   }
 
-  [[nodiscard]] Json index(std::uint64_t actions, Json& annotations) const {
+  // The states' variables, bit-packed in the fewest bits (umb_valuations.hpp); null when the
+  // model has none (or names the reader would not take back).
+  Json write_valuations(std::vector<UmbEntry>& files) const {
+    const std::optional<UmbValuationClass> shape = umb_valuation_class(model_.states);
+    if (!shape) return nullptr;
+    Json variables = Json::array();
+    for (const UmbField& field : shape->fields) {
+      if (field.kind == UmbField::Kind::kPadding) {
+        variables.push_back(Json{{"padding", field.bits}});
+        continue;
+      }
+      const char* type = field.kind == UmbField::Kind::kInt ? "int" : "uint";
+      variables.push_back(
+          Json{{"name", field.name}, {"type", Json{{"type", type}, {"size", field.bits}}}});
+    }
+    files.push_back(
+        {"valuations/states/valuations.bin", encode_umb_valuations(model_.states, *shape)});
+    return Json{{"states", Json{{"unique", false},
+                                {"classes", Json::array({Json{{"variables", variables}}})}}}};
+  }
+
+  [[nodiscard]] Json index(std::uint64_t actions, Json& annotations, Json& valuations) const {
     Json ts = Json::object();
     ts["time"] = "discrete";
     ts["#players"] = model_.type == model::ModelType::kDtmc ? 0 : 1;
@@ -317,6 +340,7 @@ class UmbWriter {
     json["file-data"] = Json{{"tool", "oasisc"}, {"tool-version", OASIS_VERSION}};
     json["transition-system"] = std::move(ts);
     if (!annotations.empty()) json["annotations"] = std::move(annotations);
+    if (!valuations.is_null()) json["valuations"] = std::move(valuations);
     return json;
   }
 

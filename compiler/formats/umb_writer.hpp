@@ -16,7 +16,8 @@ namespace oasis::formats {
 // Writes `contexts` of `model`, which must share one transition matrix, to `out` (already
 // open; the caller commits): one reward annotation per context, aliased by its name, except
 // that a lone context "default" without rewards writes none. The initial states go to
-// state-is-initial.bin, the other labels to atomic propositions (sorted by name). Choices are
+// state-is-initial.bin, the other labels to atomic propositions (sorted by name), the
+// variables to state valuations (umb_valuations.hpp). Choices are
 // written in ChoiceOrder; an unlabelled one ("[j]" at place j) with the empty action string,
 // which is action 0 when there is one. Returns false and sets `error` for what UMB or its
 // reader cannot carry (a DTMC state with two choices, names that are not UTF-8 text,

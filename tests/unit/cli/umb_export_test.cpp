@@ -90,6 +90,20 @@ TEST_F(UmbExport, InfoAndQuotientOfTheUmbGiveTheSourcesCounts) {
   }
 }
 
+// The variables travel as state valuations, so a property over them has the same answer.
+TEST_F(UmbExport, QueriesOverVariablesGiveTheProgramsAnswers) {
+  const std::string die = std::string(OASIS_SOURCE_DIR) + "/tests/data/prism/knuth_die.pm";
+  const std::string umb = path("die.umb");
+  ASSERT_EQ(oasis::test::run_oasisc("export " + die + " --format umb -o " + umb).status, 0);
+  const std::string property = " --prop 'P=? [F face=1]'";
+  const oasis::test::CommandResult from_program =
+      oasis::test::run_oasisc("query " + die + property);
+  const oasis::test::CommandResult from_umb = oasis::test::run_oasisc("query " + umb + property);
+  EXPECT_EQ(from_umb.status, 0) << from_umb.output;
+  EXPECT_NE(from_umb.output.find("= 1/6 "), std::string::npos) << from_umb.output;
+  EXPECT_EQ(from_umb.output, from_program.output);
+}
+
 TEST_F(UmbExport, ABadUmbIsAnInputErrorNamingTheFile) {
   const std::string bad = path("bad.umb");
   std::ofstream(bad) << "not an archive";

@@ -211,6 +211,32 @@ TEST(Umb, ReadsAFileLaidOutAsTheSpecificationSays) {
   EXPECT_EQ(m.reward(1, 2, go), 2);
   EXPECT_EQ(m.contexts[0].transitions, m.contexts[1].transitions);
   EXPECT_FALSE(model::find_structural_problem(m));
+  // The valuations: x in the 2 low bits, 6 bits of padding.
+  EXPECT_EQ(m.states.variables, std::vector<std::string>{"x"});
+  EXPECT_EQ(m.states.valuations, (std::vector<std::int64_t>{0, 1, 2}));
+}
+
+TEST(Umb, ValuationsOfAnotherFormAreReadPastWithAWarning) {
+  HandMade file;
+  file.index["valuations"]["states"]["classes"][0]["variables"][0]["type"]["type"] = "string";
+  Read read = read_bytes(file.bytes());
+  ASSERT_TRUE(read.model) << read.messages;
+  EXPECT_TRUE(read.model->states.variables.empty());
+  EXPECT_NE(read.messages.find("x.umb: warning: the state valuations are read past: variable "
+                               "'x' is of type 'string'"),
+            std::string::npos)
+      << read.messages;
+
+  // Signed, offset and Boolean fields: y = -1 (int 3 bits) + 10, b (bool).
+  file = HandMade{};
+  file.index["valuations"]["states"]["classes"][0]["variables"] = Json::parse(
+      R"([{"name": "y", "type": {"type": "int", "size": 3}, "offset": 10},
+          {"name": "b", "type": {"type": "bool"}}, {"padding": 4}])");
+  file.files["valuations/states/valuations.bin"] = std::string("", 3);
+  read = read_bytes(file.bytes());
+  ASSERT_TRUE(read.model) << read.messages;
+  EXPECT_EQ(read.model->states.variables, (std::vector<std::string>{"y", "b"}));
+  EXPECT_EQ(read.model->states.valuations, (std::vector<std::int64_t>{9, 0, 13, 1, 11, 0}));
 }
 
 TEST(Umb, AMarkovChainHasTheOneActionOfTheOtherReaders) {
@@ -550,6 +576,8 @@ TEST_F(UmbFile, PrismProgramsRoundTripWithTheirRewardStructures) {
     const std::string bytes = write(*program, "p.umb");
     const ExplicitModel back = read("p.umb");
     expect_same_model(*program, back);
+    EXPECT_EQ(back.states.variables, program->states.variables) << name;
+    EXPECT_EQ(back.states.valuations, program->states.valuations) << name;
     EXPECT_EQ(write(back, "q.umb"), bytes) << name;
   }
 }
