@@ -56,8 +56,8 @@ from timed_run import run_timed  # noqa: E402
 
 PROPERTY = 'P=? [F "observe0Greater1"]'
 # Storm 1.11.1 (dev), storm --buildfull --prism crowds.5-20 --exact, P=? [F "target"] (target:
-# observe0 > 1): tquatmann/umb-benchmarking, storm_import_time/logs/
-# crowds.5-20_storm_from-prism_check_exact.md
+# observe0 > 1), 2061951 states, 7374951 transitions:
+# https://github.com/tquatmann/umb-benchmarking/blob/57aa696332950d4104d1164457ad134bcc92d4eb/storm_import_time/logs/crowds.5-20_storm_from-prism_check_exact.md
 STORM_CROWDS_5_20 = Fraction(317474548144042278373095748974301,
                              3688602718160800000000000000000000)
 
