@@ -20,6 +20,8 @@
 #include "verify/continuous_json_reader.hpp"
 #include "verify/discrete_catalog_check.hpp"
 #include "verify/partition_result_reader.hpp"
+#include "verify/scheduler_check.hpp"
+#include "verify/scheduler_reader.hpp"
 #include "verify/stated_cells_check.hpp"
 #include "verify/verifier.hpp"
 
@@ -115,6 +117,20 @@ int verify_continuous(const VerifyOptions& options, const model::ModelIR& ir, st
   return check_continuous_view(options, ir, hash, catalog.view());
 }
 
+// `verify MODEL SCHEDULERS.json`: each memoryless scheduler the file holds (oasisc query
+// --scheduler) is optimal for its property, checked exactly (verify/scheduler_check.hpp).
+int verify_schedulers(const VerifyOptions& options, const model::ExplicitModel& model) {
+  std::string error;
+  const auto file =
+      verify::read_scheduler_file(options.result, options.common.load.max_input_bytes, error);
+  if (!file) {
+    report_error(options.result, text::printable_message(error));
+    return 1;
+  }
+  return print_checks(verify::check_schedulers(
+      model, *file, {.max_number_bits = options.common.load.max_number_bits}));
+}
+
 int print_checks(const std::vector<verify::CatalogCheck>& checks) {
   bool all_hold = true;
   for (const verify::CatalogCheck& check : checks) {
@@ -136,6 +152,8 @@ int run_verify(const VerifyOptions& options) {
   std::string error;
   // A compiled binary catalog (oasisc compile): everything it carries is checked.
   if (options.result.ends_with(".bin")) return verify_catalog(options, *loaded, diagnostics);
+  if (verify::is_scheduler_file(options.result, options.common.load.max_input_bytes))
+    return verify_schedulers(options, model);
   const auto result = verify::read_partition_result(options.result, model,
                                                     options.common.load.max_input_bytes, error);
   if (!result) {
@@ -183,9 +201,11 @@ CommandRunner add_verify_command(CLI::App& app) {
   CLI::App* command = app.add_subcommand(
       "verify", "Check a compiled catalog (or a quotient's partitions) against its model");
   command->footer(
-      "RESULT is a catalog NAME.bin written by 'oasisc compile', or the JSON of 'oasisc\n"
-      "quotient --format json --partition'. The checker shares no code with the compiler's\n"
-      "quotient, policy or emitters; it compares with the model in exact arithmetic.\n\n"
+      "RESULT is a catalog NAME.bin written by 'oasisc compile', the JSON of 'oasisc\n"
+      "quotient --format json --partition', or a scheduler file of 'oasisc query\n"
+      "--scheduler' (JSON with a \"schedulers\" key). The checker shares no code with the\n"
+      "compiler's quotient, policy, model checker or emitters; it compares with the model in\n"
+      "exact arithmetic.\n\n"
       "For a catalog it checks, and prints one line each:\n"
       "  - the file: magic, format, checksum, structure; compiled from this very spec;\n"
       "  - names: the model's name, actions, states and contexts, in order;\n"
@@ -210,13 +230,22 @@ CommandRunner add_verify_command(CLI::App& app) {
       "and corners and within the catalog's epsilon in total variation, and the policy\n"
       "and values as above.\n"
       "For a partition JSON it checks the partitions only. The coarsest check is\n"
-      "quadratic in the number of blocks at worst.\n\n"
+      "quadratic in the number of blocks at worst.\n"
+      "For a scheduler file, per memoryless scheduler of Pmax=? or Pmin=? [F T] or\n"
+      "[phi U T] (T, phi: quoted labels with !, &, |; other properties are not checked):\n"
+      "every state named once, every action enabled, null only where the choice cannot\n"
+      "matter; the value of the chain it induces, solved exactly (GMP rationals); and\n"
+      "optimality by a certificate: no action improves on that value anywhere (for Pmin,\n"
+      "also 0 wherever some scheduler avoids the target forever). It prints the value in\n"
+      "the initial state.\n\n"
       "Exit status: 0 everything holds, 1 a failure or a bad MODEL or RESULT.\n\n"
       "Examples:\n"
       "  oasisc compile specs/discrete_tracking.oasis -o out\n"
       "  oasisc verify specs/discrete_tracking.oasis out/discrete_tracking.bin\n"
       "  oasisc quotient specs/discrete_tracking.oasis --format json --partition -o r.json\n"
-      "  oasisc verify specs/discrete_tracking.oasis r.json");
+      "  oasisc verify specs/discrete_tracking.oasis r.json\n"
+      "  oasisc query two_dice.nm --prop 'Pmax=? [F \"seven\"]' --scheduler s.json\n"
+      "  oasisc verify two_dice.nm s.json");
   command
       ->add_option("model", options->model,
                    "Spec (.oasis), PRISM program (.pm, .nm, .prism) or model (.aut, .tra) file")
@@ -224,8 +253,9 @@ CommandRunner add_verify_command(CLI::App& app) {
   command
       ->add_option(
           "result", options->result,
-          "JSON written by 'oasisc quotient --partition', or a catalog NAME.bin written by "
-          "'oasisc compile' (refused if damaged or compiled from another spec)")
+          "JSON written by 'oasisc quotient --partition' or 'oasisc query --scheduler', or a "
+          "catalog NAME.bin written by 'oasisc compile' (refused if damaged or compiled from "
+          "another spec)")
       ->required();
   command
       ->add_option("--robust", options->p_correct,
