@@ -48,8 +48,10 @@ SchedulerEntry read_entry(const json& entry, const std::string& where) {
   const bool memoryless = entry.contains("memoryless");
   const bool by_step = entry.contains("by_step");
   if (memoryless == by_step)
-    fail(where + " has " + (memoryless ? "both" : "neither") +
-         " \"memoryless\" and \"by_step\" (exactly one is expected)");
+    fail(where +
+         (memoryless ? " has both \"memoryless\" and \"by_step\""
+                     : " has neither \"memoryless\" nor \"by_step\"") +
+         " (exactly one is expected)");
   const json& list = entry[memoryless ? "memoryless" : "by_step"];
   if (!list.is_array())
     fail(where + ": \"" + (memoryless ? "memoryless" : "by_step") + "\" is " + list.type_name() +
