@@ -95,7 +95,7 @@ struct Result {
 };
 
 // The exact solve was refused: too many states in one strongly connected part, or numbers
-// past the limit. The message says which and suggests --sound.
+// past the limit. The message says which and suggests --mode sound.
 class ExactLimitExceeded : public std::runtime_error {
  public:
   using std::runtime_error::runtime_error;

@@ -17,7 +17,7 @@ namespace oasis::modelcheck {
 inline constexpr std::size_t kMaxEliminationEntries = 8'000'000;
 
 inline std::string suggest_sound_mode(const std::string& what) {
-  return what + "; the sound mode (--sound) computes a guaranteed interval instead";
+  return what + "; sound mode (--mode sound) computes a guaranteed interval instead";
 }
 
 // Throws when `value` has more bits than the limit allows.

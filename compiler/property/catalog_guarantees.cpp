@@ -15,8 +15,9 @@ constexpr double kStatedPrecision = 1e-6;
 
 // The model as context `context` sees it: its transitions under every reward structure, its
 // own rewards first (what `R` without a name reads), the other contexts' by their names.
-model::ExplicitModel context_model(const model::ExplicitModel& model, std::size_t context,
-                                   std::shared_ptr<const model::TransitionMatrix> transitions) {
+model::ExplicitModel context_model(
+    const model::ExplicitModel& model, std::size_t context,
+    const std::shared_ptr<const model::TransitionMatrix>& transitions) {
   model::ExplicitModel seen = model;
   seen.contexts.clear();
   seen.contexts.push_back(model.contexts[context]);

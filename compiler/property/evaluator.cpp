@@ -376,7 +376,7 @@ std::optional<model::Expression> Evaluator::resolve(const ast::Expr& name) {
         names_.begin(), names_.end(), name.text,
         [](const auto& entry, const std::string& key) { return entry.first < key; });
     if (it != names_.end() && it->first == name.text) return it->second;
-    if (const auto variable = spec_variable(name)) return variable;
+    if (auto variable = spec_variable(name)) return variable;
     diagnostics_.error(name.range, "unknown name " + quoted(name.text) +
                                        (names_.empty() && model_.states.variables.empty()
                                             ? " (this model's states are read through "

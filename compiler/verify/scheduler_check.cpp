@@ -208,13 +208,11 @@ class SchedulerChecker {
       }
       if (!null_[s]) continue;
       const std::size_t actions = num_enabled(s);
-      if (actions == 0) {
-        fixed_[s] = 0;  // a deadlock
+      if (actions == 0 || (actions > 1 && !can_reach_[s])) {
+        fixed_[s] = 0;  // a deadlock, or no path to the target whatever is chosen
       } else if (actions == 1) {
         for (ActionIndex a = 0; a < matrix_.num_actions; ++a)
           if (matrix_.enabled(s, a)) chosen_[s] = a;
-      } else if (!can_reach_[s]) {
-        fixed_[s] = 0;
       } else if (!below_one_[s]) {
         fixed_[s] = 1;
       } else {
