@@ -273,7 +273,7 @@ TEST(ModelcheckKnownValues, ExactModeRefusesPastItsLimits) {
     modelcheck::until(die.problem(Optimum::kNone), StateSet(13, true), only(13, {7}), options);
     FAIL() << "no ExactLimitExceeded";
   } catch (const ExactLimitExceeded& e) {
-    EXPECT_NE(std::string(e.what()).find("--sound"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("--mode sound"), std::string::npos) << e.what();
   }
   // 1 - 2^-100 needs 100 bits.
   options = exact_options();
