@@ -4,6 +4,7 @@
 // recomputed, so that only the verifier can tell); bad properties get errors placed in the
 // spec.
 
+#include <cmath>
 #include <cstring>
 #include <string>
 
@@ -62,7 +63,7 @@ TEST_F(StatedProperties, CompileStatesThePolicysValueAndTheOptimum) {
   const rt::LoadedCatalog catalog = rt::LoadedCatalog::from_file((dir / "corridor.bin").string());
   ASSERT_TRUE(catalog.ok()) << catalog.error();
   const rt::CatalogView& view = catalog.view();
-  ASSERT_EQ(view.properties.count, 4u);
+  ASSERT_EQ(view.properties.count, 5u);
   EXPECT_STREQ(view.properties.names[0], "reach_left");
   EXPECT_STREQ(view.properties.texts[0], "Pmax=? [F x=0]");
   const double* right = view.abstractions[1].guarantee;
@@ -75,9 +76,15 @@ TEST_F(StatedProperties, CompileStatesThePolicysValueAndTheOptimum) {
   EXPECT_GE(left_soon[rt::kPolicyUpper], 608.0 / 625);
   EXPECT_LT(left_soon[rt::kPolicyLower], left_soon[rt::kPolicyUpper]);
   EXPECT_LT(left_soon[rt::kPolicyUpper] - left_soon[rt::kPolicyLower], 1e-15);
+  // An infinite expected reward is stated as such, and the loader's validation takes it.
+  const double* never = view.abstractions[0].guarantee + 3 * rt::kGuaranteeFields;
+  EXPECT_EQ(never[rt::kPolicyLower], HUGE_VAL);
+  EXPECT_EQ(never[rt::kOptimumUpper], HUGE_VAL);
   const nlohmann::json json = nlohmann::json::parse(test::read_bytes(dir / "corridor.json"));
   EXPECT_EQ(json.at("abstractions").at(0).at("guarantees").at(1).at("policy").at("exact"),
             "608/625");
+  EXPECT_EQ(json.at("abstractions").at(0).at("guarantees").at(3).at("optimum").at("upper"),
+            "infinity");
 }
 
 TEST_F(StatedProperties, VerifyRecomputesThemAndRefusesAChangedValue) {
@@ -85,7 +92,7 @@ TEST_F(StatedProperties, VerifyRecomputesThemAndRefusesAChangedValue) {
   const auto catalog = dir / "corridor.bin";
   auto result = run_oasisc("verify " + kCorridor + " " + catalog.string());
   EXPECT_EQ(result.status, 0) << result.output;
-  EXPECT_NE(result.output.find("properties: the spec's 4, by name and text"), std::string::npos)
+  EXPECT_NE(result.output.find("properties: the spec's 5, by name and text"), std::string::npos)
       << result.output;
   EXPECT_NE(result.output.find("property 'reach_left' in context 'treat_right': policy 0, "
                                "optimum 1, recomputed on the model's own states"),
@@ -133,7 +140,7 @@ TEST_F(StatedProperties, AGeneratedHeaderNamesThem) {
   const auto result = run_oasisc("compile " + kCorridor + " --format cpp -o " + dir.string());
   ASSERT_EQ(result.status, 0) << result.output;
   const std::string header = test::read_bytes(dir / "corridor_catalog.hpp");
-  EXPECT_NE(header.find("inline constexpr std::uint32_t kNumProperties = 4;"), std::string::npos)
+  EXPECT_NE(header.find("inline constexpr std::uint32_t kNumProperties = 5;"), std::string::npos)
       << header;
   EXPECT_NE(header.find("inline constexpr std::uint32_t reach_left = 0;  // Pmax=? [F x=0]"),
             std::string::npos)

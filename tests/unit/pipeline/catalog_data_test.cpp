@@ -2,6 +2,7 @@
 // must pass the runtime's own validation, carry the two abstractions and their policies, and
 // drive the attention filter to the context that explains the rewards.
 
+#include <cmath>
 #include <fstream>
 #include <iterator>
 #include <string>
@@ -72,6 +73,33 @@ TEST(CatalogData, RobustSectionValidates) {
   ASSERT_TRUE(rt::validate(view, &why)) << why;
   EXPECT_TRUE(view.has_robust_section());
   EXPECT_EQ(view.abstractions[0].state_transitions.num_edges, 10U);
+}
+
+// The runtime's validation of stated properties: an interval per value (an infinite reward
+// as +infinity both ways), each abstraction holding them, none without properties.
+TEST(CatalogData, StatedPropertiesValidateAsIntervals) {
+  model::CatalogData catalog = build(discrete_tracking());
+  catalog.properties.push_back({"p", "Pmax=? [F \"s3\"]"});
+  const auto validates = [&catalog](const char* what) {
+    std::string why;
+    const bool ok = rt::validate(catalog.view(), &why);
+    return ok ? std::string("ok") : std::string(what) + ": " + why;
+  };
+  for (model::AbstractionData& data : catalog.abstractions)
+    data.guarantee = {0.25, 0.25, 1.0, 1.0};
+  EXPECT_EQ(validates("exact values"), "ok");
+  catalog.abstractions[1].guarantee = {HUGE_VAL, HUGE_VAL, 0.5, 0.5000001};
+  EXPECT_EQ(validates("infinite and an interval"), "ok");
+  catalog.abstractions[1].guarantee = {0.5, 0.25, 1.0, 1.0};
+  EXPECT_NE(validates("lower above upper").find("is not an interval"), std::string::npos);
+  catalog.abstractions[1].guarantee = {0.25, std::nan(""), 1.0, 1.0};
+  EXPECT_NE(validates("NaN").find("is not an interval"), std::string::npos);
+  catalog.abstractions[1].guarantee.clear();
+  EXPECT_NE(validates("missing").find("have no values"), std::string::npos);
+  catalog.properties.clear();
+  catalog.abstractions[1].guarantee = {0.25, 0.25, 1.0, 1.0};
+  EXPECT_NE(validates("without properties").find("guarantees without properties"),
+            std::string::npos);
 }
 
 TEST(CatalogData, FilterFollowsTheRewards) {

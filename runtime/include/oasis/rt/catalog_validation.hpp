@@ -276,8 +276,8 @@ inline bool validate_cells(const CatalogView& catalog, const AbstractionView& ab
 }
 
 // The stated properties: named, and per abstraction an interval per value, lower <= upper
-// (infinite only for a reward that is: a probability's interval lies in [0, 1], but the view
-// does not say which property is which, so the compiler's checks, not these, hold that).
+// (+infinity for a reward that is infinite; a probability's interval lies in [0, 1], but the
+// view does not say which property is which, so the compiler's checks, not these, hold that).
 inline bool validate_properties(const CatalogView& catalog, std::string* why) {
   const PropertyStatements& properties = catalog.properties;
   if (properties.count == 0) {
@@ -298,8 +298,8 @@ inline bool validate_properties(const CatalogView& catalog, std::string* why) {
     for (std::uint32_t k = 0; k < properties.count * kGuaranteeFields; k += 2) {
       const double lower = guarantee[k];
       const double upper = guarantee[k + 1];
-      if (std::isnan(lower) || std::isnan(upper) || !(lower <= upper) || lower == HUGE_VAL ||
-          upper == -HUGE_VAL)
+      // +infinity both ways is an expected reward that is infinite; nothing is -infinity.
+      if (std::isnan(lower) || std::isnan(upper) || !(lower <= upper) || upper == -HUGE_VAL)
         return fail(why, where + ": the value of property " + std::to_string(k / kGuaranteeFields) +
                              " is not an interval");
     }
