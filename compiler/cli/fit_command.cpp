@@ -82,14 +82,8 @@ std::string files_text(std::size_t count) {
 bool deliver_fragment(const std::string& fragment, const std::string& path) {
   std::cout << '\n' << fragment;
   if (path.empty() || path == "-") return true;
-  AtomicFile file;
   std::string error;
-  if (!file.open(path, error)) {
-    report_error(path, error);
-    return false;
-  }
-  file.append(fragment);
-  if (!file.commit(error)) {
+  if (!write_atomically(path, fragment, error)) {
     report_error(path, error);
     return false;
   }

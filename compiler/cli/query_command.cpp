@@ -154,12 +154,8 @@ std::string adversary_text(const model::ExplicitModel& model,
 }
 
 bool write_text(const std::string& path, const std::string& text) {
-  AtomicFile file;
   std::string error;
-  if (file.open(path, error)) {
-    file.append(text);
-    if (file.commit(error)) return true;
-  }
+  if (write_atomically(path, text, error)) return true;
   report_error(kProgram, error);
   return false;
 }

@@ -224,10 +224,7 @@ std::string binary_catalog(const model::CatalogData& catalog) {
 
 bool write_binary_catalog(const model::CatalogData& catalog, const std::string& path,
                           std::string& error) {
-  AtomicFile file;
-  if (!file.open(path, error)) return false;
-  file.append(binary_catalog(catalog));
-  return file.commit(error);
+  return write_atomically(path, binary_catalog(catalog), error);
 }
 
 }  // namespace oasis::codegen

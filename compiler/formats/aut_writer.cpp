@@ -125,10 +125,9 @@ bool write_aut(const model::ExplicitModel& model, std::size_t context, AtomicFil
 
 bool write_aut_file(const model::ExplicitModel& model, std::size_t context, const std::string& path,
                     std::string& error) {
-  AtomicFile out;
-  if (!out.open(path, error)) return false;
-  if (!write_aut(model, context, out, error)) return false;  // `out` removes its temporary
-  return out.commit(error);
+  return write_atomically(path, error, [&](AtomicFile& out, std::string& why) {
+    return write_aut(model, context, out, why);
+  });
 }
 
 }  // namespace oasis::formats

@@ -242,10 +242,9 @@ bool write_drn(const model::ExplicitModel& model, std::span<const std::size_t> c
 
 bool write_drn_file(const model::ExplicitModel& model, std::span<const std::size_t> contexts,
                     const std::string& path, std::string& error) {
-  AtomicFile out;
-  if (!out.open(path, error)) return false;
-  if (!write_drn(model, contexts, out, error)) return false;  // `out` removes its temporary
-  return out.commit(error);
+  return write_atomically(path, error, [&](AtomicFile& out, std::string& why) {
+    return write_drn(model, contexts, out, why);
+  });
 }
 
 }  // namespace oasis::formats

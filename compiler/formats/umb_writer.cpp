@@ -397,10 +397,9 @@ bool write_umb(const model::ExplicitModel& model, std::span<const std::size_t> c
 
 bool write_umb_file(const model::ExplicitModel& model, std::span<const std::size_t> contexts,
                     const std::string& path, std::string& error) {
-  AtomicFile out;
-  if (!out.open(path, error)) return false;
-  if (!write_umb(model, contexts, out, error)) return false;  // `out` removes its temporary
-  return out.commit(error);
+  return write_atomically(path, error, [&](AtomicFile& out, std::string& why) {
+    return write_umb(model, contexts, out, why);
+  });
 }
 
 }  // namespace oasis::formats

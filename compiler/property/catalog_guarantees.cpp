@@ -13,19 +13,23 @@ namespace {
 // What a stated interval may be wide: the sound mode's default precision.
 constexpr double kStatedPrecision = 1e-6;
 
-// The model as context `context` sees it: its transitions under every reward structure, its
-// own rewards first (what `R` without a name reads), the other contexts' by their names.
-model::ExplicitModel context_model(
-    const model::ExplicitModel& model, std::size_t context,
-    const std::shared_ptr<const model::TransitionMatrix>& transitions) {
+// The model as context `context` sees it: its rewards first (what `R` without a name reads),
+// the other contexts' after it by their names, every one under the context's transitions.
+// One copy of the model serves both of a context's answers: use_transitions() switches it
+// between the context's MDP and the chain its policy induces.
+model::ExplicitModel context_model(const model::ExplicitModel& model, std::size_t context) {
   model::ExplicitModel seen = model;
   seen.contexts.clear();
   seen.contexts.push_back(model.contexts[context]);
   for (std::size_t c = 0; c < model.contexts.size(); ++c)
     if (c != context) seen.contexts.push_back(model.contexts[c]);
+  return seen;
+}
+
+void use_transitions(model::ExplicitModel& seen,
+                     const std::shared_ptr<const model::TransitionMatrix>& transitions) {
   for (model::Context& each : seen.contexts)
     each.transitions = transitions;
-  return seen;
 }
 
 // `matrix` with only the action `action_of[s]` left in each state s (all of them where it is
@@ -120,16 +124,17 @@ std::optional<std::vector<std::pair<StatedValue, StatedValue>>> answer_context(
     const std::vector<PropertiesFile>& properties, std::size_t context,
     const std::vector<model::ActionIndex>& actions, bool bisimulation,
     DiagnosticEngine& diagnostics) {
-  const auto& transitions = model.contexts[context].transitions;
-  const model::ExplicitModel optimum = context_model(model, context, transitions);
-  const model::ExplicitModel policy =
-      context_model(model, context, restricted(*transitions, actions));
+  const auto& own = model.contexts[context].transitions;
+  const auto chain = restricted(*own, actions);
+  model::ExplicitModel seen = context_model(model, context);
   std::vector<std::pair<StatedValue, StatedValue>> values;
   for (const PropertiesFile& file : properties) {
     // One error is reported once: the optimum is not tried after the policy failed.
-    const auto under_policy = answer_one(policy, names, file, bisimulation, diagnostics);
+    use_transitions(seen, chain);
+    const auto under_policy = answer_one(seen, names, file, bisimulation, diagnostics);
     if (!under_policy) return std::nullopt;
-    const auto at_optimum = answer_one(optimum, names, file, bisimulation, diagnostics);
+    use_transitions(seen, own);
+    const auto at_optimum = answer_one(seen, names, file, bisimulation, diagnostics);
     if (!at_optimum) return std::nullopt;
     values.emplace_back(*under_policy, *at_optimum);
   }

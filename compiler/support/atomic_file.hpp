@@ -137,4 +137,24 @@ class AtomicFile {
   std::string error_;
 };
 
+// Writes `path` as one unit: an AtomicFile opened, filled by write(file, error) (which returns
+// false, with `error` set, to give up), and committed. On any failure `error` says why and the
+// destination is as it was. What every writer of one whole file runs.
+template <typename Write>
+[[nodiscard]] bool write_atomically(const std::string& path, std::string& error, Write write) {
+  AtomicFile file;
+  if (!file.open(path, error)) return false;
+  if (!write(file, error)) return false;  // `file` removes its temporary
+  return file.commit(error);              // a write error reports here
+}
+
+// The same for a text or bytes already in memory.
+[[nodiscard]] inline bool write_atomically(const std::string& path, std::string_view bytes,
+                                           std::string& error) {
+  return write_atomically(path, error, [bytes](AtomicFile& file, std::string&) {
+    file.append(bytes);
+    return true;
+  });
+}
+
 }  // namespace oasis
