@@ -1,8 +1,10 @@
 // `oasisc verify MODEL RESULT`: check independently that the partitions in RESULT are the
 // coarsest bisimulations of MODEL's contexts, so that a quotient can be trusted without
-// trusting the engine that computed it.
+// trusting the engine that computed it; likewise a catalog, schedulers, and a continuous
+// model's controller and its bounds (by simulation).
 
 #include <iostream>
+#include <limits>
 #include <memory>
 #include <optional>
 
@@ -18,6 +20,8 @@
 #include "text/printable_text.hpp"
 #include "verify/continuous_check.hpp"
 #include "verify/continuous_json_reader.hpp"
+#include "verify/controller_check.hpp"
+#include "verify/controller_reader.hpp"
 #include "verify/discrete_catalog_check.hpp"
 #include "verify/partition_result_reader.hpp"
 #include "verify/scheduler_check.hpp"
@@ -31,7 +35,8 @@ namespace {
 struct VerifyOptions {
   std::string model;
   std::string result;
-  std::optional<double> p_correct;  // the catalog was compiled with --robust P
+  std::optional<double> p_correct;         // the catalog was compiled with --robust P
+  verify::MonteCarloSettings monte_carlo;  // a controller file's bounds
   CommonOptions common;
 };
 
@@ -92,7 +97,22 @@ int check_continuous_view(const VerifyOptions& options, const model::ModelIR& ir
   return print_checks(checks);
 }
 
+// `verify SPEC NAME.controller.json`: the controller file's structure against the spec, and
+// its bounds against simulations of the true system (verify/controller_check.hpp).
+int verify_controller(const VerifyOptions& options, const model::ModelIR& ir) {
+  std::string error;
+  const auto file =
+      verify::read_controller_file(options.result, options.common.load.max_input_bytes, error);
+  if (!file) {
+    report_error(options.result, text::printable_message(error));
+    return 1;
+  }
+  return print_checks(verify::check_controller(ir, *file, options.monte_carlo));
+}
+
 int verify_continuous(const VerifyOptions& options, const model::ModelIR& ir, std::uint64_t hash) {
+  if (verify::is_controller_file(options.result, options.common.load.max_input_bytes))
+    return verify_controller(options, ir);
   if (options.result.ends_with(".json")) {
     std::string error;
     verify::StatedCells stated;  // the JSON's own cells, checked against the partition
@@ -150,6 +170,11 @@ int run_verify(const VerifyOptions& options) {
   if (!loaded->model) return verify_continuous(options, *loaded->ir, loaded->source_hash);
   const model::ExplicitModel& model = *loaded->model;
   std::string error;
+  if (options.result.ends_with(".controller.json")) {
+    report_error(options.result,
+                 "a controller file, but the model is not a continuous spec with an objective");
+    return 1;
+  }
   // A compiled binary catalog (oasisc compile): everything it carries is checked.
   if (options.result.ends_with(".bin")) return verify_catalog(options, *loaded, diagnostics);
   if (verify::is_scheduler_file(options.result, options.common.load.max_input_bytes))
@@ -194,6 +219,33 @@ int run_verify(const VerifyOptions& options) {
   return all_hold ? 0 : 1;
 }
 
+void add_monte_carlo_options(CLI::App& command, verify::MonteCarloSettings& settings) {
+  command
+      .add_option("--samples", settings.samples,
+                  "Controller files: simulated runs per tested cell (M)")
+      ->capture_default_str()
+      ->check(whole_in(1, 1'000'000'000));
+  command.add_option("--cells", settings.cells, "Controller files: cells tested (K)")
+      ->capture_default_str()
+      ->check(whole_in(1, 1'000'000'000));
+  command
+      .add_option("--confidence", settings.confidence,
+                  "Controller files: the probability that a sound file passes (1 - delta)")
+      ->capture_default_str()
+      ->check(real_in(RealBounds{0.0, 1.0, true, true}));
+  command
+      .add_option("--seed", settings.seed,
+                  "Controller files: the seed of the tested cells, their points and the runs")
+      ->capture_default_str()
+      ->check(whole_in(0, std::numeric_limits<std::uint64_t>::max()));
+  command
+      .add_option("--max-steps", settings.max_steps,
+                  "Controller files: steps after which an unbounded objective's run that is "
+                  "still undecided counts as a failure (H)")
+      ->capture_default_str()
+      ->check(whole_in(1, 1'000'000'000));
+}
+
 }  // namespace
 
 CommandRunner add_verify_command(CLI::App& app) {
@@ -202,10 +254,11 @@ CommandRunner add_verify_command(CLI::App& app) {
       "verify", "Check a compiled catalog (or a quotient's partitions) against its model");
   command->footer(
       "RESULT is a catalog NAME.bin written by 'oasisc compile', the JSON of 'oasisc\n"
-      "quotient --format json --partition', or a scheduler file of 'oasisc query\n"
-      "--scheduler' (JSON with a \"schedulers\" key). The checker shares no code with the\n"
-      "compiler's quotient, policy, model checker or emitters; it compares with the model in\n"
-      "exact arithmetic.\n\n"
+      "quotient --format json --partition', a scheduler file of 'oasisc query\n"
+      "--scheduler' (JSON with a \"schedulers\" key), or a controller file\n"
+      "NAME.controller.json of 'oasisc compile'. The checker shares no code with the\n"
+      "compiler's quotient, policy, model checker, guarantees or emitters; it compares with\n"
+      "the model in exact arithmetic (a controller's bounds: by simulation).\n\n"
       "For a catalog it checks, and prints one line each:\n"
       "  - the file: magic, format, checksum, structure; compiled from this very spec;\n"
       "  - names: the model's name, actions, states and contexts, in order;\n"
@@ -237,7 +290,20 @@ CommandRunner add_verify_command(CLI::App& app) {
       "matter; the value of the chain it induces, solved exactly (GMP rationals); and\n"
       "optimality by a certificate: no action improves on that value anywhere (for Pmin,\n"
       "also 0 wherever some scheduler avoids the target forever). It prints the value in\n"
-      "the initial state.\n\n"
+      "the initial state.\n"
+      "For a controller file NAME.controller.json (a continuous spec with an 'objective';\n"
+      "or any JSON whose \"format\" is \"oasis-controller\"): the model's name and\n"
+      "variables; the grid's breakpoints, each the nearest double to the spec's exact one;\n"
+      "the inputs and actions; the objective; 0 <= lower <= upper <= 1 per cell; the\n"
+      "controller's shape and action indices. Then a Monte-Carlo check of the bounds: in\n"
+      "--cells K cells (a third with lower > 0.05, a third with upper < 0.95, the rest any),\n"
+      "from a random point of each, --samples M runs of the true system (the spec's map in\n"
+      "doubles, its noise) under the controller; each cell's estimate p must satisfy\n"
+      "lower - t <= p <= upper + t, t = sqrt(ln(2K / (1 - confidence)) / (2M)) (Hoeffding,\n"
+      "a union bound over the K cells), so a sound file fails with probability at most\n"
+      "1 - confidence. A run that leaves the grid's box while in the safe set counts as a\n"
+      "failure (the pessimistic reading; the report says how many), and so does an\n"
+      "unbounded run still undecided after --max-steps.\n\n"
       "Exit status: 0 everything holds, 1 a failure or a bad MODEL or RESULT.\n\n"
       "Examples:\n"
       "  oasisc compile specs/discrete_tracking.oasis -o out\n"
@@ -245,7 +311,9 @@ CommandRunner add_verify_command(CLI::App& app) {
       "  oasisc quotient specs/discrete_tracking.oasis --format json --partition -o r.json\n"
       "  oasisc verify specs/discrete_tracking.oasis r.json\n"
       "  oasisc query two_dice.nm --prop 'Pmax=? [F \"seven\"]' --scheduler s.json\n"
-      "  oasisc verify two_dice.nm s.json");
+      "  oasisc verify two_dice.nm s.json\n"
+      "  oasisc compile vdp.oasis -o out\n"
+      "  oasisc verify vdp.oasis out/van_der_pol.controller.json --samples 4000");
   command
       ->add_option("model", options->model,
                    "Spec (.oasis), PRISM program (.pm, .nm, .prism) or model (.aut, .tra) file")
@@ -253,15 +321,16 @@ CommandRunner add_verify_command(CLI::App& app) {
   command
       ->add_option(
           "result", options->result,
-          "JSON written by 'oasisc quotient --partition' or 'oasisc query --scheduler', or a "
+          "JSON written by 'oasisc quotient --partition' or 'oasisc query --scheduler', a "
           "catalog NAME.bin written by 'oasisc compile' (refused if damaged or compiled from "
-          "another spec)")
+          "another spec), or a controller file NAME.controller.json")
       ->required();
   command
       ->add_option("--robust", options->p_correct,
                    "The catalog was compiled with --robust P: expect its symmetric observation "
                    "model with p_correct P instead of the spec's")
       ->check(real_in(closed(0.0, 1.0)));
+  add_monte_carlo_options(*command, options->monte_carlo);
   add_common_options(*command, options->common);
   return [options] { return run_verify(*options); };
 }
