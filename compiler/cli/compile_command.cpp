@@ -12,18 +12,22 @@
 #include <mutex>
 #include <set>
 #include <sstream>
+#include <thread>
 
 #include "cli/commands.hpp"
 #include "codegen/catalog_files.hpp"
+#include "codegen/controller_json.hpp"
 #include "command_line/number_options.hpp"
 #include "command_line/output_names.hpp"
 #include "model/catalog_data.hpp"
+#include "model/enclosure.hpp"
 #include "oasis/rt/catalog_sections.hpp"
 #include "oasis/rt/spec_hash.hpp"
 #include "pipeline/continuous_catalog.hpp"
 #include "pipeline/continuous_catalog_data.hpp"
 #include "pipeline/continuous_options.hpp"
 #include "pipeline/discrete_catalog.hpp"
+#include "pipeline/guarantee_compile.hpp"
 #include "property/catalog_guarantees.hpp"
 #include "support/atomic_file.hpp"
 #include "support/error_report.hpp"
@@ -91,6 +95,70 @@ void print_guarantees(const model::CatalogData& catalog, std::FILE* stream) {
   }
 }
 
+// The bounds of a compiled objective, summed up: what a reader wants before opening the file.
+void print_objective_summary(const model::ModelIR& ir, const pipeline::GuaranteeResult& result,
+                             std::FILE* stream) {
+  const guarantee::Synthesis& s = result.synthesis;
+  const std::size_t cells = result.grid.cells;
+  double lower_mean = 0;
+  double upper_mean = 0;
+  for (std::size_t c = 0; c < cells; ++c) {
+    lower_mean += s.lower[c] / static_cast<double>(cells);
+    upper_mean += s.upper[c] / static_cast<double>(cells);
+  }
+  std::fprintf(stream, "objective: %zu cells x %zu actions, %llu interval entries (%.2f s)\n",
+               cells, result.actions.size(), static_cast<unsigned long long>(result.entries),
+               result.abstraction_seconds);
+  std::fprintf(stream,
+               "  bounds: lower mean %.6f, upper mean %.6f, largest gap %.3g; %s after %llu "
+               "sweeps (%.2f s)\n",
+               lower_mean, upper_mean, s.largest_gap, s.stop_reason.c_str(),
+               static_cast<unsigned long long>(s.sweeps + s.evaluation_sweeps),
+               result.synthesis_seconds);
+  // The cell at the domain's centre: where benchmark tables usually quote "the" value.
+  std::size_t centre = 0;
+  for (std::size_t i = 0; i < result.grid.dimension(); ++i)
+    centre += result.grid.intervals(i) / 2 * result.grid.strides[i];
+  std::fprintf(stream, "  at the centre cell (%s): [%.6f, %.6f]\n",
+               pipeline::describe_cell(result.grid, ir, centre).c_str(), s.lower[centre],
+               s.upper[centre]);
+}
+
+// A continuous model with an objective: the controller and its bounds, as NAME.controller.json.
+bool compile_objective(const CompileOptions& options, const model::ModelIR& ir,
+                       DiagnosticEngine& diagnostics, codegen::OutputSet& out, std::string& error) {
+  pipeline::GuaranteeOptions build;
+  build.jobs = options.jobs == 0 ? std::max(1u, std::thread::hardware_concurrency()) : options.jobs;
+  if (effective_load_options(options.common).progress) {
+    build.progress = [](const std::string& line) {
+      std::fprintf(stderr, "oasisc: %s\n", line.c_str());
+    };
+    build.synthesis.progress = [](std::uint64_t sweep, double gap) {
+      if (sweep % 100 == 0)
+        std::fprintf(stderr, "oasisc: sweep %llu, largest gap %.3g\n",
+                     static_cast<unsigned long long>(sweep), gap);
+    };
+  }
+  std::optional<pipeline::GuaranteeResult> result;
+  try {
+    result = pipeline::compile_guarantee(ir, build);
+  } catch (const model::EnclosureError& refusal) {
+    diagnostics.error(refusal.where, refusal.what());
+    return false;
+  } catch (const std::invalid_argument& refusal) {
+    diagnostics.error(ir.grid_range, refusal.what());
+    return false;
+  }
+  print_objective_summary(ir, *result, out.to_standard_output() ? stderr : stdout);
+  return out.write_with(
+      ir.name + ".controller.json",
+      [&](AtomicFile& file) {
+        codegen::JsonWriter writer([&file](std::string_view piece) { file.append(piece); });
+        codegen::write_controller_json(writer, ir, *result);
+      },
+      error);
+}
+
 int run_compile(CompileOptions options) {
   SourceManager sources;
   DiagnosticEngine diagnostics(sources, std::cerr, options.common.max_errors);
@@ -98,6 +166,15 @@ int run_compile(CompileOptions options) {
       load_model(options.spec, sources, diagnostics, effective_load_options(options.common));
   if (!loaded || diagnostics.has_errors()) return 1;
   const bool continuous = !loaded->model;
+  const bool objective = continuous && loaded->ir->guarantee.has_value();
+  if (objective && !options.formats.empty() &&
+      (options.formats.size() != 1 || options.formats.front() != "json")) {
+    report_error(options.spec,
+                 "a model with an objective compiles to its controller's JSON "
+                 "(docs/guarantees.md): --format json, or no --format");
+    return 1;
+  }
+  if (objective) options.formats = {"json"};
   if (options.formats.empty()) {
     options.formats = continuous ? std::vector<std::string>{"bin", "json", "svg"}
                                  : std::vector<std::string>{"bin", "json", "dot"};
@@ -139,7 +216,14 @@ int run_compile(CompileOptions options) {
   }
   codegen::OutputSet out(to_standard_output ? std::string() : directory.staging_path());
   bool written = false;
-  if (continuous) {
+  if (objective) {
+    if (!compile_objective(options, *loaded->ir, diagnostics, out, error)) {
+      if (diagnostics.has_errors()) return 1;
+      report_error(options.output, error);
+      return 1;
+    }
+    written = true;
+  } else if (continuous) {
     pipeline::ContinuousCatalogOptions build;
     build.abstraction.target = pipeline::continuous_target(*loaded->ir, options.target);
     build.abstraction.attention = !options.no_attention;

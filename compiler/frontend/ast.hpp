@@ -6,6 +6,7 @@
 #include <memory>
 #include <optional>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include "frontend/token.hpp"
@@ -133,6 +134,32 @@ struct Setting {  // `discount e;`, `horizon e;`, `period e;`
   SourceRange range;
 };
 
+// `input u in [lo .. hi] step s;` (low, high, step) or `input u in {v1, ...};` (values).
+struct InputDecl {
+  Name name;
+  ExprPtr low;
+  ExprPtr high;
+  ExprPtr step;
+  std::vector<ExprPtr> values;
+  SourceRange range;
+};
+
+// `objective safety S steps N;` or `objective reach T [while S] [steps N | at N];`
+struct ObjectiveDecl {
+  bool reach = false;
+  ExprPtr target;  // reach only
+  ExprPtr safe;    // null: the whole domain
+  ExprPtr steps;   // null: unbounded (reach only)
+  bool exactly_at_step = false;
+  SourceRange range;
+};
+
+// `grid x : 50, y : 50;`: cells per continuous variable.
+struct GridDecl {
+  std::vector<std::pair<Name, ExprPtr>> cells;
+  SourceRange range;
+};
+
 struct MdpDecl {
   Name name;
   SourceRange range;
@@ -152,6 +179,10 @@ struct MdpDecl {
   // `max_cells n;`), which the command line may override.
   std::optional<Setting> epsilon;
   std::optional<Setting> max_cells;
+  // Continuous models with guarantees (docs/guarantees.md).
+  std::vector<InputDecl> inputs;
+  std::optional<ObjectiveDecl> objective;
+  std::optional<GridDecl> grid;
 };
 
 struct ContextDecl {

@@ -38,7 +38,7 @@ LoweredBehaviour BehaviourLowering::lower_behaviour(const ast::Behaviour& body, 
   LoweredBehaviour lowered;
   lowered.commands_by_action.resize(ir_.actions.size());
   lowered.overrides_action.assign(ir_.actions.size(), false);
-  lowered.dynamics.resize(ir_.actions.size());
+  lowered.maps.resize(ir_.actions.size());
   for (const auto& transition : body.transitions)
     lower_explicit_transition(transition, lowered);
   for (const auto& command : body.commands)
@@ -277,32 +277,32 @@ void BehaviourLowering::lower_dynamics(const ast::Dynamics& dynamics,
   }
   auto action = resolve_action(dynamics.action);
   if (!action) return;
-  if (lowered.dynamics[*action]) {
+  if (lowered.maps[*action]) {
     diagnostics_.error(dynamics.range,
                        "action " + quoted(dynamics.action.text) + " already has dynamics here");
-    diagnostics_.note(lowered.dynamics[*action]->range, "first dynamics here");
+    diagnostics_.note(lowered.maps[*action]->range, "first dynamics here");
     return;
   }
-  model::AffineDynamics affine = identity_dynamics(dynamics.range);
+  model::MapDynamics map = identity_map(dynamics.range);
   std::vector<bool> assigned(ir_.continuous.size(), false);
   for (const ast::Assignment& equation : dynamics.equations) {
-    if (!lower_equation(equation, affine, assigned)) return;
+    if (!lower_equation(equation, map, assigned)) return;
   }
   // The most specific disturbance wins: the block's own, then its body's (model or
   // context), then the model's, which holds for every action.
   for (const LoweredDisturbance& disturbance : shared) {
-    affine.disturbance[disturbance.variable] = disturbance.model;
+    map.disturbance[disturbance.variable] = disturbance.model;
   }
   for (const auto& disturbance : dynamics.disturbances) {
     if (auto checked = lower_disturbance(disturbance)) {
-      affine.disturbance[checked->variable] = checked->model;
+      map.disturbance[checked->variable] = checked->model;
     }
   }
-  lowered.dynamics[*action] = std::move(affine);
+  lowered.maps[*action] = std::move(map);
 }
 
-bool BehaviourLowering::lower_equation(const ast::Assignment& equation,
-                                       model::AffineDynamics& affine, std::vector<bool>& assigned) {
+bool BehaviourLowering::lower_equation(const ast::Assignment& equation, model::MapDynamics& map,
+                                       std::vector<bool>& assigned) {
   const auto* entry = scope_.find(equation.variable.text);
   if (entry == nullptr || entry->value.kind != SymbolKind::ContinuousVariable) {
     diagnostics_.error(equation.variable.range,
@@ -316,18 +316,10 @@ bool BehaviourLowering::lower_equation(const ast::Assignment& equation,
     return false;
   }
   assigned[slot] = true;
-  const ExpressionRules rules{.continuous = true, .place = "in dynamics"};
+  const ExpressionRules rules{.continuous = true, .dynamics = true, .place = "in dynamics"};
   auto value = expressions_.check_typed(*equation.value, rules, Type::Real, "an equation");
   if (!value) return false;
-  auto form = model::affine_form(*value, ir_.continuous.size());
-  if (!form) {
-    diagnostics_.error(equation.value->range,
-                       "dynamics must be affine: a sum of constants "
-                       "times variables, plus a constant");
-    return false;
-  }
-  affine.matrix[slot] = std::move(form->coefficients);
-  affine.offset[slot] = std::move(form->constant);
+  map.next[slot] = std::move(*value);
   return true;
 }
 
@@ -359,17 +351,35 @@ std::optional<LoweredDisturbance> BehaviourLowering::lower_disturbance(
 }
 
 // x' = x (+ the model-level disturbances): the dynamics of an action that has no block.
-model::AffineDynamics BehaviourLowering::identity_dynamics(SourceRange range) const {
+model::MapDynamics BehaviourLowering::identity_map(SourceRange range) const {
   const std::size_t n = ir_.continuous.size();
-  model::AffineDynamics affine;
-  affine.range = range;
-  affine.matrix.assign(n, std::vector<Rational>(n));
-  affine.offset.assign(n, 0);
-  affine.disturbance.assign(n, {});
-  for (std::size_t i = 0; i < n; ++i)
-    affine.matrix[i][i] = 1;
+  model::MapDynamics map;
+  map.range = range;
+  map.disturbance.assign(n, {});
+  for (std::uint32_t i = 0; i < n; ++i) {
+    model::Expression variable;
+    variable.op = model::Op::ContinuousVariable;
+    variable.type = Type::Real;
+    variable.slot = i;
+    variable.range = range;
+    map.next.push_back(std::move(variable));
+  }
   for (const LoweredDisturbance& disturbance : model_disturbances_) {
-    affine.disturbance[disturbance.variable] = disturbance.model;
+    map.disturbance[disturbance.variable] = disturbance.model;
+  }
+  return map;
+}
+
+std::optional<model::AffineDynamics> affine_dynamics(const model::MapDynamics& map) {
+  const std::size_t n = map.next.size();
+  model::AffineDynamics affine;
+  affine.range = map.range;
+  affine.disturbance = map.disturbance;
+  for (const model::Expression& component : map.next) {
+    auto form = model::affine_form(component, n);
+    if (!form) return std::nullopt;
+    affine.matrix.push_back(std::move(form->coefficients));
+    affine.offset.push_back(std::move(form->constant));
   }
   return affine;
 }

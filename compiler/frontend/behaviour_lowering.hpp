@@ -19,6 +19,10 @@
 
 namespace oasis::frontend {
 
+// The affine form of a map (x' = A x + b), when every component is affine in the continuous
+// variables and reads no input; nullopt otherwise.
+std::optional<model::AffineDynamics> affine_dynamics(const model::MapDynamics& map);
+
 // Everything a model or context body says, lowered. `transitions` is per (state, action)
 // for explicit models and per action for factored ones.
 struct LoweredBehaviour {
@@ -27,7 +31,7 @@ struct LoweredBehaviour {
   std::map<std::pair<std::uint32_t, std::uint32_t>, model::Command> explicit_transitions;
   std::vector<model::Reward> rewards;
   bool has_rewards = false;
-  std::vector<std::optional<model::AffineDynamics>> dynamics;
+  std::vector<std::optional<model::MapDynamics>> maps;  // per action: its `dynamics` block
   bool empty = true;
 };
 
@@ -57,7 +61,7 @@ class BehaviourLowering {
   std::optional<model::ActionIndex> resolve_action(const ast::Name& name);
 
   // x' = x (+ the model-level disturbances): the dynamics of an action that has no block.
-  [[nodiscard]] model::AffineDynamics identity_dynamics(SourceRange range) const;
+  [[nodiscard]] model::MapDynamics identity_map(SourceRange range) const;
 
   // Whether some body gave an explicit transition for (state, action), even one whose
   // distribution was refused: one mistake should not also produce a "no transition" error.
@@ -79,7 +83,7 @@ class BehaviourLowering {
   std::optional<model::Reward> lower_reward(const ast::RewardItem& item);
   void lower_dynamics(const ast::Dynamics& dynamics, const std::vector<LoweredDisturbance>& shared,
                       LoweredBehaviour& lowered);
-  bool lower_equation(const ast::Assignment& equation, model::AffineDynamics& affine,
+  bool lower_equation(const ast::Assignment& equation, model::MapDynamics& map,
                       std::vector<bool>& assigned);
   std::optional<LoweredDisturbance> lower_disturbance(const ast::Disturbance& disturbance);
 

@@ -7,6 +7,7 @@
 #include "frontend/behaviour_lowering.hpp"
 #include "frontend/catalog_checker.hpp"
 #include "frontend/expression_checker.hpp"
+#include "frontend/guarantee_checker.hpp"
 #include "frontend/import_checker.hpp"
 #include "frontend/objective_checker.hpp"
 #include "frontend/observation_checker.hpp"
@@ -41,6 +42,7 @@ class Checker {
     declare_actions(*mdp);
     declare_constants(*mdp);
     declare_states_or_variables(*mdp);
+    declare_inputs(*mdp, ir_, scope_, expressions_, diagnostics_);
     declare_regions(*mdp);
     check_settings(*mdp);
     if (diagnostics_.has_errors()) return std::nullopt;  // names must be sound before bodies
@@ -49,6 +51,7 @@ class Checker {
     if (ir_.kind == ModelKind::Explicit) check_explicit_complete();
     if (ir_.kind == ModelKind::Continuous) check_dynamics_complete(*mdp);
     check_catalog(*mdp);
+    check_guarantee(spec_, *mdp, ir_, scope_, expressions_, diagnostics_);
     if (diagnostics_.has_errors()) return std::nullopt;
     return std::move(ir_);
   }
@@ -311,14 +314,13 @@ class Checker {
     if (ir_.missing == model::MissingPolicy::SelfLoop) {
       // `default self;`: an action without a block keeps the state, disturbed as every action.
       for (std::uint32_t a = 0; a < ir_.actions.size(); ++a) {
-        if (!base_.dynamics[a])
-          base_.dynamics[a] = lowering_.identity_dynamics(mdp.actions[a].range);
+        if (!base_.maps[a]) base_.maps[a] = lowering_.identity_map(mdp.actions[a].range);
       }
       return;
     }
     if (ir_.missing != model::MissingPolicy::Error) return;
     for (std::uint32_t a = 0; a < ir_.actions.size(); ++a) {
-      if (base_.dynamics[a]) continue;
+      if (base_.maps[a]) continue;
       diagnostics_.error(mdp.actions[a].range, "action " + quoted(ir_.actions[a]) +
                                                    " has no 'dynamics' block (add one, or write "
                                                    "'default self;' for x' = x)");
@@ -359,9 +361,12 @@ class Checker {
       ir_.command_tables.push_back(build_table(body, &ir_.command_tables.front()));
     }
     context.rewards = body.has_rewards ? body.rewards : base_.rewards;
-    context.dynamics = base_.dynamics;
-    for (std::size_t a = 0; a < body.dynamics.size(); ++a) {
-      if (body.dynamics[a]) context.dynamics[a] = body.dynamics[a];
+    context.maps = base_.maps;
+    for (std::size_t a = 0; a < body.maps.size(); ++a) {
+      if (body.maps[a]) context.maps[a] = body.maps[a];
+    }
+    for (const auto& map : context.maps) {
+      context.dynamics.push_back(map ? affine_dynamics(*map) : std::nullopt);
     }
     return context;
   }

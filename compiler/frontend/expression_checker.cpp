@@ -28,6 +28,8 @@ Op binary_op(TokenKind kind) {
       return Op::Multiply;
     case TokenKind::Slash:
       return Op::Divide;
+    case TokenKind::Caret:
+      return Op::Power;
     case TokenKind::Equal:
       return Op::Equal;
     case TokenKind::NotEqual:
@@ -52,13 +54,23 @@ struct Builtin {
   Op op;
   std::size_t min_args;
   std::size_t max_args;
+  bool dynamics_only = false;  // not rational-valued: allowed in dynamics, never folded
 };
 
 constexpr std::array kBuiltins = {
-    Builtin{"min", Op::Min, 1, 16},    Builtin{"max", Op::Max, 1, 16},
-    Builtin{"floor", Op::Floor, 1, 1}, Builtin{"ceil", Op::Ceil, 1, 1},
-    Builtin{"abs", Op::Abs, 1, 1},     Builtin{"mod", Op::Mod, 2, 2},
+    Builtin{"min", Op::Min, 1, 16},        Builtin{"max", Op::Max, 1, 16},
+    Builtin{"floor", Op::Floor, 1, 1},     Builtin{"ceil", Op::Ceil, 1, 1},
+    Builtin{"abs", Op::Abs, 1, 1},         Builtin{"mod", Op::Mod, 2, 2},
+    Builtin{"pow", Op::Power, 2, 2},       Builtin{"sin", Op::Sin, 1, 1, true},
+    Builtin{"cos", Op::Cos, 1, 1, true},   Builtin{"tan", Op::Tan, 1, 1, true},
+    Builtin{"atan", Op::Atan, 1, 1, true}, Builtin{"exp", Op::Exp, 1, 1, true},
+    Builtin{"log", Op::Log, 1, 1, true},   Builtin{"sqrt", Op::Sqrt, 1, 1, true},
 };
+
+bool is_irrational_function(Op op) {
+  return op == Op::Sin || op == Op::Cos || op == Op::Tan || op == Op::Atan || op == Op::Exp ||
+         op == Op::Log || op == Op::Sqrt;
+}
 
 // "a bool", "an int", "a number".
 std::string with_article(Type type) {
@@ -79,6 +91,8 @@ std::string_view describe(SymbolKind kind) {
       return "state";
     case SymbolKind::Region:
       return "region";
+    case SymbolKind::Input:
+      return "input";
   }
   return "name";
 }
@@ -148,6 +162,10 @@ std::optional<Expression> ExpressionChecker::name(const ast::Expr& expr,
     case SymbolKind::ContinuousVariable:
       if (!rules.continuous) return refuse();
       result.op = Op::ContinuousVariable;
+      return result;
+    case SymbolKind::Input:
+      if (!rules.dynamics) return refuse();
+      result.op = Op::InputVariable;
       return result;
     case SymbolKind::Region:
       if (!rules.regions) return refuse();
@@ -232,6 +250,7 @@ std::optional<Expression> ExpressionChecker::binary(const ast::Expr& expr,
   }
   result.operands.push_back(std::move(*left));
   result.operands.push_back(std::move(*right));
+  if (result.op == Op::Power) return power(std::move(result));
   return fold(std::move(result));
 }
 
@@ -244,11 +263,18 @@ std::optional<Expression> ExpressionChecker::call(const ast::Expr& expr,
   if (builtin == nullptr) {
     diagnostics_.error(SourceRange{expr.range.begin, static_cast<std::uint32_t>(expr.text.size())},
                        "unknown function " + quoted(expr.text) +
-                           " (functions are min, max, floor, ceil, abs, mod)");
+                           " (functions are min, max, floor, ceil, abs, mod, pow; in dynamics "
+                           "also sin, cos, tan, atan, exp, log, sqrt)");
     return std::nullopt;
   }
   if (expr.operands.size() < builtin->min_args || expr.operands.size() > builtin->max_args) {
     diagnostics_.error(expr.range, "wrong number of arguments to " + quoted(expr.text));
+    return std::nullopt;
+  }
+  if (builtin->dynamics_only && !rules.dynamics) {
+    diagnostics_.error(expr.range, quoted(expr.text) +
+                                       " is allowed only in dynamics (its values "
+                                       "are not exact rationals)");
     return std::nullopt;
   }
   Expression result;
@@ -262,6 +288,8 @@ std::optional<Expression> ExpressionChecker::call(const ast::Expr& expr,
     result.operands.push_back(std::move(*checked));
   }
   if (result.op == Op::Floor || result.op == Op::Ceil) result.type = Type::Int;
+  if (builtin->dynamics_only) result.type = Type::Real;
+  if (result.op == Op::Power) return power(std::move(result));
   if (result.op == Op::Mod && result.type != Type::Int) {
     diagnostics_.error(expr.range, "'mod' needs integer arguments");
     return std::nullopt;
@@ -269,9 +297,22 @@ std::optional<Expression> ExpressionChecker::call(const ast::Expr& expr,
   return fold(std::move(result));
 }
 
+// `a ^ n` and `pow(a, n)`: n an integer constant of at most 64 in size, so that folding stays
+// small and interval powers (geom) stay exact in their shape. Int ^ non-negative int is an Int.
+std::optional<Expression> ExpressionChecker::power(Expression expr) {
+  const Expression& exponent = expr.operands[1];
+  if (!exponent.is_constant() || exponent.constant.get_den() != 1 || abs(exponent.constant) > 64) {
+    diagnostics_.error(exponent.range, "the exponent must be an integer constant from -64 to 64");
+    return std::nullopt;
+  }
+  expr.type = expr.operands[0].type == Type::Int && exponent.constant >= 0 ? Type::Int : Type::Real;
+  return fold(std::move(expr));
+}
+
 // Evaluates an operation whose operands are all constants; the evaluator's errors (division
 // by zero, overflow) become diagnostics at the expression.
 std::optional<Expression> ExpressionChecker::fold(Expression expr) {
+  if (is_irrational_function(expr.op)) return expr;
   for (const Expression& operand : expr.operands) {
     if (!operand.is_constant()) return expr;
   }

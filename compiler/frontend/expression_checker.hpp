@@ -18,6 +18,7 @@ struct ExpressionRules {
   bool discrete_state = false;      // discrete variables and explicit state names
   bool continuous = false;          // continuous variables
   bool regions = false;             // region names
+  bool dynamics = false;            // inputs and the functions of dynamics (sin, exp, ...)
   std::string_view place = "here";  // for messages: "in a constant", "in a guard", ...
 };
 
@@ -51,6 +52,7 @@ class ExpressionChecker {
   std::optional<model::Expression> unary(const ast::Expr& expr, const ExpressionRules& rules);
   std::optional<model::Expression> binary(const ast::Expr& expr, const ExpressionRules& rules);
   std::optional<model::Expression> call(const ast::Expr& expr, const ExpressionRules& rules);
+  std::optional<model::Expression> power(model::Expression expr);
   std::optional<model::Expression> fold(model::Expression expr);
   std::optional<Rational> constant_value(const ast::Expr& expr, std::string_view what);
   bool expect_type(const model::Expression& expr, model::Type type, std::string_view context);

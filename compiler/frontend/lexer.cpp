@@ -218,6 +218,8 @@ class Lexer {
         return take(1, TokenKind::Star);
       case '/':
         return take(1, TokenKind::Slash);
+      case '^':
+        return take(1, TokenKind::Caret);
       case '&':
         return take(d == '&' ? 2 : 1, TokenKind::And);
       case '|':
@@ -329,6 +331,8 @@ std::string_view describe(TokenKind kind) {
       return "'*'";
     case TokenKind::Slash:
       return "'/'";
+    case TokenKind::Caret:
+      return "'^'";
     case TokenKind::And:
       return "'&'";
     case TokenKind::Or:

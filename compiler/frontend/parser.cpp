@@ -263,6 +263,23 @@ class Parser {
           target = setting();
           return;
         }
+        // `input`, `objective` and `grid` are contextual too (continuous models).
+        if (!peek(1).is(TokenKind::Comma)) {
+          if (at_word("input")) {
+            decl.inputs.push_back(input());
+            return;
+          }
+          if (at_word("objective")) {
+            if (decl.objective) fail(peek(), "the model already has an 'objective'");
+            decl.objective = objective();
+            return;
+          }
+          if (at_word("grid")) {
+            if (decl.grid) fail(peek(), "the model already has a 'grid'");
+            decl.grid = grid();
+            return;
+          }
+        }
         if (!behaviour_item(decl.behaviour)) {
           fail(token,
                "expected a model item (states, actions, var, a transition, reward, ...), "
@@ -448,6 +465,71 @@ class Parser {
     } else {
       fail(peek(), "expected 'in [lo .. hi]' or '~ gaussian(mean, sd)', found " + found(peek()));
     }
+    expect(TokenKind::Semicolon);
+    result.range = span(start, previous_range());
+    return result;
+  }
+
+  // `input u in [lo .. hi] step s;` or `input u in {v1, v2, ...};`
+  InputDecl input() {
+    InputDecl result;
+    const SourceRange start = range_of(advance());
+    result.name = expect_name("an input name");
+    expect_word("in", "after the input's name");
+    if (accept(TokenKind::LeftBrace)) {
+      do {
+        result.values.push_back(expression());
+      } while (accept(TokenKind::Comma));
+      expect(TokenKind::RightBrace, "after the input's values");
+    } else {
+      expect(TokenKind::LeftBracket, "before the input's range (or '{' before a list)");
+      result.low = expression();
+      expect(TokenKind::DotDot, "between the bounds");
+      result.high = expression();
+      expect(TokenKind::RightBracket, "after the input's range");
+      expect_word("step", "after the input's range");
+      result.step = expression();
+    }
+    expect(TokenKind::Semicolon);
+    result.range = span(start, previous_range());
+    return result;
+  }
+
+  // `objective safety S steps N;` or `objective reach T [while S] [steps N | at N];`
+  ObjectiveDecl objective() {
+    ObjectiveDecl result;
+    const SourceRange start = range_of(advance());
+    if (accept_word("safety")) {
+      result.safe = expression();
+      expect_word("steps", "after the safe set (write 'objective safety S steps N;')");
+      result.steps = expression();
+    } else if (accept_word("reach")) {
+      result.reach = true;
+      result.target = expression();
+      if (accept_word("while")) result.safe = expression();
+      if (accept_word("steps")) {
+        result.steps = expression();
+      } else if (accept_word("at")) {
+        result.steps = expression();
+        result.exactly_at_step = true;
+      }
+    } else {
+      fail(peek(), "expected 'safety' or 'reach' after 'objective', found " + found(peek()));
+    }
+    expect(TokenKind::Semicolon);
+    result.range = span(start, previous_range());
+    return result;
+  }
+
+  // `grid x : 50, y : 50;`
+  GridDecl grid() {
+    GridDecl result;
+    const SourceRange start = range_of(advance());
+    do {
+      Name variable = expect_name("a continuous variable");
+      expect(TokenKind::Colon, "after the variable (write 'grid x : 50, y : 50;')");
+      result.cells.emplace_back(variable, expression());
+    } while (accept(TokenKind::Comma));
     expect(TokenKind::Semicolon);
     result.range = span(start, previous_range());
     return result;
@@ -705,7 +787,7 @@ class Parser {
   }
 
   // ---- expressions ------------------------------------------------------------------------
-  // Precedence, loosest first: |, &, !, comparisons, + -, * /, unary -.
+  // Precedence, loosest first: |, &, !, comparisons, + -, * /, unary -, ^.
 
   class NestingGuard {
    public:
@@ -797,7 +879,19 @@ class Parser {
       check_depth(*result, op);
       return result;
     }
-    return primary();
+    return power();
+  }
+
+  // `a ^ b` binds tighter than unary minus (-x^2 is -(x^2)) and groups to the right.
+  ExprPtr power() {
+    ExprPtr base = primary();
+    if (!at(TokenKind::Caret)) return base;
+    NestingGuard guard(*this);
+    const Token& op = advance();
+    ExprPtr exponent = unary();
+    ExprPtr result = make_binary(op, std::move(base), std::move(exponent));
+    check_depth(*result, op);
+    return result;
   }
 
   ExprPtr primary() {

@@ -12,7 +12,7 @@
 
 namespace oasis::frontend {
 
-enum class SymbolKind { Constant, Variable, ContinuousVariable, State, Region };
+enum class SymbolKind { Constant, Variable, ContinuousVariable, State, Region, Input };
 
 struct Symbol {
   SymbolKind kind = SymbolKind::Constant;

@@ -61,6 +61,7 @@ enum class TokenKind : std::uint8_t {
   Minus,
   Star,
   Slash,
+  Caret,
   And,
   Or,
   Not,

@@ -48,6 +48,17 @@ enum class Op {
   ModPositive,  // Mod whose divisor must be positive, as PRISM's mod requires
   Power,        // int ^ non-negative int, or number ^ int (PRISM's pow)
   IfThenElse,   // operands: condition, then, else (PRISM's c ? a : b)
+  // Continuous dynamics only (x' = f(x, u)): the input `slot` of the model's `input` list, and
+  // the functions whose values are not rational. They are never folded and never evaluated
+  // exactly; model/enclosure.hpp bounds them, the verifier evaluates them in doubles.
+  InputVariable,
+  Sin,
+  Cos,
+  Tan,
+  Atan,
+  Exp,
+  Log,
+  Sqrt,
 };
 
 struct Expression {
@@ -58,7 +69,7 @@ struct Expression {
   // that evaluating a guard over each explored state does not read the Rational.
   bool is_small_integer = true;
   std::int64_t small_integer = 0;
-  std::uint32_t slot = 0;  // Variable, ContinuousVariable, StateIs, RegionIs
+  std::uint32_t slot = 0;  // Variable, ContinuousVariable, StateIs, RegionIs, InputVariable
   std::vector<Expression> operands;
   SourceRange range;
 

@@ -86,6 +86,39 @@ struct AffineDynamics {
   SourceRange range;
 };
 
+// x' = f(x, u) + w for one action, over the continuous variables: `next[i]` is f_i, an
+// expression over the continuous variables (Op::ContinuousVariable) and the model's inputs
+// (Op::InputVariable), with the functions of docs/spec-language.md. Every continuous model
+// has it for every action; `AffineDynamics` is the same map when it is affine and reads no
+// input.
+struct MapDynamics {
+  std::vector<Expression> next;               // n
+  std::vector<DisturbanceModel> disturbance;  // per variable
+  SourceRange range;
+};
+
+// `input u in [lo .. hi] step s;` or `input u in {v1, v2, ...};`: a control input that ranges
+// over a finite set of values. The finite actions of a model with inputs are each action with
+// each combination of the inputs' values (docs/guarantees.md).
+struct InputVariable {
+  std::string name;
+  std::vector<Rational> values;  // in the order written (ascending for a range)
+  SourceRange range;
+};
+
+// `objective safety S steps N;` or `objective reach T [while S] [steps N | at N];`: what the
+// controller of a continuous model maximises, with sound lower and upper bounds on the true
+// system (docs/guarantees.md). S and T are conjunctions of linear constraints over the
+// continuous variables; S empty means the whole domain.
+struct GuaranteeObjective {
+  enum class Kind { Safety, ReachAvoid } kind = Kind::Safety;
+  std::vector<LinearConstraint> safe;
+  std::vector<LinearConstraint> target;  // reach-avoid only
+  std::optional<std::uint64_t> steps;    // bounded; safety always has it
+  bool exactly_at_step = false;          // `at N`: in T at step N, in S at every step before
+  SourceRange range;
+};
+
 // The commands of a context, grouped by action: by_action[a] lists every command of action a.
 struct CommandTable {
   std::vector<std::vector<Command>> by_action;
@@ -100,7 +133,10 @@ struct ContextIR {
   SourceRange reward_structure_range;
   std::uint32_t command_table = 0;  // contexts that do not override transitions share table 0
   std::vector<Reward> rewards;
-  std::vector<std::optional<AffineDynamics>> dynamics;  // per action; continuous models only
+  // Per action, continuous models only: the affine form, absent where the action's map is not
+  // affine or reads an input, and the map itself, always present.
+  std::vector<std::optional<AffineDynamics>> dynamics;
+  std::vector<std::optional<MapDynamics>> maps;
 };
 
 // `import "robot.nm" { const N = 4; }`: the spec's model is a PRISM program, explored by the
@@ -139,6 +175,12 @@ struct ModelIR {
   // it gives them (`epsilon e;`, `max_cells n;`).
   std::optional<Rational> epsilon;
   std::optional<std::uint64_t> max_cells;
+  // Continuous models: the control inputs, the objective with guarantees, and the uniform grid
+  // the objective is solved on (cells per continuous variable, `grid x : 50, y : 50;`).
+  std::vector<InputVariable> inputs;
+  std::optional<GuaranteeObjective> guarantee;
+  std::vector<std::uint64_t> grid_cells;
+  SourceRange grid_range;
   // The catalog's `observation` block, checked (discrete models only).
   ObservationSpec observation;
   // Set when the spec imports its model; contexts then name reward structures, and the model's

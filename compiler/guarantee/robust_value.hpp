@@ -1,0 +1,69 @@
+#pragma once
+// The worst (or best) expected value of a cell's successor over every distribution an interval
+// MDP row allows (docs/guarantees.md, "Robust values"). The row is factored by axis, and the
+// successor's axes are independent: the expectation is taken axis by axis, the last axis
+// innermost, each axis's distribution chosen within its intervals once the earlier axes'
+// outcomes are known. That choice is freer than the true one (a single product distribution),
+// so the minimum is at most the true minimum and the maximum at least the true maximum: both
+// stay sound.
+//
+// On one axis the optimum over {lower <= p <= upper, sum p = 1} is the greedy one: every
+// outcome gets its lower bound, and the rest of the mass goes to the outcomes in order of value
+// (lowest first to minimise), each up to its upper bound. On the last axis the order comes
+// from ValueTable, which keeps every grid line sorted, so no row sorts its own entries there.
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "guarantee/interval_mdp.hpp"
+
+namespace oasis::guarantee {
+
+struct RobustGame {
+  bool maximise = false;       // the disturbance's side: false for lower bounds
+  double outside_value = 0;    // the value of leaving the grid's box
+  double truncated_value = 0;  // the value of a Gaussian's truncated tail
+};
+
+// Values per cell, and per line of the last axis (the cells that differ only in their last
+// coordinate, consecutive in the numbering) the line's intervals in increasing order of value.
+class ValueTable {
+ public:
+  ValueTable(const UniformGrid& grid, std::vector<double> values);
+
+  [[nodiscard]] const std::vector<double>& values() const { return values_; }
+  [[nodiscard]] double operator[](std::size_t cell) const { return values_[cell]; }
+  [[nodiscard]] std::size_t line_length() const { return line_length_; }
+  [[nodiscard]] std::size_t lines() const { return values_.size() / line_length_; }
+  // The order of the line whose first cell is `line * line_length()`.
+  [[nodiscard]] const std::uint32_t* order(std::size_t line) const {
+    return order_.data() + line * line_length_;
+  }
+
+  // Replaces the values of one line and sorts it again.
+  void set_line(std::size_t line, const double* values);
+  void set_all(std::vector<double> values);
+  std::vector<double> release() { return std::move(values_); }
+
+ private:
+  void sort_line(std::size_t line);
+
+  std::vector<double> values_;
+  std::vector<std::uint32_t> order_;
+  std::size_t line_length_;
+};
+
+// Scratch space reused across calls (no allocation per row).
+struct RobustScratch {
+  std::vector<std::vector<double>> values;  // per axis level
+  std::vector<std::uint32_t> order;
+};
+
+// The robust expectation of `table`'s values under `row` (the slices of one cell and action),
+// rounded outward: down when minimising, up when maximising, by a bound on the rounding of the
+// sums, then clamped to [0, 1].
+double robust_value(const IntervalMdp& mdp, const AxisSlice* row, const ValueTable& table,
+                    const RobustGame& game, RobustScratch& scratch);
+
+}  // namespace oasis::guarantee
