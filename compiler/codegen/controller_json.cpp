@@ -44,7 +44,7 @@ void write_actions(JsonWriter& out, const model::ModelIR& ir,
     out.key("values");
     out.begin_array();
     for (const Rational& value : input.values)
-      out.value(value.get_d());
+      out.value(to_double(value));
     out.end_array();
     out.end_object();
   }
@@ -58,7 +58,7 @@ void write_actions(JsonWriter& out, const model::ModelIR& ir,
     out.key("inputs");
     out.begin_array();
     for (const Rational& value : choice.inputs)
-      out.value(value.get_d());
+      out.value(to_double(value));
     out.end_array();
     out.end_object();
   }

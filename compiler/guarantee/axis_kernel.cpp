@@ -111,15 +111,15 @@ AxisNoise axis_noise(const model::DisturbanceModel& disturbance) {
       break;
     case model::DisturbanceModel::Kind::Bounded:
       noise.kind = AxisNoise::Kind::Uniform;
-      noise.low = disturbance.first.get_d();
-      noise.high = disturbance.second.get_d();
+      noise.low = to_double(disturbance.first);
+      noise.high = to_double(disturbance.second);
       // A zero-width interval is a point: no disturbance, shifted.
       if (noise.low == noise.high) noise.kind = AxisNoise::Kind::None;
       break;
     case model::DisturbanceModel::Kind::Gaussian:
       noise.kind = AxisNoise::Kind::Gaussian;
-      noise.mean = disturbance.first.get_d();
-      noise.deviation = disturbance.second.get_d();
+      noise.mean = to_double(disturbance.first);
+      noise.deviation = to_double(disturbance.second);
       break;
   }
   return noise;

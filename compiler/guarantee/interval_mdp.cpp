@@ -15,7 +15,7 @@ std::vector<double> axis_breaks(const model::ContinuousVariable& variable, std::
   const Rational width = (variable.high - variable.low) / Rational(static_cast<long>(cells));
   for (std::uint64_t k = 0; k <= cells; ++k) {
     const Rational point = variable.low + Rational(static_cast<long>(k)) * width;
-    breaks.push_back(point.get_d());
+    breaks.push_back(to_double(point));
     if (k > 0 && !(breaks[k] > breaks[k - 1])) {
       throw std::invalid_argument("the grid of " + variable.name +
                                   " has cells narrower than a double can tell apart");
