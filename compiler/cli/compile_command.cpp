@@ -129,13 +129,14 @@ bool compile_objective(const CompileOptions& options, const model::ModelIR& ir,
                        DiagnosticEngine& diagnostics, codegen::OutputSet& out, std::string& error) {
   pipeline::GuaranteeOptions build;
   build.jobs = options.jobs == 0 ? std::max(1u, std::thread::hardware_concurrency()) : options.jobs;
+  build.synthesis.jobs = build.jobs;
   if (effective_load_options(options.common).progress) {
     build.progress = [](const std::string& line) {
       std::fprintf(stderr, "oasisc: %s\n", line.c_str());
     };
     build.synthesis.progress = [](std::uint64_t sweep, double gap) {
       if (sweep % 100 == 0)
-        std::fprintf(stderr, "oasisc: sweep %llu, largest gap %.3g\n",
+        std::fprintf(stderr, "oasisc: sweep %llu, largest change %.3g\n",
                      static_cast<unsigned long long>(sweep), gap);
     };
   }

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
+#include <limits>
 #include <numeric>
 
 namespace oasis::guarantee {
@@ -143,6 +145,12 @@ ValueTable::ValueTable(const UniformGrid& grid, std::vector<double> values)
 }
 
 void ValueTable::set_line(std::size_t line, const double* values) {
+  const double* old = values_.data() + line * line_length_;
+  double moved = 0;
+  for (std::size_t i = 0; i < line_length_; ++i)
+    moved = std::max(moved, std::abs(values[i] - old[i]));
+  // Rounded up, so that the sum stays an upper bound on the movement.
+  drift_ = std::nextafter(drift_ + moved, std::numeric_limits<double>::infinity());
   std::copy(values, values + line_length_,
             values_.begin() + static_cast<std::ptrdiff_t>(line * line_length_));
   sort_line(line);

@@ -43,6 +43,9 @@ class ValueTable {
 
   // Replaces the values of one line and sorts it again.
   void set_line(std::size_t line, const double* values);
+  // The sum, over every set_line so far, of the largest change it made: no value has moved by
+  // more than drift() - d since drift() was d.
+  [[nodiscard]] double drift() const { return drift_; }
   void set_all(std::vector<double> values);
   std::vector<double> release() { return std::move(values_); }
 
@@ -52,6 +55,7 @@ class ValueTable {
   std::vector<double> values_;
   std::vector<std::uint32_t> order_;
   std::size_t line_length_;
+  double drift_ = 0;
 };
 
 // Scratch space reused across calls (no allocation per row).

@@ -15,13 +15,16 @@
 namespace oasis::guarantee {
 
 struct SynthesisOptions {
-  // Unbounded objectives stop when every cell's upper minus lower bound is at most this.
+  // Unbounded objectives: a gap (upper minus lower) at most this counts as closed.
   double gap = 1e-6;
-  // ... or when no value moves by more than this in a sweep (the bounds stay sound; the gap
-  // left is reported).
+  // Each bound's iteration stops when no value moves by more than this in a sweep (the bounds
+  // are sound at any stop; the gap left is reported).
   double stall = 1e-9;
+  // Unbounded objectives: 2 or more iterate the lower and the upper bound on two threads.
+  unsigned jobs = 1;
   std::uint64_t max_sweeps = 100'000;
-  // Called after each sweep with (sweep, the largest gap); may throw to stop.
+  // Called after each sweep with (sweep, the largest change of the lower bound, or the gap
+  // for bounded objectives); may throw to stop.
   std::function<void(std::uint64_t, double)> progress;
 };
 
