@@ -370,17 +370,58 @@ model::MapDynamics BehaviourLowering::identity_map(SourceRange range) const {
   return map;
 }
 
-std::optional<model::AffineDynamics> affine_dynamics(const model::MapDynamics& map) {
+namespace {
+
+// A rational inside `c`, and how far the interval reaches from it. Never 0 for an interval that
+// is not exactly 0: relevance (geom/relevance.hpp) reads the zero pattern of A, and a
+// coefficient that may be nonzero must count as reading its variable.
+std::pair<Rational, Rational> rounded(model::Interval c) {
+  if (c.lo == 0 && c.hi == 0) return {Rational(0), Rational(0)};
+  double middle = c.midpoint();
+  if (middle == 0) middle = c.hi != 0 ? c.hi : c.lo;
+  const Rational centre(middle);
+  const Rational reach = std::max(Rational(c.hi) - centre, centre - Rational(c.lo));
+  return {centre, reach};
+}
+
+// A component with irrational coefficients: rounded, with its error over the domain.
+void round_component(const model::IntervalAffineForm& form,
+                     const std::vector<model::ContinuousVariable>& variables,
+                     model::AffineDynamics& affine, Rational& error) {
+  std::vector<Rational> row;
+  for (std::size_t j = 0; j < form.coefficients.size(); ++j) {
+    auto [centre, reach] = rounded(form.coefficients[j]);
+    row.push_back(centre);
+    error += reach * std::max(abs(variables[j].low), abs(variables[j].high));
+  }
+  auto [offset, reach] = rounded(form.constant);
+  error += reach;
+  affine.matrix.push_back(std::move(row));
+  affine.offset.push_back(std::move(offset));
+}
+
+}  // namespace
+
+std::optional<model::AffineDynamics> affine_dynamics(
+    const model::MapDynamics& map, const std::vector<model::ContinuousVariable>& variables) {
   const std::size_t n = map.next.size();
   model::AffineDynamics affine;
   affine.range = map.range;
   affine.disturbance = map.disturbance;
-  for (const model::Expression& component : map.next) {
-    auto form = model::affine_form(component, n);
+  std::vector<Rational> approximation(n);
+  bool exact = true;
+  for (std::size_t i = 0; i < n; ++i) {
+    if (auto form = model::affine_form(map.next[i], n)) {
+      affine.matrix.push_back(std::move(form->coefficients));
+      affine.offset.push_back(std::move(form->constant));
+      continue;
+    }
+    auto form = model::interval_affine_form(map.next[i], n);
     if (!form) return std::nullopt;
-    affine.matrix.push_back(std::move(form->coefficients));
-    affine.offset.push_back(std::move(form->constant));
+    round_component(*form, variables, affine, approximation[i]);
+    exact = false;
   }
+  if (!exact) affine.approximation = std::move(approximation);
   return affine;
 }
 

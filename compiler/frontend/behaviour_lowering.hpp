@@ -20,8 +20,11 @@
 namespace oasis::frontend {
 
 // The affine form of a map (x' = A x + b), when every component is affine in the continuous
-// variables and reads no input; nullopt otherwise.
-std::optional<model::AffineDynamics> affine_dynamics(const model::MapDynamics& map);
+// variables and reads no input; nullopt otherwise. Coefficients that are irrational constants
+// (cos(0.1)) are rounded to rationals, with the error this makes over the domain `variables`
+// in AffineDynamics::approximation.
+std::optional<model::AffineDynamics> affine_dynamics(
+    const model::MapDynamics& map, const std::vector<model::ContinuousVariable>& variables);
 
 // Everything a model or context body says, lowered. `transitions` is per (state, action)
 // for explicit models and per action for factored ones.

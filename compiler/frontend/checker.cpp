@@ -366,7 +366,7 @@ class Checker {
       if (body.maps[a]) context.maps[a] = body.maps[a];
     }
     for (const auto& map : context.maps) {
-      context.dynamics.push_back(map ? affine_dynamics(*map) : std::nullopt);
+      context.dynamics.push_back(map ? affine_dynamics(*map, ir_.continuous) : std::nullopt);
     }
     return context;
   }

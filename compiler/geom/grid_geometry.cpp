@@ -65,8 +65,10 @@ void axis_dynamics(const model::AffineDynamics& affine, const Relevance& relevan
   out.matrix = std::move(projected.matrix);
   out.offset = std::move(projected.offset);
   out.disturbance.assign(d, Disturbance{});
+  out.approximation.assign(d, Rational(0));
   for (std::size_t i = 0; i < d; ++i) {
     const std::uint32_t vi = relevance.relevant[i];
+    if (!affine.approximation.empty()) out.approximation[i] = affine.approximation[vi];
     const model::DisturbanceModel& w = affine.disturbance[vi];
     using Kind = model::DisturbanceModel::Kind;
     Disturbance& axis = out.disturbance[i];
@@ -88,6 +90,12 @@ bool check_deterministic_axes(const GridGeometry& geometry, std::string& error) 
   for (std::size_t i = 0; i < geometry.dimension(); ++i) {
     for (const AxisDynamics& action : geometry.actions) {
       if (action.disturbance[i].present()) continue;
+      if (action.approximation[i] != 0) {
+        error = "variable " + quoted(geometry.axis_names[i]) +
+                " has no disturbance and irrational coefficients, whose pre-images the grid "
+                "cannot compute exactly";
+        return false;
+      }
       for (std::size_t j = 0; j < geometry.dimension(); ++j) {
         const bool own = j == i;
         if (own ? sgn(action.matrix[i][j]) == 0 : sgn(action.matrix[i][j]) != 0) {

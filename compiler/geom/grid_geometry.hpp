@@ -57,6 +57,9 @@ struct AxisDynamics {
   std::vector<std::vector<Rational>> matrix;
   std::vector<Rational> offset;
   std::vector<Disturbance> disturbance;  // per relevant axis
+  // Per relevant axis: a bound on |f_i(x) - (A x + b)_i| when the spec's coefficients are
+  // irrational and A, b round them (model::AffineDynamics::approximation); 0 when exact.
+  std::vector<Rational> approximation;
 };
 
 struct GridGeometry {

@@ -213,7 +213,8 @@ Rational cell_error(const AxisDynamics& action, std::span<const Rational> half_w
         const Rational term = action.matrix[i][j] * half_widths[j];
         shift += ((signs >> j) & 1U) != 0 ? -term : term;
       }
-      total += abs(shift) * shift_cost(w);
+      // The rounded coefficients' error moves the mean by at most approximation[i] more.
+      total += (abs(shift) + action.approximation[i]) * shift_cost(w);
     }
     worst = std::max(worst, total);
   }

@@ -44,6 +44,14 @@ bool affine_step(const model::ModelIR& ir, const model::AffineDynamics& affine,
                  const Relevance& relevance, const std::string& action, AffineStep& out,
                  std::string& error) {
   const std::size_t d = relevance.relevant.size();
+  for (const std::uint32_t v : relevance.relevant) {
+    if (!affine.approximation.empty() && affine.approximation[v] != 0) {
+      error = "action " + quoted(action) + " has irrational coefficients (" +
+              quoted(ir.continuous[v].name) +
+              "'s next value), which the polytope path cannot hold exactly; the grid path can";
+      return false;
+    }
+  }
   ProjectedStep projected = project_step(affine, relevance);
   out.matrix = std::move(projected.matrix);
   out.offset = std::move(projected.offset);

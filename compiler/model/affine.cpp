@@ -81,6 +81,133 @@ std::optional<AffineForm> affine_form(const Expression& expr, std::size_t num_va
   }
 }
 
+namespace {
+
+bool is_constant_form(const IntervalAffineForm& form) {
+  for (const Interval& c : form.coefficients) {
+    if (c.lo != 0 || c.hi != 0) return false;
+  }
+  return true;
+}
+
+IntervalAffineForm scaled(IntervalAffineForm form, Interval factor) {
+  for (Interval& c : form.coefficients)
+    c = c * factor;
+  form.constant = form.constant * factor;
+  return form;
+}
+
+// A function of a constant: its enclosure, or nullopt when the function refuses the range.
+std::optional<Interval> constant_function(Op op, const std::vector<Interval>& args) {
+  try {
+    switch (op) {
+      case Op::Sin:
+        return sin(args[0]);
+      case Op::Cos:
+        return cos(args[0]);
+      case Op::Tan:
+        return tan(args[0]);
+      case Op::Atan:
+        return atan(args[0]);
+      case Op::Exp:
+        return exp(args[0]);
+      case Op::Log:
+        return log(args[0]);
+      case Op::Sqrt:
+        return sqrt(args[0]);
+      case Op::Abs:
+        return abs(args[0]);
+      case Op::Min:
+      case Op::Max: {
+        Interval result = args[0];
+        for (std::size_t i = 1; i < args.size(); ++i)
+          result = op == Op::Min ? min(result, args[i]) : max(result, args[i]);
+        return result;
+      }
+      default:
+        return std::nullopt;
+    }
+  } catch (const IntervalError&) {
+    return std::nullopt;
+  }
+}
+
+}  // namespace
+
+std::optional<IntervalAffineForm> interval_affine_form(const Expression& expr,
+                                                       std::size_t num_variables) {
+  IntervalAffineForm form{std::vector<Interval>(num_variables, Interval{0, 0}), Interval{0, 0}};
+  const auto operand = [&](std::size_t i) {
+    return interval_affine_form(expr.operands[i], num_variables);
+  };
+  try {
+    switch (expr.op) {
+      case Op::Constant:
+        form.constant = from_rational(expr.constant);
+        return form;
+      case Op::ContinuousVariable:
+        form.coefficients[expr.slot] = Interval{1, 1};
+        return form;
+      case Op::Negate: {
+        auto inner = operand(0);
+        if (!inner) return std::nullopt;
+        return scaled(std::move(*inner), Interval{-1, -1});
+      }
+      case Op::Add:
+      case Op::Subtract: {
+        auto left = operand(0);
+        auto right = operand(1);
+        if (!left || !right) return std::nullopt;
+        for (std::size_t i = 0; i < num_variables; ++i) {
+          left->coefficients[i] = expr.op == Op::Add
+                                      ? left->coefficients[i] + right->coefficients[i]
+                                      : left->coefficients[i] - right->coefficients[i];
+        }
+        left->constant = expr.op == Op::Add ? left->constant + right->constant
+                                            : left->constant - right->constant;
+        return left;
+      }
+      case Op::Multiply: {
+        auto left = operand(0);
+        auto right = operand(1);
+        if (!left || !right) return std::nullopt;
+        if (is_constant_form(*left)) return scaled(std::move(*right), left->constant);
+        if (is_constant_form(*right)) return scaled(std::move(*left), right->constant);
+        return std::nullopt;
+      }
+      case Op::Divide: {
+        auto left = operand(0);
+        auto right = operand(1);
+        if (!left || !right || !is_constant_form(*right)) return std::nullopt;
+        return scaled(std::move(*left), Interval{1, 1} / right->constant);
+      }
+      case Op::Power: {
+        auto base = operand(0);
+        if (!base || !is_constant_form(*base)) return std::nullopt;
+        if (!expr.operands[1].is_constant() || expr.operands[1].constant.get_den() != 1)
+          return std::nullopt;
+        form.constant = power(base->constant, expr.operands[1].constant.get_num().get_si());
+        return form;
+      }
+      default: {
+        std::vector<Interval> args;
+        for (std::size_t i = 0; i < expr.operands.size(); ++i) {
+          auto argument = operand(i);
+          if (!argument || !is_constant_form(*argument)) return std::nullopt;
+          args.push_back(argument->constant);
+        }
+        if (args.empty()) return std::nullopt;
+        auto value = constant_function(expr.op, args);
+        if (!value) return std::nullopt;
+        form.constant = *value;
+        return form;
+      }
+    }
+  } catch (const IntervalError&) {
+    return std::nullopt;
+  }
+}
+
 std::optional<std::vector<LinearConstraint>> polyhedral_constraints(
     const Expression& expr, std::size_t num_variables, const std::vector<model::Region>& regions) {
   std::vector<LinearConstraint> constraints;

@@ -84,6 +84,11 @@ struct AffineDynamics {
   std::vector<Rational> offset;               // n
   std::vector<DisturbanceModel> disturbance;  // per variable
   SourceRange range;
+  // Empty when the map is exactly A x + b. When its coefficients are irrational constants
+  // (cos(0.1) * x), A and b are rational roundings of them and approximation[i] bounds
+  // |f_i(x) - (A x + b)_i| over the domain: the grid path adds it to its error bound
+  // (docs/geometry.md, "Irrational coefficients").
+  std::vector<Rational> approximation;
 };
 
 // x' = f(x, u) + w for one action, over the continuous variables: `next[i]` is f_i, an
