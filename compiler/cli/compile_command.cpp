@@ -14,6 +14,8 @@
 #include <sstream>
 #include <thread>
 
+#include <sys/resource.h>
+
 #include "cli/commands.hpp"
 #include "codegen/catalog_files.hpp"
 #include "codegen/controller_json.hpp"
@@ -130,6 +132,10 @@ bool compile_objective(const CompileOptions& options, const model::ModelIR& ir,
   pipeline::GuaranteeOptions build;
   build.jobs = options.jobs == 0 ? std::max(1u, std::thread::hardware_concurrency()) : options.jobs;
   build.synthesis.jobs = build.jobs;
+  // The rows take most of the memory: refuse them up front when they would not fit the data
+  // limit --memory-budget set (half of it: the sweeps need their own tables and the output).
+  if (rlimit limit{}; ::getrlimit(RLIMIT_DATA, &limit) == 0 && limit.rlim_cur != RLIM_INFINITY)
+    build.memory_budget = limit.rlim_cur / 2;
   if (effective_load_options(options.common).progress) {
     build.progress = [](const std::string& line) {
       std::fprintf(stderr, "oasisc: %s\n", line.c_str());
@@ -147,6 +153,9 @@ bool compile_objective(const CompileOptions& options, const model::ModelIR& ir,
     diagnostics.error(refusal.where, refusal.what());
     return false;
   } catch (const std::invalid_argument& refusal) {
+    diagnostics.error(ir.grid_range, refusal.what());
+    return false;
+  } catch (const std::length_error& refusal) {
     diagnostics.error(ir.grid_range, refusal.what());
     return false;
   }

@@ -103,10 +103,12 @@ void check_budget(const Chunk& sample, std::size_t sampled_cells, std::size_t ce
                           static_cast<double>(sampled_cells);
   const double estimate = per_cell * static_cast<double>(cells);
   if (estimate > static_cast<double>(budget)) {
-    throw std::length_error("the interval MDP would take about " +
-                            std::to_string(static_cast<std::uint64_t>(estimate / (1 << 20))) +
-                            " MiB, more than the memory budget of " + std::to_string(budget >> 20) +
-                            " MiB (raise it with --memory-budget, or use a coarser grid)");
+    throw std::length_error(
+        "the interval MDP would take about " +
+        std::to_string(static_cast<std::uint64_t>(estimate / (1 << 20))) + " MiB, more than the " +
+        std::to_string(budget >> 20) +
+        " MiB its rows may have (half the memory budget: raise it with --memory-budget, or use "
+        "a coarser grid)");
   }
 }
 

@@ -76,7 +76,7 @@ struct BuildOptions {
   // Called now and then with (rows done, rows in all); may throw to stop (an interrupt).
   std::function<void(std::size_t, std::size_t)> progress;
   // Refuses, before building, an abstraction whose rows would take more bytes than this
-  // (estimated from the first rows). 0: no limit.
+  // (estimated from a sample of cells spread over the grid). 0: no limit.
   std::uint64_t memory_budget = 0;
 };
 

@@ -26,6 +26,7 @@ GuaranteeResult compile_guarantee(const model::ModelIR& ir, const GuaranteeOptio
   auto start = std::chrono::steady_clock::now();
   guarantee::BuildOptions build;
   build.jobs = options.jobs;
+  build.memory_budget = options.memory_budget;
   guarantee::IntervalMdp mdp = guarantee::build_interval_mdp(ir, build);
   result.abstraction_seconds = seconds_since(start);
   result.entries = mdp.entries();

@@ -16,6 +16,9 @@ namespace oasis::pipeline {
 
 struct GuaranteeOptions {
   unsigned jobs = 1;
+  // Bytes the interval MDP may take (0: no limit): past it the compile stops before building
+  // the rows (std::length_error), from an estimate on a sample of cells.
+  std::uint64_t memory_budget = 0;
   guarantee::SynthesisOptions synthesis;
   // Stage lines ("abstraction: 2500 cells x 10 actions (0.41 s)"), when wanted.
   std::function<void(const std::string&)> progress;

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <functional>
 #include <random>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -311,6 +312,15 @@ TEST(Synthesis, NonlinearMapsGiveOrderedBoundsAndTargetsAreCertain) {
     }
   }
   EXPECT_EQ(targets, 1u);  // [-1, 0] x [-2, -1] is exactly one cell of the 1-wide grid
+}
+
+TEST(IntervalMdp, ABudgetTooSmallForTheRowsIsRefusedBeforeBuilding) {
+  const model::ModelIR ir = test::check_spec_text_ir(small_spec("objective reach goal steps 3;"));
+  BuildOptions options;
+  options.memory_budget = 1024;  // bytes: a handful of rows
+  EXPECT_THROW(build_interval_mdp(ir, options), std::length_error);
+  options.memory_budget = 1 << 30;
+  EXPECT_NO_THROW(build_interval_mdp(ir, options));
 }
 
 }  // namespace
