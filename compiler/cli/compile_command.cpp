@@ -111,11 +111,11 @@ void print_objective_summary(const model::ModelIR& ir, const pipeline::Guarantee
   std::fprintf(stream, "objective: %zu cells x %zu actions, %llu interval entries (%.2f s)\n",
                cells, result.actions.size(), static_cast<unsigned long long>(result.entries),
                result.abstraction_seconds);
+  const std::string sweeps = std::to_string(s.sweeps + s.evaluation_sweeps);
   std::fprintf(stream,
-               "  bounds: lower mean %.6f, upper mean %.6f, largest gap %.3g; %s after %llu "
+               "  bounds: lower mean %.6f, upper mean %.6f, largest gap %.3g; %s after %s "
                "sweeps (%.2f s)\n",
-               lower_mean, upper_mean, s.largest_gap, s.stop_reason.c_str(),
-               static_cast<unsigned long long>(s.sweeps + s.evaluation_sweeps),
+               lower_mean, upper_mean, s.largest_gap, s.stop_reason.c_str(), sweeps.c_str(),
                result.synthesis_seconds);
   // The cell at the domain's centre: where benchmark tables usually quote "the" value.
   std::size_t centre = 0;
