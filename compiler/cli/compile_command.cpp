@@ -184,7 +184,22 @@ int run_compile(CompileOptions options) {
                  "(docs/guarantees.md): --format json, or no --format");
     return 1;
   }
-  if (objective) options.formats = {"json"};
+  if (objective) {
+    // The catalog's options mean nothing on an objective's grid: say so rather than ignore them.
+    const char* catalog_option = options.no_attention            ? "--no-attention"
+                                 : options.target.epsilon        ? "--epsilon"
+                                 : options.target.max_cells      ? "--max-cells"
+                                 : options.with_transitions      ? "--with-transitions"
+                                 : options.p_correct.has_value() ? "--robust"
+                                                                 : nullptr;
+    if (catalog_option != nullptr) {
+      report_error(options.spec, std::string(catalog_option) +
+                                     " is for catalogs; a model with an objective is solved on "
+                                     "its spec's 'grid' (docs/guarantees.md)");
+      return 1;
+    }
+    options.formats = {"json"};
+  }
   if (options.formats.empty()) {
     options.formats = continuous ? std::vector<std::string>{"bin", "json", "svg"}
                                  : std::vector<std::string>{"bin", "json", "dot"};

@@ -114,6 +114,51 @@ nlohmann::json observation_json(const model::ObservationSpec& observation,
   return out;
 }
 
+// A model with an objective (docs/guarantees.md): its inputs, finite actions, objective and grid.
+nlohmann::json objective_json(const model::ModelIR& ir) {
+  const model::GuaranteeObjective& objective = *ir.guarantee;
+  nlohmann::json inputs = nlohmann::json::array();
+  std::size_t combinations = 1;
+  for (const model::InputVariable& input : ir.inputs) {
+    inputs.push_back({{"name", input.name}, {"values", input.values.size()}});
+    combinations *= input.values.size();
+  }
+  std::size_t with_dynamics = 0;
+  for (const auto& map : ir.contexts.front().maps)
+    with_dynamics += map ? 1 : 0;
+  std::uint64_t cells = 1;
+  for (const std::uint64_t n : ir.grid_cells)
+    cells *= n;
+  const bool safety = objective.kind == model::GuaranteeObjective::Kind::Safety;
+  return {{"kind", safety ? "safety" : "reach-avoid"},
+          {"steps", objective.steps ? nlohmann::json(*objective.steps) : nlohmann::json()},
+          {"exactly_at_step", objective.exactly_at_step},
+          {"inputs", inputs},
+          {"finite_actions", with_dynamics * combinations},
+          {"grid", ir.grid_cells},
+          {"cells", cells}};
+}
+
+void print_objective(const nlohmann::json& objective) {
+  const bool bounded = !objective["steps"].is_null();
+  const bool at_step = objective["exactly_at_step"].get<bool>();
+  std::cout << "  objective: " << objective["kind"].get<std::string>();
+  if (bounded) {
+    std::cout << (at_step ? ", exactly at step " : ", ") << objective["steps"]
+              << (at_step ? "" : " steps");
+  } else {
+    std::cout << ", unbounded";
+  }
+  std::cout << "\n  inputs:";
+  for (const auto& input : objective["inputs"])
+    std::cout << ' ' << input["name"].get<std::string>() << " (" << input["values"] << " values)";
+  if (objective["inputs"].empty()) std::cout << " none";
+  std::cout << "; finite actions: " << objective["finite_actions"] << "\n  grid:";
+  for (std::size_t i = 0; i < objective["grid"].size(); ++i)
+    std::cout << (i == 0 ? " " : " x ") << objective["grid"][i];
+  std::cout << " (" << objective["cells"] << " cells)\n";
+}
+
 // `stats`: context_statistics() of the explicit model, empty for continuous models; computed
 // once by the caller (it walks every choice of every context).
 nlohmann::json to_json(const LoadedModel& loaded,
@@ -135,6 +180,7 @@ nlohmann::json to_json(const LoadedModel& loaded,
     }
     out["continuous_variables"] = variables;
     out["regions"] = loaded.ir->regions.size();
+    if (loaded.ir->guarantee) out["objective"] = objective_json(*loaded.ir);
   }
   nlohmann::json contexts = nlohmann::json::array();
   for (std::size_t c = 0; c < names.size(); ++c) {
@@ -150,7 +196,7 @@ nlohmann::json to_json(const LoadedModel& loaded,
     } else {  // continuous: no finite state space until the geometry layer partitions it
       context["states"] = nullptr;
       context["transitions"] = nullptr;
-      add_relevance(*loaded.ir, c, context);
+      if (!loaded.ir->guarantee) add_relevance(*loaded.ir, c, context);
     }
     contexts.push_back(context);
   }
@@ -242,6 +288,11 @@ void print_text(const LoadedModel& loaded, const std::vector<model::ContextStati
                       ? "state noise " + observation["noise"].get<std::string>()
                       : std::string("state confusion matrix"))
               << ", reward follows " << observation["reward_follows"].get<std::string>() << '\n';
+  }
+  if (summary.contains("objective")) {
+    // No catalog, hence no contexts to attend with: the objective is solved on the whole grid.
+    print_objective(summary["objective"]);
+    return;
   }
   const std::vector<std::string> names = context_names(loaded);
   std::cout << "  " << std::left << std::setw(24) << "context" << std::setw(12) << "states"
