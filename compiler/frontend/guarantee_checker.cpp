@@ -17,6 +17,9 @@ using model::Type;
 // enough that the product of a few inputs stays a sane number of actions.
 constexpr std::int64_t kMaxInputValues = 10'000;
 constexpr std::int64_t kMaxCellsPerAxis = 1'000'000;
+// Every combination of the inputs' values is an action of every cell: beyond this, no grid
+// would fit in memory, and the domain check (one enclosure per combination) would not end.
+constexpr std::uint64_t kMaxInputCombinations = 100'000;
 constexpr std::int64_t kMaxSteps = 1'000'000;
 
 std::optional<std::vector<Rational>> input_range(const ast::InputDecl& input,
@@ -216,6 +219,7 @@ void check_enclosable(const model::ModelIR& ir, DiagnosticEngine& diagnostics) {
 
 void declare_inputs(const ast::MdpDecl& mdp, model::ModelIR& ir, Scope& scope,
                     ExpressionChecker& expressions, DiagnosticEngine& diagnostics) {
+  std::uint64_t combinations = 1;
   for (const ast::InputDecl& input : mdp.inputs) {
     if (ir.kind != model::ModelKind::Continuous) {
       diagnostics.error(input.range, "inputs belong to models with continuous variables");
@@ -224,6 +228,13 @@ void declare_inputs(const ast::MdpDecl& mdp, model::ModelIR& ir, Scope& scope,
     auto values = input.step ? input_range(input, expressions, diagnostics)
                              : input_list(input, expressions, diagnostics);
     if (!values) continue;
+    combinations *= values->size();
+    if (combinations > kMaxInputCombinations) {
+      diagnostics.error(input.range, "the inputs combine into more than " +
+                                         std::to_string(kMaxInputCombinations) +
+                                         " values per action: use larger steps");
+      return;
+    }
     const auto index = static_cast<std::uint32_t>(ir.inputs.size());
     Symbol symbol{SymbolKind::Input, index, Type::Real, 0, input.name.range};
     if (scope.declare(input.name.text, input.name.range, std::move(symbol), "name", diagnostics)) {
