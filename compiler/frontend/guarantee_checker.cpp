@@ -17,6 +17,7 @@ using model::Type;
 // enough that the product of a few inputs stays a sane number of actions.
 constexpr std::int64_t kMaxInputValues = 10'000;
 constexpr std::int64_t kMaxCellsPerAxis = 1'000'000;
+constexpr std::uint64_t kMaxGridCells = 10'000'000'000;
 // Every combination of the inputs' values is an action of every cell: beyond this, no grid
 // would fit in memory, and the domain check (one enclosure per combination) would not end.
 constexpr std::uint64_t kMaxInputCombinations = 100'000;
@@ -146,6 +147,15 @@ void check_grid(const ast::GridDecl& grid, model::ModelIR& ir, const Scope& scop
     if (cells[i] == 0) {
       diagnostics.error(grid.range, "the grid gives no cells for " + quoted(ir.continuous[i].name) +
                                         " (list every continuous variable)");
+      return;
+    }
+  }
+  // The product must stay a count memory could ever hold (and must not overflow 64 bits).
+  std::uint64_t total = 1;
+  for (const std::int64_t n : cells) {
+    total *= static_cast<std::uint64_t>(n);
+    if (total > kMaxGridCells) {
+      diagnostics.error(grid.range, "the grid has more than 10^10 cells");
       return;
     }
   }
