@@ -157,6 +157,10 @@ void ValueTable::set_line(std::size_t line, const double* values) {
 }
 
 void ValueTable::set_all(std::vector<double> values) {
+  double moved = 0;
+  for (std::size_t c = 0; c < values_.size(); ++c)
+    moved = std::max(moved, std::abs(values[c] - values_[c]));
+  drift_ = std::nextafter(drift_ + moved, std::numeric_limits<double>::infinity());
   values_ = std::move(values);
   for (std::size_t line = 0; line < lines(); ++line)
     sort_line(line);

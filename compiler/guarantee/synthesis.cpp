@@ -81,6 +81,7 @@ class Sweeper {
   // values it reads (it is 1-Lipschitz in the largest change), so an action whose value, when
   // last computed, was below the best by more than everything has moved since, still is.
   // ValueTable::drift() bounds that movement. This skips most actions once the values settle.
+  // The cache belongs to one table: a Sweeper's update() always reads the same ValueTable.
   double update(std::size_t cell, const ValueTable& values, Bound bound, std::uint32_t& action,
                 double switch_gain) {
     const double constant = fixed(cell, bound);
