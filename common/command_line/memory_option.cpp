@@ -56,6 +56,14 @@ void add_memory_budget_option(CLI::App& app, std::string& budget) {
   app.add_option(kMemoryBudgetFlag, budget, help)->capture_default_str();
 }
 
+namespace {
+std::uint64_t settled_budget = 0;  // command_memory_budget(): set once, before the command runs
+}  // namespace
+
+std::uint64_t command_memory_budget() {
+  return settled_budget;
+}
+
 std::optional<std::uint64_t> apply_memory_budget_option(const CLI::App& app,
                                                         const std::string& text,
                                                         std::string_view program) {
@@ -68,10 +76,12 @@ std::optional<std::uint64_t> apply_memory_budget_option(const CLI::App& app,
     if (given)
       std::cerr << program << ": warning: " << kMemoryBudgetFlag
                 << " is not enforced in this sanitizer build\n";
+    settled_budget = *bytes;
     return 0;
   }
   const auto in_force = bytes ? apply_memory_budget(*bytes, error) : std::nullopt;
   if (!in_force) std::cerr << program << ": error: " << kMemoryBudgetFlag << ": " << error << '\n';
+  if (in_force) settled_budget = *in_force;
   return in_force;
 }
 

@@ -25,6 +25,12 @@ std::optional<std::uint64_t> apply_memory_budget_option(const CLI::App& app,
                                                         const std::string& text,
                                                         std::string_view program);
 
+// The budget the command runs under, as apply_memory_budget_option() settled it: the bytes in
+// force, or, in a sanitizer build that enforces no limit, the bytes asked for, so that what a
+// command refuses by its own estimate (oasisc compile's interval MDP) still follows the option.
+// 0: none (also before the option is applied).
+std::uint64_t command_memory_budget();
+
 // The message for a std::bad_alloc that reached main: "PROGRAM: error: out of memory: ...".
 void report_out_of_memory(std::string_view program, std::uint64_t budget);
 

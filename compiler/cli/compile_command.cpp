@@ -14,11 +14,10 @@
 #include <sstream>
 #include <thread>
 
-#include <sys/resource.h>
-
 #include "cli/commands.hpp"
 #include "codegen/catalog_files.hpp"
 #include "codegen/controller_json.hpp"
+#include "command_line/memory_option.hpp"
 #include "command_line/number_options.hpp"
 #include "command_line/output_names.hpp"
 #include "model/catalog_data.hpp"
@@ -132,10 +131,9 @@ bool compile_objective(const CompileOptions& options, const model::ModelIR& ir,
   pipeline::GuaranteeOptions build;
   build.jobs = options.jobs == 0 ? std::max(1u, std::thread::hardware_concurrency()) : options.jobs;
   build.synthesis.jobs = build.jobs;
-  // The rows take most of the memory: refuse them up front when they would not fit the data
-  // limit --memory-budget set (half of it: the sweeps need their own tables and the output).
-  if (rlimit limit{}; ::getrlimit(RLIMIT_DATA, &limit) == 0 && limit.rlim_cur != RLIM_INFINITY)
-    build.memory_budget = limit.rlim_cur / 2;
+  // The rows take most of the memory: refuse them up front when they would not fit the budget
+  // (half of it: the sweeps need their own tables, and the output its buffers).
+  build.memory_budget = command_memory_budget() / 2;
   if (effective_load_options(options.common).progress) {
     build.progress = [](const std::string& line) {
       std::fprintf(stderr, "oasisc: %s\n", line.c_str());
