@@ -101,12 +101,6 @@ void print_objective_summary(const model::ModelIR& ir, const pipeline::Guarantee
                              std::FILE* stream) {
   const guarantee::Synthesis& s = result.synthesis;
   const std::size_t cells = result.grid.cells;
-  double lower_mean = 0;
-  double upper_mean = 0;
-  for (std::size_t c = 0; c < cells; ++c) {
-    lower_mean += s.lower[c] / static_cast<double>(cells);
-    upper_mean += s.upper[c] / static_cast<double>(cells);
-  }
   std::fprintf(stream, "objective: %zu cells x %zu actions, %llu interval entries (%.2f s)\n",
                cells, result.actions.size(), static_cast<unsigned long long>(result.entries),
                result.abstraction_seconds);
@@ -114,8 +108,13 @@ void print_objective_summary(const model::ModelIR& ir, const pipeline::Guarantee
   std::fprintf(stream,
                "  bounds: lower mean %.6f, upper mean %.6f, largest gap %.3g; %s after %s "
                "sweeps (%.2f s)\n",
-               lower_mean, upper_mean, s.largest_gap, s.stop_reason.c_str(), sweeps.c_str(),
+               s.lower_mean(), s.upper_mean(), s.largest_gap, s.stop_reason.c_str(), sweeps.c_str(),
                result.synthesis_seconds);
+  if (!s.lower_method.empty()) {
+    std::fprintf(stream, "  lower bound: %s; upper bound: %s (%llu sweeps)\n",
+                 s.lower_method.c_str(), s.upper_method.c_str(),
+                 static_cast<unsigned long long>(s.upper_sweeps));
+  }
   // The cell at the domain's centre: where benchmark tables usually quote "the" value.
   std::size_t centre = 0;
   for (std::size_t i = 0; i < result.grid.dimension(); ++i)

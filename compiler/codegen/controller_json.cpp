@@ -1,7 +1,6 @@
 #include "codegen/controller_json.hpp"
 
 #include <algorithm>
-#include <numeric>
 
 namespace oasis::codegen {
 namespace {
@@ -83,10 +82,6 @@ void write_objective(JsonWriter& out, const model::GuaranteeObjective& objective
 
 void write_summary(JsonWriter& out, const pipeline::GuaranteeResult& result) {
   const guarantee::Synthesis& s = result.synthesis;
-  const auto mean = [](const std::vector<double>& v) {
-    return v.empty() ? 0.0
-                     : std::accumulate(v.begin(), v.end(), 0.0) / static_cast<double>(v.size());
-  };
   out.key("summary");
   out.begin_object();
   out.key("cells");
@@ -101,12 +96,20 @@ void write_summary(JsonWriter& out, const pipeline::GuaranteeResult& result) {
   out.value(s.evaluation_sweeps);
   out.key("stop_reason");
   out.value(s.stop_reason);
+  if (!s.lower_method.empty()) {  // unbounded objectives
+    out.key("lower_method");
+    out.value(s.lower_method);
+    out.key("upper_method");
+    out.value(s.upper_method);
+    out.key("upper_sweeps");
+    out.value(s.upper_sweeps);
+  }
   out.key("largest_gap");
   out.value(s.largest_gap);
   out.key("lower_mean");
-  out.value(mean(s.lower));
+  out.value(s.lower_mean());
   out.key("upper_mean");
-  out.value(mean(s.upper));
+  out.value(s.upper_mean());
   out.key("lower_max");
   out.value(s.lower.empty() ? 0.0 : *std::max_element(s.lower.begin(), s.lower.end()));
   out.end_object();

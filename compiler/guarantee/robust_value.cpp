@@ -146,24 +146,28 @@ ValueTable::ValueTable(const UniformGrid& grid, std::vector<double> values)
 
 void ValueTable::set_line(std::size_t line, const double* values) {
   const double* old = values_.data() + line * line_length_;
-  double moved = 0;
   for (std::size_t i = 0; i < line_length_; ++i)
-    moved = std::max(moved, std::abs(values[i] - old[i]));
-  // Rounded up, so that the sum stays an upper bound on the movement.
-  drift_ = std::nextafter(drift_ + moved, std::numeric_limits<double>::infinity());
+    sweep_drift_ = std::max(sweep_drift_, std::abs(values[i] - old[i]));
   std::copy(values, values + line_length_,
             values_.begin() + static_cast<std::ptrdiff_t>(line * line_length_));
   sort_line(line);
 }
 
+void ValueTable::begin_sweep() {
+  // Rounded up, so that the sum stays an upper bound on the movement.
+  committed_drift_ =
+      std::nextafter(committed_drift_ + sweep_drift_, std::numeric_limits<double>::infinity());
+  sweep_drift_ = 0;
+}
+
 void ValueTable::set_all(std::vector<double> values) {
-  double moved = 0;
+  begin_sweep();
   for (std::size_t c = 0; c < values_.size(); ++c)
-    moved = std::max(moved, std::abs(values[c] - values_[c]));
-  drift_ = std::nextafter(drift_ + moved, std::numeric_limits<double>::infinity());
+    sweep_drift_ = std::max(sweep_drift_, std::abs(values[c] - values_[c]));
   values_ = std::move(values);
   for (std::size_t line = 0; line < lines(); ++line)
     sort_line(line);
+  begin_sweep();
 }
 
 void ValueTable::sort_line(std::size_t line) {

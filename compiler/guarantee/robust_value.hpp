@@ -41,11 +41,18 @@ class ValueTable {
     return order_.data() + line * line_length_;
   }
 
-  // Replaces the values of one line and sorts it again.
+  // Replaces the values of one line and sorts it again. Between two begin_sweep() calls each
+  // line is set at most once.
   void set_line(std::size_t line, const double* values);
-  // The sum, over every set_line so far, of the largest change it made: no value has moved by
-  // more than drift() - d since drift() was d.
-  [[nodiscard]] double drift() const { return drift_; }
+  // Starts a sweep: every line may be set once more.
+  void begin_sweep();
+  // A bound on how far values have moved: no value has moved by more than drift() - b since
+  // drift_base() was b. It is the sum, over the sweeps since, of each sweep's largest change
+  // (a value changes at most once per sweep), so it grows with the largest change per sweep,
+  // not with the number of lines.
+  [[nodiscard]] double drift() const { return committed_drift_ + sweep_drift_; }
+  [[nodiscard]] double drift_base() const { return committed_drift_; }
+  // Replaces every value (a sweep of its own).
   void set_all(std::vector<double> values);
   std::vector<double> release() { return std::move(values_); }
 
@@ -55,7 +62,8 @@ class ValueTable {
   std::vector<double> values_;
   std::vector<std::uint32_t> order_;
   std::size_t line_length_;
-  double drift_ = 0;
+  double committed_drift_ = 0;  // the sweeps before this one
+  double sweep_drift_ = 0;      // the largest change in this sweep so far
 };
 
 // Scratch space reused across calls (no allocation per row).

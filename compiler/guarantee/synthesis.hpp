@@ -20,13 +20,20 @@ struct SynthesisOptions {
   // Each bound's iteration stops when no value moves by more than this in a sweep (the bounds
   // are sound at any stop; the gap left is reported).
   double stall = 1e-9;
+  // Unbounded objectives: each bound's iteration also stops once a certified bound is within
+  // this of the iteration's limit, as estimated from its rate (docs/guarantees.md).
+  double precision = 1e-6;
   // Unbounded objectives: 2 or more iterate the lower and the upper bound on two threads.
   unsigned jobs = 1;
   std::uint64_t max_sweeps = 100'000;
   // Called after each sweep with (sweep, the largest change of the lower bound, or the gap
   // for bounded objectives); may throw to stop.
-  std::function<void(std::uint64_t, double)> progress;
+  using Progress = std::function<void(std::uint64_t, double)>;
+  Progress progress;
 };
+
+// The mean of per-cell values (0 for none).
+double mean(const std::vector<double>& values);
 
 struct Synthesis {
   std::vector<double> lower;  // per cell, at step 0
@@ -34,12 +41,23 @@ struct Synthesis {
   // Bounded objectives: controller[k][cell] is the action at step k (k = 0 .. N-1).
   // Unbounded: one table, used at every step.
   std::vector<std::vector<std::uint32_t>> controller;
-  std::uint64_t sweeps = 0;             // of the optimal lower bound (and upper bound)
-  std::uint64_t evaluation_sweeps = 0;  // of the controller's own lower bound (unbounded)
+  std::uint64_t sweeps = 0;             // of the lower bound (bounded: of both)
+  std::uint64_t evaluation_sweeps = 0;  // unbounded: of the controller's own value, if needed
+  std::uint64_t upper_sweeps = 0;       // unbounded: of the upper bound, verifications aside
+  // Unbounded: how each bound was obtained (docs/guarantees.md, "Unbounded objectives").
+  std::string lower_method;
+  std::string upper_method;
   double largest_gap = 0;
+
+  [[nodiscard]] double lower_mean() const { return mean(lower); }
+  [[nodiscard]] double upper_mean() const { return mean(upper); }
   bool gap_closed = true;  // unbounded: the gap reached SynthesisOptions::gap
   std::string stop_reason;
 };
+
+// The largest upper minus lower bound over the cells. Throws std::logic_error if a lower bound
+// is above its upper bound: both are proven, so that would be a bug.
+double largest_gap(const std::vector<double>& lower, const std::vector<double>& upper);
 
 Synthesis synthesise(const IntervalMdp& mdp, const model::GuaranteeObjective& objective,
                      const ObjectiveCells& cells, const SynthesisOptions& options);

@@ -14,6 +14,7 @@
 #include <gtest/gtest.h>
 
 #include "../../support/spec_models.hpp"
+#include "guarantee/end_components.hpp"
 #include "guarantee/interval_mdp.hpp"
 #include "guarantee/objective_cells.hpp"
 #include "guarantee/robust_value.hpp"
@@ -280,6 +281,106 @@ TEST(Synthesis, UnboundedBoundsEncloseTheBruteForceFixedPoints) {
     EXPECT_GE(s.lower[c], below.lower[c] - 1e-6) << "cell " << c;
     // The 300-step upper value is a lower estimate of the unbounded one: the bound is above.
     EXPECT_GE(s.upper[c], below.upper[c] - 1e-9) << "cell " << c;
+  }
+}
+
+// The value of a fixed controller on the interval MDP, from below: `steps` steps of the
+// brute-force robust minimum under it, from the terminal indicator.
+std::vector<double> brute_controller_value(const Abstraction& a,
+                                           const std::vector<std::uint32_t>& policy,
+                                           std::uint64_t steps) {
+  const std::size_t cells = a.mdp.grid.cells;
+  std::vector<double> v(cells);
+  for (std::size_t c = 0; c < cells; ++c)
+    v[c] = a.cells.target_lower[c] != 0 ? 1 : 0;
+  for (std::uint64_t k = 0; k < steps; ++k) {
+    std::vector<double> next(cells);
+    for (std::size_t c = 0; c < cells; ++c) {
+      if (a.cells.target_lower[c] != 0) {
+        next[c] = 1;
+      } else if (a.cells.safe_lower[c] == 0) {
+        next[c] = 0;
+      } else {
+        next[c] = brute_robust(a.mdp, a.mdp.row(c, policy[c]), v, RobustGame{false, 0, 0});
+      }
+    }
+    v = next;
+  }
+  return v;
+}
+
+TEST(Synthesis, TheUnboundedLowerBoundIsWhatTheControllerAttains) {
+  const Abstraction a = abstraction("objective reach goal while keep;");
+  const Synthesis s = synthesise(a.mdp, *a.ir.guarantee, a.cells, SynthesisOptions{});
+  // The certificate, not an evaluation, gave the bound: that is the path checked here.
+  EXPECT_EQ(s.lower_method, "certified: the controller has no trap");
+  EXPECT_EQ(s.evaluation_sweeps, 0u);
+  // 600 steps leave nothing measurable of this small model's unbounded value.
+  const std::vector<double> attained = brute_controller_value(a, s.controller[0], 600);
+  for (std::size_t c = 0; c < a.mdp.grid.cells; ++c) {
+    EXPECT_LE(s.lower[c], attained[c] + 1e-12) << "cell " << c;
+    EXPECT_GE(s.lower[c], attained[c] - 1e-6) << "cell " << c;
+  }
+}
+
+TEST(Synthesis, TheUnboundedUpperBoundIsVerifiedAndTight) {
+  const Abstraction a = abstraction("objective reach goal while keep;");
+  const Synthesis s = synthesise(a.mdp, *a.ir.guarantee, a.cells, SynthesisOptions{});
+  EXPECT_EQ(s.upper_method, "a guess from below, verified");
+  // The upper game's least fixed point, from below, long enough to have converged.
+  const BruteBounds below = brute_bounds(a, 600, true, false);
+  for (std::size_t c = 0; c < a.mdp.grid.cells; ++c) {
+    EXPECT_GE(s.upper[c], below.upper[c] - 1e-12) << "cell " << c;
+    EXPECT_LE(s.upper[c], below.upper[c] + 2e-6) << "cell " << c;
+  }
+}
+
+// A map that moves half a cell to the right, without noise: each row may stay in its cell,
+// so the disturbance can hold the state short of the goal forever.
+std::string stalling_spec() {
+  return "mdp t {\n"
+         "  continuous x : [0 .. 4];\n"
+         "  continuous y : [0 .. 2];\n"
+         "  actions go;\n"
+         "  dynamics [go] { x' = x + 0.5; y' = y; }\n"
+         "  region goal = x >= 3;\n"
+         "  objective reach goal;\n"
+         "  grid x : 4, y : 2;\n"
+         "}\n";
+}
+
+TEST(EndComponents, AStallingMapIsATrapAndANoisyOneIsNot) {
+  Abstraction stalling;
+  stalling.ir = test::check_spec_text_ir(stalling_spec());
+  stalling.mdp = build_interval_mdp(stalling.ir, BuildOptions{});
+  std::vector<std::uint8_t> undecided(stalling.mdp.grid.cells);
+  for (std::size_t c = 0; c < undecided.size(); ++c)
+    undecided[c] = c / 2 < 3 ? 1 : 0;  // x cells 0, 1, 2 (y varies fastest); 3 is the goal
+  const std::vector<std::uint32_t> go(undecided.size(), 0);
+  EXPECT_EQ(greatest_trap(stalling.mdp, undecided, go), undecided);
+
+  // The test model's Gaussian axis puts mass outside the box from every cell: no trap.
+  const Abstraction noisy = abstraction("objective reach goal while keep;");
+  const std::vector<std::uint8_t> all(noisy.mdp.grid.cells, 1);
+  for (const std::uint32_t action : {0u, 1u}) {
+    const std::vector<std::uint32_t> policy(all.size(), action);
+    const std::vector<std::uint8_t> trap = greatest_trap(noisy.mdp, all, policy);
+    EXPECT_TRUE(std::none_of(trap.begin(), trap.end(), [](std::uint8_t t) { return t != 0; }));
+  }
+}
+
+TEST(Synthesis, AControllerWithATrapIsEvaluatedFromZero) {
+  Abstraction a;
+  a.ir = test::check_spec_text_ir(stalling_spec());
+  a.mdp = build_interval_mdp(a.ir, BuildOptions{});
+  a.cells = objective_cells(*a.ir.guarantee, a.ir, a.mdp.grid);
+  const Synthesis s = synthesise(a.mdp, *a.ir.guarantee, a.cells, SynthesisOptions{});
+  EXPECT_EQ(s.lower_method, "the controller evaluated from 0 (it has a trap)");
+  for (std::size_t c = 0; c < a.mdp.grid.cells; ++c) {
+    const bool goal = c / 2 == 3;
+    // The disturbance can stall every run short of the goal; a kind one walks it there.
+    EXPECT_EQ(s.lower[c], goal ? 1 : 0) << "cell " << c;
+    EXPECT_EQ(s.upper[c], 1) << "cell " << c;
   }
 }
 

@@ -1,0 +1,393 @@
+#include "guarantee/unbounded_synthesis.hpp"
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "guarantee/end_components.hpp"
+#include "guarantee/robust_value.hpp"
+
+namespace oasis::guarantee {
+namespace {
+
+// A better lower-bound action must gain more than this before the controller switches to it:
+// rounding noise must not make it move between actions of equal value (docs/guarantees.md).
+constexpr double kSwitchGain = 1e-12;
+
+// A certificate is tried every this many sweeps, once the iteration's rate is known.
+constexpr std::uint64_t kCertifyEvery = 10;
+
+// A guess of the upper bound may be replaced by its images under the operator this many times
+// before it is given up.
+constexpr int kSmoothings = 3;
+
+// The rate is the geometric mean of the ratios of the last this many largest changes.
+constexpr std::size_t kRateWindow = 10;
+
+// Sweeps line by line (block Gauss-Seidel: a line's new values are computed from the values
+// before it, then stored) until `after_sweep(sweep, moved)` returns true or `budget` sweeps are
+// done. `update(cell, table)` is the new value of a cell. Returns the sweeps done.
+template <typename Update, typename AfterSweep>
+std::uint64_t iterate(ValueTable& table, std::uint64_t budget, const Update& update,
+                      const AfterSweep& after_sweep) {
+  const std::size_t length = table.line_length();
+  std::vector<double> line_values(length);
+  for (std::uint64_t sweep = 1; sweep <= budget; ++sweep) {
+    table.begin_sweep();
+    double moved = 0;
+    for (std::size_t line = 0; line < table.lines(); ++line) {
+      for (std::size_t i = 0; i < length; ++i) {
+        const std::size_t c = line * length + i;
+        line_values[i] = update(c, table);
+        moved = std::max(moved, std::abs(line_values[i] - table[c]));
+      }
+      table.set_line(line, line_values.data());
+    }
+    if (after_sweep(sweep, moved)) return sweep;
+  }
+  return budget;
+}
+
+// An iteration from below that converges geometrically, as the robust iterations do once the
+// slowest mode dominates: its rate, and the values it is heading for. Only a guess: what it
+// proposes is certified before it is used.
+class Trend {
+ public:
+  // Records one sweep: the values before it, after it, and its largest change.
+  void record(const std::vector<double>& before, const std::vector<double>& after, double moved) {
+    before_ = &before;
+    after_ = &after;
+    moved_.push_back(moved);
+  }
+
+  // The rate of the last sweeps, or 0 when it is not known or the changes do not shrink.
+  [[nodiscard]] double rate() const {
+    if (moved_.size() <= kRateWindow) return 0;
+    const double last = moved_.back();
+    const double earlier = moved_[moved_.size() - 1 - kRateWindow];
+    if (!(last > 0 && earlier > last)) return 0;
+    return std::pow(last / earlier, 1.0 / static_cast<double>(kRateWindow));
+  }
+
+  // The sweeps still to come, summed: a geometric sequence of rate r has r / (1 - r) times
+  // its last step ahead of it.
+  [[nodiscard]] double steps_ahead() const {
+    const double r = rate();
+    return r / (1 - r);
+  }
+
+  [[nodiscard]] double last_change() const { return moved_.empty() ? 0 : moved_.back(); }
+
+  // after + factor * (after - before) + lift on the undecided cells, within [0, 1].
+  [[nodiscard]] std::vector<double> ahead(double factor, double lift,
+                                          const std::vector<std::uint8_t>& undecided) const {
+    std::vector<double> values = *after_;
+    for (std::size_t c = 0; c < values.size(); ++c) {
+      if (undecided[c] == 0) continue;
+      const double step = (*after_)[c] - (*before_)[c];
+      values[c] = std::clamp(values[c] + factor * step + lift, 0.0, 1.0);
+    }
+    return values;
+  }
+
+ private:
+  const std::vector<double>* before_ = nullptr;
+  const std::vector<double>* after_ = nullptr;
+  std::vector<double> moved_;
+};
+
+std::vector<std::uint8_t> undecided_cells(const Sweeper& sweeper, std::size_t count, Bound bound) {
+  std::vector<std::uint8_t> undecided(count);
+  for (std::size_t c = 0; c < count; ++c)
+    undecided[c] = sweeper.fixed(c, bound) < 0 ? 1 : 0;
+  return undecided;
+}
+
+// The lower bound and its controller. The optimum is iterated from below with a controller
+// kept beside it; values never fall, and each is the robust value, under the cell's action,
+// of a table no higher than the final one, so the final table v is a post-fixed point of the
+// controller's operator (v <= B v). Extrapolations of the iteration are tried as well, each
+// kept only if one sweep proves it a post-fixed point (rounded down). When the controller has
+// no trap (end_components.hpp) that operator has a single fixed point, the controller's value
+// on the interval MDP, so every post-fixed point is below it: the certificate. With a trap,
+// the controller's value is computed from 0 instead, where every iterate is a bound.
+class LowerBound {
+ public:
+  LowerBound(const IntervalMdp& mdp, const ObjectiveCells& cells, SweepMode mode,
+             const SynthesisOptions& options)
+      : mdp_(mdp),
+        options_(options),
+        sweeper_(mdp, cells, mode),
+        checker_(mdp, cells, mode),
+        undecided_(undecided_cells(sweeper_, mdp.grid.cells, Bound::Lower)),
+        policy_(mdp.grid.cells, 0) {}
+
+  void solve(Synthesis& result) {
+    ValueTable table(mdp_.grid, sweeper_.fixed_or_zero(Bound::Lower));
+    std::vector<double> previous = table.values();
+    Trend trend;
+    result.stop_reason = "sweep limit";
+    const auto update = [&](std::size_t c, const ValueTable& values) {
+      std::uint32_t action = policy_[c];
+      const double chosen = sweeper_.update(c, values, Bound::Lower, action, kSwitchGain).chosen;
+      if (chosen < values[c]) return values[c];  // keep the action that earned the value
+      if (action != policy_[c]) ++switches_;
+      policy_[c] = action;
+      return chosen;
+    };
+    result.sweeps =
+        iterate(table, options_.max_sweeps, update, [&](std::uint64_t sweep, double moved) {
+          if (options_.progress) options_.progress(sweep, moved);
+          trend.record(previous, table.values(), moved);
+          bool stop = false;
+          if (moved <= options_.stall) {
+            result.stop_reason = "values stopped moving";
+            stop = true;
+          } else if (sweep % kCertifyEvery == 0 && try_certificate(trend)) {
+            result.stop_reason = "certified within the precision";
+            stop = true;
+          }
+          previous = table.values();
+          return stop;
+        });
+    std::vector<double> values = table.release();
+    if (!certified_.empty() && certified_switches_ == switches_) {
+      for (std::size_t c = 0; c < values.size(); ++c)
+        values[c] = std::max(values[c], certified_[c]);
+    }
+    const std::vector<std::uint8_t> trap = greatest_trap(mdp_, undecided_, policy_);
+    if (std::none_of(trap.begin(), trap.end(), [](std::uint8_t t) { return t != 0; })) {
+      result.lower = std::move(values);
+      result.lower_method = "certified: the controller has no trap";
+    } else {
+      result.lower = evaluate_from_zero(result.evaluation_sweeps);
+      result.lower_method = "the controller evaluated from 0 (it has a trap)";
+    }
+    result.controller.push_back(policy_);
+  }
+
+ private:
+  // Tries extrapolations of the iteration, boldest first; keeps the first one certified.
+  // Whether it leaves at most the precision to go, as estimated from the rate.
+  bool try_certificate(const Trend& trend) {
+    if (trend.rate() <= 0) return false;
+    const double steps = trend.steps_ahead();
+    for (const double share : {0.999, 0.99, 0.9}) {
+      std::vector<double> candidate = trend.ahead(share * steps, 0, undecided_);
+      if (!post_fixed(candidate)) continue;
+      certified_ = std::move(candidate);
+      certified_switches_ = switches_;
+      return (1 - share) * steps * trend.last_change() <= options_.precision;
+    }
+    return false;
+  }
+
+  // candidate <= B(candidate) under the controller, B rounded down, on every undecided cell.
+  bool post_fixed(const std::vector<double>& candidate) {
+    const ValueTable table(mdp_.grid, candidate);
+    for (std::size_t c = 0; c < candidate.size(); ++c) {
+      if (undecided_[c] != 0 && checker_.evaluate(c, table, policy_[c]) < candidate[c])
+        return false;
+    }
+    return true;
+  }
+
+  std::vector<double> evaluate_from_zero(std::uint64_t& sweeps) {
+    ValueTable table(mdp_.grid, checker_.fixed_or_zero(Bound::Lower));
+    sweeps = iterate(
+        table, options_.max_sweeps,
+        [&](std::size_t c, const ValueTable& values) {
+          return checker_.evaluate(c, values, policy_[c]);
+        },
+        [&](std::uint64_t, double moved) { return moved <= options_.stall; });
+    return table.release();
+  }
+
+  const IntervalMdp& mdp_;
+  const SynthesisOptions& options_;
+  Sweeper sweeper_;
+  Sweeper checker_;  // its own scratch: the sweeper's action cache belongs to its table
+  std::vector<std::uint8_t> undecided_;
+  std::vector<std::uint32_t> policy_;
+  std::uint64_t switches_ = 0;  // controller changes so far
+  std::vector<double> certified_;
+  std::uint64_t certified_switches_ = 0;
+};
+
+// The upper bound. The upper game's least fixed point is approached from below; a guess a
+// little above the iterate (extrapolated, then lifted) is a proven upper bound as soon as one
+// sweep shows it is a pre-fixed point (B u <= u, B rounded up): it then lies above the least
+// fixed point, which is at least the optimum of the true system (docs/guarantees.md). The
+// least of the verified guesses is kept (a minimum of pre-fixed points is one). If none
+// holds, the bound is iterated down from 1, where every iterate is a bound.
+class UpperBound {
+ public:
+  UpperBound(const IntervalMdp& mdp, const ObjectiveCells& cells, SweepMode mode,
+             const SynthesisOptions& options)
+      : mdp_(mdp),
+        cells_(cells),
+        mode_(mode),
+        options_(options),
+        sweeper_(mdp, cells, mode),
+        checker_(mdp, cells, mode),
+        undecided_(undecided_cells(sweeper_, mdp.grid.cells, Bound::Upper)) {}
+
+  std::vector<double> solve() {
+    ValueTable table(mdp_.grid, sweeper_.fixed_or_zero(Bound::Upper));
+    std::vector<double> previous = table.values();
+    std::vector<std::uint32_t> choice(mdp_.grid.cells, 0);  // tried first: the last best
+    Trend trend;
+    const auto rise = [&](std::size_t c, const ValueTable& values) {
+      return std::max(values[c], sweeper_.update(c, values, Bound::Upper, choice[c], 0).best);
+    };
+    sweeps = iterate(table, options_.max_sweeps, rise, [&](std::uint64_t sweep, double moved) {
+      if (abandon.load()) throw Abandoned{};
+      trend.record(previous, table.values(), moved);
+      bool stop = false;
+      if (moved <= options_.stall) {
+        stop = true;
+        for (const double lift :
+             {10 * options_.stall, options_.precision, 1e3 * options_.precision})
+          if (try_guess(trend, 0, lift)) break;
+      } else if (sweep % kCertifyEvery == 0 && trend.rate() > 0) {
+        stop = try_guesses(trend);
+      }
+      previous = table.values();
+      return stop;
+    });
+    if (!best_.empty()) {
+      method = "a guess from below, verified";
+      return best_;
+    }
+    return from_above();
+  }
+
+  std::uint64_t sweeps = 0;
+  std::string method;
+  // Set from another thread to stop solve() (it then throws Abandoned).
+  std::atomic<bool> abandon{false};
+  struct Abandoned {};
+
+ private:
+  // Once a verified guess would be within the precision of the iterate (so above the least
+  // fixed point, which the iterate approaches from below, by at most that), tries guesses past
+  // the iteration's limit, tightest first. Whether one held: the upper bound is then that
+  // tight, proven.
+  bool try_guesses(const Trend& trend) {
+    const double factor = trend.steps_ahead();
+    const double ahead = factor * trend.last_change();
+    for (const double share : {0.1, 0.5}) {
+      const double lift = share * options_.precision;
+      if (ahead + lift > options_.precision) return false;
+      if (try_guess(trend, factor, lift)) return true;
+    }
+    return false;
+  }
+
+  bool try_guess(const Trend& trend, double factor, double lift) {
+    std::vector<double> guess = trend.ahead(factor, lift, undecided_);
+    if (!pre_fixed(guess)) return false;
+    if (best_.empty()) {
+      best_ = std::move(guess);
+    } else {
+      for (std::size_t c = 0; c < guess.size(); ++c)
+        best_[c] = std::min(best_[c], guess[c]);
+    }
+    return true;
+  }
+
+  // Whether guess, or one of the next few values the upper game's operator B takes from it,
+  // is a pre-fixed point: B(u) <= u over every action, B rounded up, on every undecided cell.
+  // A guess just above the least fixed point can fall a little short of it on a few cells;
+  // one application of B evens that out where the rest of the guess is above. On success,
+  // `guess` holds the pre-fixed point.
+  bool pre_fixed(std::vector<double>& guess) {
+    std::vector<double> next(guess.size());
+    for (int application = 0; application <= kSmoothings; ++application) {
+      const ValueTable table(mdp_.grid, guess);
+      bool holds = true;
+      for (std::size_t c = 0; c < guess.size(); ++c) {
+        std::uint32_t ignored = 0;
+        next[c] =
+            undecided_[c] != 0 ? checker_.best_action(c, table, Bound::Upper, ignored) : guess[c];
+        if (next[c] > guess[c]) holds = false;
+      }
+      if (holds) return true;
+      guess.swap(next);
+    }
+    return false;
+  }
+
+  std::vector<double> from_above() {
+    std::vector<double> start(mdp_.grid.cells);
+    for (std::size_t c = 0; c < start.size(); ++c)
+      start[c] = undecided_[c] != 0 ? 1 : sweeper_.fixed(c, Bound::Upper);
+    Sweeper sweeper(mdp_, cells_, mode_);  // a fresh action cache for a fresh table
+    ValueTable table(mdp_.grid, start);
+    std::vector<std::uint32_t> choice(start.size(), 0);
+    sweeps += iterate(
+        table, options_.max_sweeps,
+        [&](std::size_t c, const ValueTable& values) {
+          return std::min(values[c], sweeper.update(c, values, Bound::Upper, choice[c], 0).best);
+        },
+        [&](std::uint64_t, double moved) {
+          if (abandon.load()) throw Abandoned{};
+          return moved <= options_.stall;
+        });
+    method = "iterated down from 1";
+    return table.release();
+  }
+
+  const IntervalMdp& mdp_;
+  const ObjectiveCells& cells_;
+  SweepMode mode_;
+  const SynthesisOptions& options_;
+  Sweeper sweeper_;
+  Sweeper checker_;
+  std::vector<std::uint8_t> undecided_;
+  std::vector<double> best_;
+};
+
+}  // namespace
+
+Synthesis synthesise_unbounded(const IntervalMdp& mdp, const ObjectiveCells& cells, SweepMode mode,
+                               const SynthesisOptions& options) {
+  Synthesis result;
+  UpperBound upper(mdp, cells, mode, options);
+  std::vector<double> upper_values;
+  if (options.jobs > 1) {
+    // The lower bound may stop by an exception (an interrupt from the progress callback): the
+    // upper bound's thread is then told to stop, and joined, before it propagates.
+    std::thread upper_thread([&] {
+      try {
+        upper_values = upper.solve();
+      } catch (const UpperBound::Abandoned&) {
+      }
+    });
+    try {
+      LowerBound(mdp, cells, mode, options).solve(result);
+    } catch (...) {
+      upper.abandon = true;
+      upper_thread.join();
+      throw;
+    }
+    upper_thread.join();
+  } else {
+    LowerBound(mdp, cells, mode, options).solve(result);
+    upper_values = upper.solve();
+  }
+  result.upper_sweeps = upper.sweeps;
+  result.upper_method = upper.method;
+  result.upper = std::move(upper_values);
+  result.largest_gap = largest_gap(result.lower, result.upper);
+  result.gap_closed = result.largest_gap <= options.gap;
+  if (result.gap_closed) result.stop_reason = "gap closed";
+  return result;
+}
+
+}  // namespace oasis::guarantee
