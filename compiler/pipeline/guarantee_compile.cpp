@@ -27,6 +27,17 @@ GuaranteeResult compile_guarantee(const model::ModelIR& ir, const GuaranteeOptio
   guarantee::BuildOptions build;
   build.jobs = options.jobs;
   build.memory_budget = options.memory_budget;
+  std::size_t reported_tenths = 0;
+  if (options.progress) {
+    // A line per tenth of the cells: the abstraction of a large grid takes a minute.
+    build.progress = [&](std::size_t done, std::size_t all) {
+      const std::size_t tenths = all == 0 ? 10 : done * 10 / all;
+      if (tenths <= reported_tenths || tenths >= 10) return;
+      reported_tenths = tenths;
+      options.progress(format("abstraction: %.0f of %.0f cells (%.1f s)", static_cast<double>(done),
+                              static_cast<double>(all), seconds_since(start)));
+    };
+  }
   guarantee::IntervalMdp mdp = guarantee::build_interval_mdp(ir, build);
   result.abstraction_seconds = seconds_since(start);
   result.entries = mdp.entries();
