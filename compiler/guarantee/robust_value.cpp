@@ -50,10 +50,12 @@ class AxisChoice {
   double finish() {
     for (; next_extra_ < extras_.size(); ++next_extra_)
       give(extras_[next_extra_].room, extras_[next_extra_].value);
-    // Mass no outcome can take (bounds rounded outward make this empty): the worst value.
-    if (rest_ > 0) value_ += rest_ * (game_.maximise ? 1.0 : 0.0);
+    // Mass no outcome can take (bounds rounded outward make this empty): the value at the end
+    // the result is rounded to.
+    const bool up = game_.maximise != game_.round_against_chooser;
+    if (rest_ > 0) value_ += rest_ * (up ? 1.0 : 0.0);
     const double error = 2.0 * static_cast<double>(slice_.count + 4) * kUnitRoundoff;
-    return game_.maximise ? std::min(1.0, value_ + error) : std::max(0.0, value_ - error);
+    return up ? std::min(1.0, value_ + error) : std::max(0.0, value_ - error);
   }
 
  private:

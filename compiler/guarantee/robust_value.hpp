@@ -24,6 +24,10 @@ struct RobustGame {
   bool maximise = false;       // the disturbance's side: false for lower bounds
   double outside_value = 0;    // the value of leaving the grid's box
   double truncated_value = 0;  // the value of a Gaussian's truncated tail
+  // Values are rounded in the chooser's favour (down when minimising, up when maximising), so
+  // that a lower bound stays below and an upper bound above. Set, they are rounded the other
+  // way: a minimum rounded up, to check that values are above a minimum.
+  bool round_against_chooser = false;
 };
 
 // Values per cell, and per line of the last axis (the cells that differ only in their last
@@ -73,8 +77,8 @@ struct RobustScratch {
 };
 
 // The robust expectation of `table`'s values under `row` (the slices of one cell and action),
-// rounded outward: down when minimising, up when maximising, by a bound on the rounding of the
-// sums, then clamped to [0, 1].
+// rounded outward (RobustGame::round_against_chooser says which way) by a bound on the rounding
+// of the sums, then clamped to [0, 1].
 double robust_value(const IntervalMdp& mdp, const AxisSlice* row, const ValueTable& table,
                     const RobustGame& game, RobustScratch& scratch);
 

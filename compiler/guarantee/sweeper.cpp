@@ -101,4 +101,15 @@ double Sweeper::evaluate(std::size_t cell, const ValueTable& values, std::uint32
   return robust_value(mdp_, mdp_.row(cell, action), values, game(Bound::Lower), scratch_);
 }
 
+double Sweeper::lower_game_ceiling(std::size_t cell, const ValueTable& values) {
+  const double constant = fixed(cell, Bound::Lower);
+  if (constant >= 0) return constant;
+  RobustGame g = game(Bound::Lower);
+  g.round_against_chooser = true;
+  double best = 0;
+  for (std::size_t a = 0; a < mdp_.actions.size(); ++a)
+    best = std::max(best, robust_value(mdp_, mdp_.row(cell, a), values, g, scratch_));
+  return best;
+}
+
 }  // namespace oasis::guarantee

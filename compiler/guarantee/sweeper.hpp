@@ -56,6 +56,10 @@ class Sweeper {
   // The lower bound's robust value of `action` at `cell` (its fixed value if it has one).
   double evaluate(std::size_t cell, const ValueTable& values, std::uint32_t action);
 
+  // The lower game's value at `cell` (best action, worst distribution) rounded up, not down:
+  // what checks that values lie above the lower game's fixed point.
+  double lower_game_ceiling(std::size_t cell, const ValueTable& values);
+
  private:
   [[nodiscard]] bool safe(std::size_t cell, Bound bound) const {
     return (bound == Bound::Lower ? cells_.safe_lower : cells_.safe_upper)[cell] != 0;

@@ -26,6 +26,10 @@ constexpr std::uint64_t kCertifyEvery = 10;
 // before it is given up.
 constexpr int kSmoothings = 3;
 
+// The lower bound's certificate is tried once the extrapolation it rests on reaches at most this
+// many times the precision past the iterate: earlier, the check would fail and only cost.
+constexpr double kExtrapolationReach = 100;
+
 // The rate is the geometric mean of the ratios of the last this many largest changes.
 constexpr std::size_t kRateWindow = 10;
 
@@ -108,6 +112,12 @@ std::vector<std::uint8_t> undecided_cells(const Sweeper& sweeper, std::size_t co
   return undecided;
 }
 
+// The upper bound, once it is known, for the lower bound's iteration to stop on a closed gap.
+struct PublishedBound {
+  std::atomic<bool> ready{false};
+  std::vector<double> values;  // read only after `ready`
+};
+
 // The lower bound and its controller. The optimum is iterated from below with a controller
 // kept beside it; values never fall, and each is the robust value, under the cell's action,
 // of a table no higher than the final one, so the final table v is a post-fixed point of the
@@ -119,9 +129,10 @@ std::vector<std::uint8_t> undecided_cells(const Sweeper& sweeper, std::size_t co
 class LowerBound {
  public:
   LowerBound(const IntervalMdp& mdp, const ObjectiveCells& cells, SweepMode mode,
-             const SynthesisOptions& options)
+             const SynthesisOptions& options, const PublishedBound& upper)
       : mdp_(mdp),
         options_(options),
+        upper_(upper),
         sweeper_(mdp, cells, mode),
         checker_(mdp, cells, mode),
         undecided_(undecided_cells(sweeper_, mdp.grid.cells, Bound::Lower)),
@@ -148,9 +159,8 @@ class LowerBound {
           if (moved <= options_.stall) {
             result.stop_reason = "values stopped moving";
             stop = true;
-          } else if (sweep % kCertifyEvery == 0 && try_certificate(trend)) {
-            result.stop_reason = "certified within the precision";
-            stop = true;
+          } else if (sweep % kCertifyEvery == 0) {
+            stop = try_certificate(trend, sweep, result.stop_reason);
           }
           previous = table.values();
           return stop;
@@ -172,29 +182,78 @@ class LowerBound {
   }
 
  private:
-  // Tries extrapolations of the iteration, boldest first; keeps the first one certified.
-  // Whether it leaves at most the precision to go, as estimated from the rate.
-  bool try_certificate(const Trend& trend) {
+  // Extrapolates the iteration to its limit and certifies a value a little below it as the
+  // controller's (post_fixed). Whether the iteration can stop: when the certified bound is
+  // within the gap of the upper bound (if known yet), or within the precision of a ceiling,
+  // a value a little above the limit proven above the lower game's fixed point (the best lower
+  // bound the abstraction admits), so that the iteration has nothing more to give.
+  bool try_certificate(const Trend& trend, std::uint64_t sweep, std::string& stop_reason) {
     if (trend.rate() <= 0) return false;
     const double steps = trend.steps_ahead();
-    for (const double share : {0.999, 0.99, 0.9}) {
-      std::vector<double> candidate = trend.ahead(share * steps, 0, undecided_);
-      if (!post_fixed(candidate)) continue;
-      certified_ = std::move(candidate);
-      certified_switches_ = switches_;
-      return (1 - share) * steps * trend.last_change() <= options_.precision;
+    if (steps * trend.last_change() > kExtrapolationReach * options_.precision) return false;
+    const double lift = 0.1 * options_.precision;
+    std::vector<double> candidate = trend.ahead(steps, -lift, undecided_);
+    if (!post_fixed(candidate)) return false;
+    certified_ = std::move(candidate);
+    certified_switches_ = switches_;
+    if (upper_.ready.load(std::memory_order_acquire) &&
+        spread(upper_.values, certified_) <= options_.gap) {
+      stop_reason = "gap closed";
+      return true;
+    }
+    if (sweep < next_ceiling_) return false;
+    std::vector<double> ceiling = trend.ahead(steps, lift, undecided_);
+    if (above_fixed_point(ceiling) && spread(ceiling, certified_) <= options_.precision) {
+      stop_reason = "within the precision of the lower game's fixed point";
+      return true;
+    }
+    next_ceiling_ = sweep + ceiling_wait_;
+    ceiling_wait_ *= 2;
+    return false;
+  }
+
+  static double spread(const std::vector<double>& above, const std::vector<double>& below) {
+    double largest = 0;
+    for (std::size_t c = 0; c < above.size(); ++c)
+      largest = std::max(largest, above[c] - below[c]);
+    return largest;
+  }
+
+  // Whether candidate, or one of the next few values the controller's operator B takes from
+  // it, is a post-fixed point: candidate <= B(candidate), B rounded down, on every undecided
+  // cell. On success, `candidate` holds it.
+  bool post_fixed(std::vector<double>& candidate) {
+    std::vector<double> next(candidate.size());
+    for (int application = 0; application <= kSmoothings; ++application) {
+      const ValueTable table(mdp_.grid, candidate);
+      bool holds = true;
+      for (std::size_t c = 0; c < candidate.size(); ++c) {
+        next[c] = undecided_[c] != 0 ? checker_.evaluate(c, table, policy_[c]) : candidate[c];
+        if (next[c] < candidate[c]) holds = false;
+      }
+      if (holds) return true;
+      candidate.swap(next);
     }
     return false;
   }
 
-  // candidate <= B(candidate) under the controller, B rounded down, on every undecided cell.
-  bool post_fixed(const std::vector<double>& candidate) {
-    const ValueTable table(mdp_.grid, candidate);
-    for (std::size_t c = 0; c < candidate.size(); ++c) {
-      if (undecided_[c] != 0 && checker_.evaluate(c, table, policy_[c]) < candidate[c])
-        return false;
+  // Whether ceiling, or one of the next few values the lower game's operator B takes from it,
+  // is a pre-fixed point: B(ceiling) <= ceiling, B rounded up, on every undecided cell. It is
+  // then above the lower game's least fixed point (Knaster-Tarski), which is above every
+  // controller's value on the interval MDP.
+  bool above_fixed_point(std::vector<double>& ceiling) {
+    std::vector<double> next(ceiling.size());
+    for (int application = 0; application <= kSmoothings; ++application) {
+      const ValueTable table(mdp_.grid, ceiling);
+      bool holds = true;
+      for (std::size_t c = 0; c < ceiling.size(); ++c) {
+        next[c] = undecided_[c] != 0 ? checker_.lower_game_ceiling(c, table) : ceiling[c];
+        if (next[c] > ceiling[c]) holds = false;
+      }
+      if (holds) return true;
+      ceiling.swap(next);
     }
-    return true;
+    return false;
   }
 
   std::vector<double> evaluate_from_zero(std::uint64_t& sweeps) {
@@ -210,6 +269,7 @@ class LowerBound {
 
   const IntervalMdp& mdp_;
   const SynthesisOptions& options_;
+  const PublishedBound& upper_;
   Sweeper sweeper_;
   Sweeper checker_;  // its own scratch: the sweeper's action cache belongs to its table
   std::vector<std::uint8_t> undecided_;
@@ -217,6 +277,9 @@ class LowerBound {
   std::uint64_t switches_ = 0;  // controller changes so far
   std::vector<double> certified_;
   std::uint64_t certified_switches_ = 0;
+  // A failed ceiling costs sweeps over every action: after one, the next waits twice as long.
+  std::uint64_t next_ceiling_ = 0;
+  std::uint64_t ceiling_wait_ = kCertifyEvery;
 };
 
 // The upper bound. The upper game's least fixed point is approached from below; a guess a
@@ -359,18 +422,22 @@ Synthesis synthesise_unbounded(const IntervalMdp& mdp, const ObjectiveCells& cel
                                const SynthesisOptions& options) {
   Synthesis result;
   UpperBound upper(mdp, cells, mode, options);
-  std::vector<double> upper_values;
+  PublishedBound published;
+  const auto solve_upper = [&] {
+    published.values = upper.solve();
+    published.ready.store(true, std::memory_order_release);
+  };
   if (options.jobs > 1) {
     // The lower bound may stop by an exception (an interrupt from the progress callback): the
     // upper bound's thread is then told to stop, and joined, before it propagates.
     std::thread upper_thread([&] {
       try {
-        upper_values = upper.solve();
+        solve_upper();
       } catch (const UpperBound::Abandoned&) {
       }
     });
     try {
-      LowerBound(mdp, cells, mode, options).solve(result);
+      LowerBound(mdp, cells, mode, options, published).solve(result);
     } catch (...) {
       upper.abandon = true;
       upper_thread.join();
@@ -378,12 +445,12 @@ Synthesis synthesise_unbounded(const IntervalMdp& mdp, const ObjectiveCells& cel
     }
     upper_thread.join();
   } else {
-    LowerBound(mdp, cells, mode, options).solve(result);
-    upper_values = upper.solve();
+    solve_upper();  // first: it usually converges sooner, and lets the lower bound stop on it
+    LowerBound(mdp, cells, mode, options, published).solve(result);
   }
   result.upper_sweeps = upper.sweeps;
   result.upper_method = upper.method;
-  result.upper = std::move(upper_values);
+  result.upper = std::move(published.values);
   result.largest_gap = largest_gap(result.lower, result.upper);
   result.gap_closed = result.largest_gap <= options.gap;
   if (result.gap_closed) result.stop_reason = "gap closed";
