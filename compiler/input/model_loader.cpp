@@ -44,7 +44,11 @@ prism::LoadOptions prism_load_options(const LoadOptions& options) {
   prism_options.max_bytes = options.max_spec_bytes;
   prism_options.max_number_bits = options.max_number_bits;
   prism_options.explore.max_states = options.max_states;
-  if (options.progress) prism_options.explore.progress = print_progress;
+  if (options.progress) {
+    prism_options.explore.progress = print_progress;
+  } else {
+    prism_options.explore.progress = options.on_progress;
+  }
   return prism_options;
 }
 
@@ -140,7 +144,8 @@ std::optional<LoadedModel> load_model(const std::string& path, SourceManager& so
     return loaded;
   }
 
-  model::ExploreOptions explore_options{.max_states = options.max_states, .progress = {}};
+  model::ExploreOptions explore_options{.max_states = options.max_states,
+                                        .progress = options.on_progress};
   if (options.progress) explore_options.progress = print_progress;
   loaded.model = model::explore(*loaded.ir, diagnostics, explore_options);
   if (options.progress) std::cerr << "\r\033[K" << std::flush;

@@ -4,6 +4,7 @@
 // model imported from another tool (.aut, .tra).
 
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <string>
 #include <utility>
@@ -25,6 +26,9 @@ struct LoadOptions {
   std::size_t max_number_bits = limits::kDefaultMaxNumberBits;
   bool explore = true;    // false: stop after the front end
   bool progress = false;  // report exploration progress on stderr
+  // Called now and then during exploration instead (found, explored); it may throw to stop the
+  // load (the Python module's Ctrl-C). Unused when `progress` is true.
+  std::function<void(std::uint64_t found, std::uint64_t explored)> on_progress;
   std::string constants;  // PRISM programs: values of undefined constants (--const N=4,p=0.1)
   std::string rewards = "none";  // PRISM programs: reward structures as contexts (--rewards)
   bool hash_source = true;       // false: leave source_hash 0 (a command that writes no catalog)

@@ -75,6 +75,10 @@ void DiagnosticEngine::emit(Severity severity, SourceRange where, std::string_vi
   const LineColumn position = file.line_column(where.begin.offset);
   out_ << file.path() << ':' << position.line << ':' << position.column << ": " << label(severity)
        << ": " << text::printable_message(message) << '\n';
+  if (listener_) {
+    listener_(
+        {severity, file.path(), position.line, position.column, text::printable_message(message)});
+  }
   print_snippet(out_, file.line_text(where.begin.offset), position.column,
                 where.length == 0 ? 1 : where.length);
   if (should_stop() && severity == Severity::Error) {
@@ -98,17 +102,23 @@ void DiagnosticEngine::note(SourceRange where, std::string_view message) {
 void DiagnosticEngine::file_error(std::string_view path, std::string_view message) {
   count(Severity::Error);
   out_ << report_line(path, "error", text::printable_message(message));
+  if (listener_)
+    listener_({Severity::Error, std::string(path), 0, 0, text::printable_message(message)});
 }
 
 void DiagnosticEngine::file_warning(std::string_view path, std::string_view message) {
   count(Severity::Warning);
   out_ << report_line(path, "warning", text::printable_message(message));
+  if (listener_) {
+    listener_({Severity::Warning, std::string(path), 0, 0, text::printable_message(message)});
+  }
 }
 
 void DiagnosticEngine::plain_error(std::string_view message) {
   count(Severity::Error);
   // The program that runs (oasisc, oasisc-mpi, oasis-sim), as its other messages name it.
   out_ << report_line(program_invocation_short_name, "error", text::printable_message(message));
+  if (listener_) listener_({Severity::Error, {}, 0, 0, text::printable_message(message)});
 }
 
 }  // namespace oasis

@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <iosfwd>
 #include <string>
 #include <string_view>
@@ -37,6 +38,17 @@ inline SourceRange span(SourceRange first, SourceRange last) {
   const SourceOffset length = end > first.begin.offset ? end - first.begin.offset : 1;
   return {first.begin, static_cast<std::uint32_t>(std::min<SourceOffset>(length, UINT32_MAX))};
 }
+
+// A diagnostic as data, for callers that keep them besides the printed text (the Python
+// module's SpecError.diagnostics). `line` and `column` are 0 for a file's error at no place in
+// it, and `file` is empty for an error of no file.
+struct DiagnosticRecord {
+  Severity severity = Severity::Error;
+  std::string file;
+  std::uint64_t line = 0;
+  std::uint32_t column = 0;
+  std::string message;
+};
 
 class DiagnosticEngine {
  public:
@@ -67,6 +79,11 @@ class DiagnosticEngine {
 
   [[nodiscard]] const SourceManager& sources() const { return sources_; }
 
+  // Also hands every diagnostic that is printed to `listener` (none by default).
+  void set_listener(std::function<void(const DiagnosticRecord&)> listener) {
+    listener_ = std::move(listener);
+  }
+
  private:
   void emit(Severity severity, SourceRange where, std::string_view message);
   void count(Severity severity);
@@ -77,6 +94,7 @@ class DiagnosticEngine {
   std::size_t errors_ = 0;
   std::size_t warnings_ = 0;
   bool limit_reported_ = false;
+  std::function<void(const DiagnosticRecord&)> listener_;
 };
 
 }  // namespace oasis
