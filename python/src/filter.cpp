@@ -9,6 +9,7 @@
 #include <optional>
 
 #include <pybind11/numpy.h>
+#include <pybind11/stl.h>
 
 #include "arrays.hpp"
 #include "bindings.hpp"
