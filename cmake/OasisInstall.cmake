@@ -2,7 +2,8 @@
 # headers in P/include/oasis, the CMake package (oasisConfig.cmake, its version file, the
 # exported targets oasis::runtime and oasis::oasisc, oasis_add_catalog()) in
 # P/lib/cmake/oasis, the shipped specs in P/share/oasis/specs and the documentation in
-# P/share/doc/oasis. `cpack -G DEB` (in the build directory) makes a Debian package of the
+# P/share/doc/oasis, the Python module in P/lib/python3/dist-packages/oasis (with
+# OASIS_BUILD_PYTHON). `cpack -G DEB` (in the build directory) makes a Debian package of the
 # same files, its dependencies computed by dpkg-shlibdeps.
 include(CMakePackageConfigHelpers)
 
@@ -52,6 +53,12 @@ set(CPACK_GENERATOR DEB)
 set(CPACK_DEBIAN_FILE_NAME DEB-DEFAULT)
 set(CPACK_DEBIAN_PACKAGE_SECTION science)
 set(CPACK_DEBIAN_PACKAGE_SHLIBDEPS ON)  # Depends: from the programs' shared libraries
+# The Python module (python/CMakeLists.txt) is built for Debian 12's python3 (3.11) and reads
+# numpy and scipy; the shared libraries it links are in the computed Depends already.
+if(OASIS_BUILD_PYTHON AND OASIS_BUILD_COMPILER)
+  set(CPACK_DEBIAN_PACKAGE_DEPENDS
+      "python3 (>= 3.11), python3 (<< 3.12), python3-numpy, python3-scipy")
+endif()
 # The CMake package's consumers compile against these headers (oasis_add_catalog's C++).
 set(CPACK_DEBIAN_PACKAGE_SUGGESTS "cmake (>= 3.25), g++ (>= 12)")
 include(CPack)

@@ -9,7 +9,9 @@
                 build a robot-side consumer that loads a catalog file; oasis_add_catalog()
                 there stops with a message that says why.
   deb           `cpack -G DEB` the build; the package's Depends name the shared libraries,
-                and its oasisc, unpacked, prints its version.
+                and its oasisc, unpacked, prints its version; so does its Python module, when
+                the build has one (OASIS_BUILD_PYTHON), imported by Debian's /usr/bin/python3
+                from /usr/lib/python3/dist-packages.
 
 Every step's output is shown when it fails. Temporary directories are removed.
 """
@@ -20,9 +22,9 @@ import sys
 import tempfile
 
 
-def run(command, cwd=None, expect_failure=False):
+def run(command, cwd=None, expect_failure=False, env=None):
     result = subprocess.run(command, cwd=cwd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
-                            text=True)
+                            text=True, env=env)
     if (result.returncode == 0) == expect_failure:
         print("$ " + " ".join(command))
         print(result.stdout)
@@ -96,6 +98,14 @@ def deb(args, scratch):
     root = os.path.join(scratch, "root")
     run(["dpkg-deb", "-x", package, root])
     print(run([os.path.join(root, "usr", "bin", "oasisc"), "--version"]).strip())
+    packages_dir = os.path.join(root, "usr", "lib", "python3", "dist-packages")
+    if os.path.isdir(os.path.join(packages_dir, "oasis")):
+        if "python3-numpy" not in depends:
+            sys.exit("package_test: the package holds the Python module but does not depend on "
+                     "python3-numpy")
+        version = run(["/usr/bin/python3", "-c", "import oasis; print(oasis.__version__)"],
+                      cwd=scratch, env={**os.environ, "PYTHONPATH": packages_dir}).strip()
+        print(f"python3: import oasis: {version}")
 
 
 def main():
