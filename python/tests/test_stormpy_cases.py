@@ -81,10 +81,10 @@ def test_die_property_on_model_and_quotient(die):
 
 
 def test_crowds_as_stormpy_test_bisimulation(tmp_path):
-    # stormpy tests/core/test_bisimulation.py, test_bisimulation: crowds5_5, 7403 states and
-    # 13041 transitions; the quotient for P=? [F "observe0Greater1"] has 64 states (Storm's
-    # sparse bisimulation for the formula, which respects the states where it holds surely),
-    # and its symbolic bisimulation 65 (the label itself).
+    # stormpy's bisimulation test (test_bisimulation; its address is in published.json):
+    # crowds5_5, 7403 states and 13041 transitions; the quotient for P=? [F "observe0Greater1"]
+    # has 64 states (Storm's sparse bisimulation for the formula, which respects the states
+    # where it holds surely), and its symbolic bisimulation 65 (the label itself).
     program = oasis.parse_prism_program(str(PRISM_DATA / "crowds5_stop.pm"),
                                         constants={"TotalRuns": 5})
     model = oasis.build_model(program)

@@ -23,7 +23,7 @@ import sys
 
 SCANNED = re.compile(r"(\.(md|hpp|cpp|py|cmake|txt|yaml|oasis|in|sh|json)|/[^./]+)$")
 SCANNED_FOLDERS = ("compiler/", "hw/", "common/", "tools/", "runtime/", "tests/", "scripts/",
-                   "cmake/", "docs/", "specs/", ".ci/", ".clang")
+                   "cmake/", "docs/", "specs/", ".ci/", ".clang", "python/", "examples/")
 SKIPPED_FOLDERS = ("tests/data/", "tests/golden/", "tests/specs/", "tests/fuzz/corpus/",
                    "generated/")
 EXTENSIONS = r"(?:hpp|cpp|h|py|md|cmake|txt|yaml|oasis|json|tsv|pm|nm|aut|tra|lab|bin|svg|dot)"
