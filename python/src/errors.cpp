@@ -71,6 +71,8 @@ void Diagnostics::fail(ErrorKind kind, const std::string& fallback) const {
 
 void bind_errors(py::module_& module) {
   static_cast<void>(module);
+  // By value: pybind11's translator is a function pointer of that type.
+  // NOLINTNEXTLINE(performance-unnecessary-value-param)
   py::register_exception_translator([](std::exception_ptr pointer) {
     try {
       if (pointer) std::rethrow_exception(pointer);

@@ -209,7 +209,7 @@ void bind_filter(py::module_& module) {
            "The first observed state (an int; a vector of floats on a continuous catalog).")
       .def(
           "step",
-          [](py::object self, const py::handle& observation, double reward,
+          [](const py::object& self, const py::handle& observation, double reward,
              const py::handle& action) {
             return self.cast<FilterObject&>().step(self, observation, reward, action);
           },
@@ -221,7 +221,7 @@ void bind_filter(py::module_& module) {
           "or action out of range (the filter is then unchanged).")
       .def_property_readonly("decision", &FilterObject::decision, "The current decision.")
       .def_property_readonly(
-          "belief", [](py::object self) { return self.cast<FilterObject&>().belief(self); },
+          "belief", [](const py::object& self) { return self.cast<FilterObject&>().belief(self); },
           "The belief over abstractions (a read-only view, updated by each step).")
       .def_property_readonly("ml_abstraction", &FilterObject::ml_abstraction,
                              "The most likely abstraction.")

@@ -62,11 +62,7 @@ std::string constants_text(const std::optional<py::dict>& constants) {
 // "all", "none" or "a,b" for the loader's --rewards, from None, "all", "none" or a list.
 std::string rewards_text(const py::handle& rewards) {
   if (rewards.is_none()) return "none";
-  if (py::isinstance<py::str>(rewards)) {
-    const auto text = rewards.cast<std::string>();
-    if (text == "all" || text == "none") return text;
-    return text;  // one name
-  }
+  if (py::isinstance<py::str>(rewards)) return rewards.cast<std::string>();  // all, none, a name
   std::string text;
   for (const py::handle name : rewards) {
     if (!text.empty()) text += ',';

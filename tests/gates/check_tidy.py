@@ -21,7 +21,7 @@ import tempfile
 
 # The product's code (and, through it, runtime/'s headers). Tests are left out: they follow
 # their frameworks' names (GoogleTest's, Google Benchmark's BM_, libFuzzer's entry point).
-CHECKED = ("compiler/", "hw/", "common/", "tools/")
+CHECKED = ("compiler/", "hw/", "common/", "tools/", "python/")
 
 
 def changed_since(root, base):
