@@ -103,6 +103,8 @@ void write_summary(JsonWriter& out, const pipeline::GuaranteeResult& result) {
     out.value(s.upper_method);
     out.key("upper_sweeps");
     out.value(s.upper_sweeps);
+    out.key("policy_rounds");
+    out.value(s.policy_rounds);
   }
   out.key("largest_gap");
   out.value(s.largest_gap);

@@ -25,35 +25,49 @@ class AxisChoice {
     if (better(extras_[1].value, extras_[0].value)) std::swap(extras_[0], extras_[1]);
   }
 
+  // From now on, each entry's probability is added up in amounts[k] (count entries), and the
+  // value of what goes outside the grid's cells in absorbed().
+  void record(double* amounts) { amounts_ = amounts; }
+  [[nodiscard]] double absorbed() const { return absorbed_; }
+
   // Every outcome's lower bound first. `value_of(k)` is entry k's value.
   template <typename ValueOf>
   void start(const ValueOf& value_of) {
     double mass = slice_.outside_lower;
     value_ = slice_.outside_lower * game_.outside_value;
+    absorbed_ = value_;
     for (std::uint32_t k = 0; k < slice_.count; ++k) {
       mass += lower_[k];
       value_ += lower_[k] * value_of(k);
     }
+    if (amounts_ != nullptr) std::copy(lower_, lower_ + slice_.count, amounts_);
     rest_ = 1.0 - mass;
   }
 
   // The next entry in order of preference.
   void offer(std::uint32_t k, double value) {
     while (next_extra_ < extras_.size() && better(extras_[next_extra_].value, value)) {
-      give(extras_[next_extra_].room, extras_[next_extra_].value);
+      absorbed_ +=
+          give(extras_[next_extra_].room, extras_[next_extra_].value) * extras_[next_extra_].value;
       ++next_extra_;
     }
-    give(upper_[k] - lower_[k], value);
+    const double amount = give(upper_[k] - lower_[k], value);
+    if (amounts_ != nullptr) amounts_[k] += amount;
   }
   [[nodiscard]] bool done() const { return rest_ <= 0; }
 
   double finish() {
-    for (; next_extra_ < extras_.size(); ++next_extra_)
-      give(extras_[next_extra_].room, extras_[next_extra_].value);
+    for (; next_extra_ < extras_.size(); ++next_extra_) {
+      absorbed_ +=
+          give(extras_[next_extra_].room, extras_[next_extra_].value) * extras_[next_extra_].value;
+    }
     // Mass no outcome can take (bounds rounded outward make this empty): the value at the end
     // the result is rounded to.
     const bool up = game_.maximise != game_.round_against_chooser;
-    if (rest_ > 0) value_ += rest_ * (up ? 1.0 : 0.0);
+    if (rest_ > 0) {
+      value_ += rest_ * (up ? 1.0 : 0.0);
+      absorbed_ += rest_ * (up ? 1.0 : 0.0);
+    }
     const double error = 2.0 * static_cast<double>(slice_.count + 4) * kUnitRoundoff;
     return up ? std::min(1.0, value_ + error) : std::max(0.0, value_ - error);
   }
@@ -64,11 +78,13 @@ class AxisChoice {
     double room;
   };
   [[nodiscard]] bool better(double a, double b) const { return game_.maximise ? a > b : a < b; }
-  void give(double room, double value) {
+  // Gives up to `room` of the mass left to an outcome of `value`; returns what it gave.
+  double give(double room, double value) {
     const double amount = std::min(room, rest_);
-    if (amount <= 0) return;
+    if (amount <= 0) return 0;
     value_ += amount * value;
     rest_ -= amount;
+    return amount;
   }
 
   const double* lower_;
@@ -79,6 +95,8 @@ class AxisChoice {
   std::size_t next_extra_ = 0;
   double value_ = 0;
   double rest_ = 0;
+  double* amounts_ = nullptr;
+  double absorbed_ = 0;
 };
 
 class Expectation {
@@ -89,9 +107,16 @@ class Expectation {
     if (scratch_.values.size() < mdp.grid.dimension()) scratch_.values.resize(mdp.grid.dimension());
   }
 
-  // The expectation over axes axis.. given the cell offset of the earlier axes' outcomes.
-  double at(std::size_t axis, std::size_t base) {
-    if (axis + 1 == mdp_.grid.dimension()) return last_axis(base);
+  // What at() chose on one axis: each entry's probability, and the value of the rest.
+  struct Recording {
+    double* amounts = nullptr;
+    double absorbed = 0;
+  };
+
+  // The expectation over axes axis.. given the cell offset of the earlier axes' outcomes; with
+  // `recording`, what this axis chose.
+  double at(std::size_t axis, std::size_t base, Recording* recording = nullptr) {
+    if (axis + 1 == mdp_.grid.dimension()) return last_axis(base, recording);
     const AxisSlice& slice = row_[axis];
     const std::size_t stride = mdp_.grid.strides[axis];
     std::vector<double>& level = scratch_.values[axis];
@@ -100,6 +125,7 @@ class Expectation {
       level[k] = at(axis + 1, base + (slice.first + k) * stride);
     // Deeper levels used only scratch_.values of deeper axes, so `level` is intact here.
     AxisChoice choice(mdp_, slice, game_);
+    if (recording != nullptr) choice.record(recording->amounts);
     choice.start([&](std::uint32_t k) { return level[k]; });
     std::vector<std::uint32_t>& order = scratch_.order;
     order.resize(slice.count);
@@ -109,15 +135,41 @@ class Expectation {
     });
     for (std::size_t i = 0; i < order.size() && !choice.done(); ++i)
       choice.offer(order[i], level[order[i]]);
-    return choice.finish();
+    const double value = choice.finish();
+    if (recording != nullptr) recording->absorbed = choice.absorbed();
+    return value;
+  }
+
+  // The distribution at() chooses over axes axis.., each probability times `weight`, into
+  // `out`: cells as they come (a cell may repeat), the rest's value into out.constant.
+  void choose(std::size_t axis, std::size_t base, double weight, ChosenRow& out) {
+    const AxisSlice& slice = row_[axis];
+    std::vector<double> amounts(slice.count);
+    Recording recording{amounts.data()};
+    at(axis, base, &recording);
+    out.constant += weight * recording.absorbed;
+    const bool last = axis + 1 == mdp_.grid.dimension();
+    const std::size_t stride = mdp_.grid.strides[axis];
+    for (std::uint32_t k = 0; k < slice.count; ++k) {
+      const double p = weight * amounts[k];
+      if (!(p > 0)) continue;
+      const std::size_t at_k = base + (slice.first + k) * stride;
+      if (last) {
+        out.cells.push_back(static_cast<std::uint32_t>(at_k));
+        out.probabilities.push_back(p);
+      } else {
+        choose(axis + 1, at_k, p, out);
+      }
+    }
   }
 
  private:
   // The last axis: the entries are cells of one grid line, already sorted by ValueTable.
-  double last_axis(std::size_t base) {
+  double last_axis(std::size_t base, Recording* recording) {
     const AxisSlice& slice = row_[mdp_.grid.dimension() - 1];
     const double* values = table_.values().data() + base;
     AxisChoice choice(mdp_, slice, game_);
+    if (recording != nullptr) choice.record(recording->amounts);
     choice.start([&](std::uint32_t k) { return values[slice.first + k]; });
     const std::uint32_t* order = table_.order(base / table_.line_length());
     const std::size_t n = table_.line_length();
@@ -126,7 +178,9 @@ class Expectation {
       if (interval < slice.first || interval >= slice.first + slice.count) continue;
       choice.offer(interval - slice.first, values[interval]);
     }
-    return choice.finish();
+    const double value = choice.finish();
+    if (recording != nullptr) recording->absorbed = choice.absorbed();
+    return value;
   }
 
   const IntervalMdp& mdp_;
@@ -183,6 +237,14 @@ void ValueTable::sort_line(std::size_t line) {
 double robust_value(const IntervalMdp& mdp, const AxisSlice* row, const ValueTable& table,
                     const RobustGame& game, RobustScratch& scratch) {
   return Expectation(mdp, row, table, game, scratch).at(0, 0);
+}
+
+void robust_choice(const IntervalMdp& mdp, const AxisSlice* row, const ValueTable& table,
+                   const RobustGame& game, RobustScratch& scratch, ChosenRow& out) {
+  out.cells.clear();
+  out.probabilities.clear();
+  out.constant = 0;
+  Expectation(mdp, row, table, game, scratch).choose(0, 0, 1.0, out);
 }
 
 }  // namespace oasis::guarantee

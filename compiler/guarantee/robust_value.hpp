@@ -82,4 +82,17 @@ struct RobustScratch {
 double robust_value(const IntervalMdp& mdp, const AxisSlice* row, const ValueTable& table,
                     const RobustGame& game, RobustScratch& scratch);
 
+// The distribution robust_value chooses, expanded over the cells: probabilities (a cell may
+// appear more than once), and the value of what leaves the cells (outside the box, the
+// truncated tails, mass no outcome takes) as `constant`. Unrounded: a guess for solvers whose
+// results are checked with robust_value, never a bound itself.
+struct ChosenRow {
+  std::vector<std::uint32_t> cells;
+  std::vector<double> probabilities;
+  double constant = 0;
+};
+
+void robust_choice(const IntervalMdp& mdp, const AxisSlice* row, const ValueTable& table,
+                   const RobustGame& game, RobustScratch& scratch, ChosenRow& out);
+
 }  // namespace oasis::guarantee

@@ -95,21 +95,14 @@ Sweeper::Choice Sweeper::update(std::size_t cell, const ValueTable& values, Boun
   return {best, current};
 }
 
-double Sweeper::evaluate(std::size_t cell, const ValueTable& values, std::uint32_t action) {
-  const double constant = fixed(cell, Bound::Lower);
+double Sweeper::action_value(std::size_t cell, const ValueTable& values, std::uint32_t action,
+                             Bound bound, Rounding rounding) {
+  const double constant = fixed(cell, bound);
   if (constant >= 0) return constant;
-  return robust_value(mdp_, mdp_.row(cell, action), values, game(Bound::Lower), scratch_);
-}
-
-double Sweeper::lower_game_ceiling(std::size_t cell, const ValueTable& values) {
-  const double constant = fixed(cell, Bound::Lower);
-  if (constant >= 0) return constant;
-  RobustGame g = game(Bound::Lower);
-  g.round_against_chooser = true;
-  double best = 0;
-  for (std::size_t a = 0; a < mdp_.actions.size(); ++a)
-    best = std::max(best, robust_value(mdp_, mdp_.row(cell, a), values, g, scratch_));
-  return best;
+  RobustGame g = game(bound);
+  // The lower game's chooser (the disturbance, minimising) rounds down, the upper's up.
+  g.round_against_chooser = (bound == Bound::Lower) == (rounding == Rounding::Up);
+  return robust_value(mdp_, mdp_.row(cell, action), values, g, scratch_);
 }
 
 }  // namespace oasis::guarantee

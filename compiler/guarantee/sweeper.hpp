@@ -13,6 +13,7 @@
 namespace oasis::guarantee {
 
 enum class Bound { Lower, Upper };
+enum class Rounding { Down, Up };
 
 // The objective as the sweeps read it.
 enum class SweepMode { Safety, Reach, ReachAt };
@@ -53,12 +54,16 @@ class Sweeper {
   Choice update(std::size_t cell, const ValueTable& values, Bound bound, std::uint32_t& action,
                 double switch_gain);
 
-  // The lower bound's robust value of `action` at `cell` (its fixed value if it has one).
-  double evaluate(std::size_t cell, const ValueTable& values, std::uint32_t action);
+  // The robust value of `action` at `cell` in `bound`'s game (its fixed value if it has one),
+  // rounded the way asked: each game rounds in its chooser's favour, and a check that values
+  // lie on the other side of a fixed point rounds the other way.
+  double action_value(std::size_t cell, const ValueTable& values, std::uint32_t action, Bound bound,
+                      Rounding rounding);
 
-  // The lower game's value at `cell` (best action, worst distribution) rounded up, not down:
-  // what checks that values lie above the lower game's fixed point.
-  double lower_game_ceiling(std::size_t cell, const ValueTable& values);
+  // The lower bound's robust value of `action` at `cell`, rounded down.
+  double evaluate(std::size_t cell, const ValueTable& values, std::uint32_t action) {
+    return action_value(cell, values, action, Bound::Lower, Rounding::Down);
+  }
 
  private:
   [[nodiscard]] bool safe(std::size_t cell, Bound bound) const {

@@ -26,6 +26,10 @@ struct SynthesisOptions {
   // Unbounded objectives: 2 or more iterate the lower and the upper bound on two threads.
   unsigned jobs = 1;
   std::uint64_t max_sweeps = 100'000;
+  // Unbounded objectives: guess the bounds by policy iteration (linear solves) before and
+  // beside the sweeps. Off, only the sweeps and their extrapolations guess (for tests and
+  // comparisons: the certificates are the same).
+  bool policy_iteration = true;
   // Called after each sweep with (sweep, the largest change of the lower bound, or the gap
   // for bounded objectives); may throw to stop.
   using Progress = std::function<void(std::uint64_t, double)>;
@@ -44,6 +48,7 @@ struct Synthesis {
   std::uint64_t sweeps = 0;             // of the lower bound (bounded: of both)
   std::uint64_t evaluation_sweeps = 0;  // unbounded: of the controller's own value, if needed
   std::uint64_t upper_sweeps = 0;       // unbounded: of the upper bound, verifications aside
+  std::uint64_t policy_rounds = 0;      // unbounded: linear solves of the lower bound's guess
   // Unbounded: how each bound was obtained (docs/guarantees.md, "Unbounded objectives").
   std::string lower_method;
   std::string upper_method;

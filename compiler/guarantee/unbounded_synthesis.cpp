@@ -4,12 +4,12 @@
 #include <atomic>
 #include <cmath>
 #include <cstdint>
-#include <limits>
+#include <optional>
 #include <string>
 #include <thread>
 #include <vector>
 
-#include "guarantee/end_components.hpp"
+#include "guarantee/certificates.hpp"
 #include "guarantee/robust_value.hpp"
 
 namespace oasis::guarantee {
@@ -22,13 +22,13 @@ constexpr double kSwitchGain = 1e-12;
 // A certificate is tried every this many sweeps, once the iteration's rate is known.
 constexpr std::uint64_t kCertifyEvery = 10;
 
-// A guess of the upper bound may be replaced by its images under the operator this many times
-// before it is given up.
-constexpr int kSmoothings = 3;
-
-// The lower bound's certificate is tried once the extrapolation it rests on reaches at most this
+// A certificate from an extrapolation is tried once the extrapolation reaches at most this
 // many times the precision past the iterate: earlier, the check would fail and only cost.
 constexpr double kExtrapolationReach = 100;
+
+// Policy iteration starts from the lower bound's iteration after this many sweeps, with the
+// controller they found; the upper bound's starts at once.
+constexpr std::uint64_t kPolicyStart = 5;
 
 // The rate is the geometric mean of the ratios of the last this many largest changes.
 constexpr std::size_t kRateWindow = 10;
@@ -105,13 +105,6 @@ class Trend {
   std::vector<double> moved_;
 };
 
-std::vector<std::uint8_t> undecided_cells(const Sweeper& sweeper, std::size_t count, Bound bound) {
-  std::vector<std::uint8_t> undecided(count);
-  for (std::size_t c = 0; c < count; ++c)
-    undecided[c] = sweeper.fixed(c, bound) < 0 ? 1 : 0;
-  return undecided;
-}
-
 // The upper bound, once it is known, for the lower bound's iteration to stop on a closed gap.
 struct PublishedBound {
   std::atomic<bool> ready{false};
@@ -121,11 +114,11 @@ struct PublishedBound {
 // The lower bound and its controller. The optimum is iterated from below with a controller
 // kept beside it; values never fall, and each is the robust value, under the cell's action,
 // of a table no higher than the final one, so the final table v is a post-fixed point of the
-// controller's operator (v <= B v). Extrapolations of the iteration are tried as well, each
-// kept only if one sweep proves it a post-fixed point (rounded down). When the controller has
-// no trap (end_components.hpp) that operator has a single fixed point, the controller's value
-// on the interval MDP, so every post-fixed point is below it: the certificate. With a trap,
-// the controller's value is computed from 0 instead, where every iterate is a bound.
+// controller's operator (v <= B v). After a few sweeps, policy iteration guesses the fixed
+// point; guesses (it, and extrapolations of the iteration) are kept only once proven
+// post-fixed (certificates.hpp). When the controller has no trap, every post-fixed point is
+// below what it attains: the certificate. With a trap, the controller's value is computed
+// from 0 instead, where every iterate is a bound.
 class LowerBound {
  public:
   LowerBound(const IntervalMdp& mdp, const ObjectiveCells& cells, SweepMode mode,
@@ -134,12 +127,11 @@ class LowerBound {
         options_(options),
         upper_(upper),
         sweeper_(mdp, cells, mode),
-        checker_(mdp, cells, mode),
-        undecided_(undecided_cells(sweeper_, mdp.grid.cells, Bound::Lower)),
+        checks_(mdp, cells, mode, Bound::Lower),
         policy_(mdp.grid.cells, 0) {}
 
   void solve(Synthesis& result) {
-    ValueTable table(mdp_.grid, sweeper_.fixed_or_zero(Bound::Lower));
+    ValueTable table(mdp_.grid, checks_.fixed_or_zero());
     std::vector<double> previous = table.values();
     Trend trend;
     result.stop_reason = "sweep limit";
@@ -159,8 +151,10 @@ class LowerBound {
           if (moved <= options_.stall) {
             result.stop_reason = "values stopped moving";
             stop = true;
+          } else if (sweep == kPolicyStart && options_.policy_iteration) {
+            stop = jump(table, sweep, result);
           } else if (sweep % kCertifyEvery == 0) {
-            stop = try_certificate(trend, sweep, result.stop_reason);
+            stop = try_extrapolation(trend, sweep, result.stop_reason);
           }
           previous = table.values();
           return stop;
@@ -170,8 +164,14 @@ class LowerBound {
       for (std::size_t c = 0; c < values.size(); ++c)
         values[c] = std::max(values[c], certified_[c]);
     }
-    const std::vector<std::uint8_t> trap = greatest_trap(mdp_, undecided_, policy_);
-    if (std::none_of(trap.begin(), trap.end(), [](std::uint8_t t) { return t != 0; })) {
+    finish(std::move(values), result);
+  }
+
+ private:
+  // The bound of a post-fixed point `values` of the controller's operator: itself when the
+  // controller has no trap, else the controller's own iteration from 0.
+  void finish(std::vector<double> values, Synthesis& result) {
+    if (checks_.trap_free(policy_)) {
       result.lower = std::move(values);
       result.lower_method = "certified: the controller has no trap";
     } else {
@@ -181,29 +181,57 @@ class LowerBound {
     result.controller.push_back(policy_);
   }
 
- private:
-  // Extrapolates the iteration to its limit and certifies a value a little below it as the
-  // controller's (post_fixed). Whether the iteration can stop: when the certified bound is
-  // within the gap of the upper bound (if known yet), or within the precision of a ceiling,
-  // a value a little above the limit proven above the lower game's fixed point (the best lower
-  // bound the abstraction admits), so that the iteration has nothing more to give.
-  bool try_certificate(const Trend& trend, std::uint64_t sweep, std::string& stop_reason) {
+  // Policy iteration from the iteration's values and controller. Whether it ends the
+  // iteration: when its guess is certified and tight. When it is only certified, the iteration
+  // goes on from it (a post-fixed point of the new controller's operator: the iteration's
+  // invariant holds again from there); else as it was.
+  bool jump(ValueTable& table, std::uint64_t sweep, Synthesis& result) {
+    const std::vector<std::uint32_t> kept = policy_;
+    const std::uint64_t kept_switches = switches_;
+    const std::optional<std::vector<double>> guess =
+        checks_.policy_iteration(table.values(), policy_, result.policy_rounds, switches_);
+    if (guess && certify_around(*guess, sweep, result.stop_reason)) {
+      table.set_all(certified_);
+      return true;
+    }
+    if (guess && !certified_.empty() && certified_switches_ == switches_) {
+      table.set_all(certified_);
+      return false;
+    }
+    policy_ = kept;
+    switches_ = kept_switches + 1;  // invalidates a certificate made with the other controller
+    return false;
+  }
+
+  // Extrapolates the iteration to its limit and tries it with certify_around().
+  bool try_extrapolation(const Trend& trend, std::uint64_t sweep, std::string& stop_reason) {
     if (trend.rate() <= 0) return false;
     const double steps = trend.steps_ahead();
     if (steps * trend.last_change() > kExtrapolationReach * options_.precision) return false;
+    return certify_around(trend.ahead(steps, 0, checks_.undecided()), sweep, stop_reason);
+  }
+
+  // Certifies a value a little below `estimate` as the controller's. Whether the iteration can
+  // stop: when the certified bound is within the gap of the upper bound (if known yet), or
+  // within the precision of a ceiling, a value a little above the estimate proven above the
+  // lower game's least fixed point (the best lower bound the abstraction admits), so that the
+  // iteration has nothing more to give.
+  bool certify_around(const std::vector<double>& estimate, std::uint64_t sweep,
+                      std::string& stop_reason) {
     const double lift = 0.1 * options_.precision;
-    std::vector<double> candidate = trend.ahead(steps, -lift, undecided_);
-    if (!post_fixed(candidate)) return false;
+    std::vector<double> candidate = shifted(estimate, -lift, checks_.undecided());
+    if (!checks_.post_fixed(candidate, policy_)) return false;
     certified_ = std::move(candidate);
     certified_switches_ = switches_;
     if (upper_.ready.load(std::memory_order_acquire) &&
-        spread(upper_.values, certified_) <= options_.gap) {
+        largest_difference(upper_.values, certified_) <= options_.gap) {
       stop_reason = "gap closed";
       return true;
     }
     if (sweep < next_ceiling_) return false;
-    std::vector<double> ceiling = trend.ahead(steps, lift, undecided_);
-    if (above_fixed_point(ceiling) && spread(ceiling, certified_) <= options_.precision) {
+    std::vector<double> ceiling = shifted(estimate, lift, checks_.undecided());
+    if (checks_.pre_fixed(ceiling) &&
+        largest_difference(ceiling, certified_) <= options_.precision) {
       stop_reason = "within the precision of the lower game's fixed point";
       return true;
     }
@@ -212,56 +240,13 @@ class LowerBound {
     return false;
   }
 
-  static double spread(const std::vector<double>& above, const std::vector<double>& below) {
-    double largest = 0;
-    for (std::size_t c = 0; c < above.size(); ++c)
-      largest = std::max(largest, above[c] - below[c]);
-    return largest;
-  }
-
-  // Whether candidate, or one of the next few values the controller's operator B takes from
-  // it, is a post-fixed point: candidate <= B(candidate), B rounded down, on every undecided
-  // cell. On success, `candidate` holds it.
-  bool post_fixed(std::vector<double>& candidate) {
-    std::vector<double> next(candidate.size());
-    for (int application = 0; application <= kSmoothings; ++application) {
-      const ValueTable table(mdp_.grid, candidate);
-      bool holds = true;
-      for (std::size_t c = 0; c < candidate.size(); ++c) {
-        next[c] = undecided_[c] != 0 ? checker_.evaluate(c, table, policy_[c]) : candidate[c];
-        if (next[c] < candidate[c]) holds = false;
-      }
-      if (holds) return true;
-      candidate.swap(next);
-    }
-    return false;
-  }
-
-  // Whether ceiling, or one of the next few values the lower game's operator B takes from it,
-  // is a pre-fixed point: B(ceiling) <= ceiling, B rounded up, on every undecided cell. It is
-  // then above the lower game's least fixed point (Knaster-Tarski), which is above every
-  // controller's value on the interval MDP.
-  bool above_fixed_point(std::vector<double>& ceiling) {
-    std::vector<double> next(ceiling.size());
-    for (int application = 0; application <= kSmoothings; ++application) {
-      const ValueTable table(mdp_.grid, ceiling);
-      bool holds = true;
-      for (std::size_t c = 0; c < ceiling.size(); ++c) {
-        next[c] = undecided_[c] != 0 ? checker_.lower_game_ceiling(c, table) : ceiling[c];
-        if (next[c] > ceiling[c]) holds = false;
-      }
-      if (holds) return true;
-      ceiling.swap(next);
-    }
-    return false;
-  }
-
   std::vector<double> evaluate_from_zero(std::uint64_t& sweeps) {
-    ValueTable table(mdp_.grid, checker_.fixed_or_zero(Bound::Lower));
+    ValueTable table(mdp_.grid, checks_.fixed_or_zero());
+    // evaluate() reads no action cache: the sweeper's, tied to the optimum's table, is unused.
     sweeps = iterate(
         table, options_.max_sweeps,
         [&](std::size_t c, const ValueTable& values) {
-          return checker_.evaluate(c, values, policy_[c]);
+          return sweeper_.evaluate(c, values, policy_[c]);
         },
         [&](std::uint64_t, double moved) { return moved <= options_.stall; });
     return table.release();
@@ -271,8 +256,7 @@ class LowerBound {
   const SynthesisOptions& options_;
   const PublishedBound& upper_;
   Sweeper sweeper_;
-  Sweeper checker_;  // its own scratch: the sweeper's action cache belongs to its table
-  std::vector<std::uint8_t> undecided_;
+  Certificates checks_;
   std::vector<std::uint32_t> policy_;
   std::uint64_t switches_ = 0;  // controller changes so far
   std::vector<double> certified_;
@@ -282,12 +266,14 @@ class LowerBound {
   std::uint64_t ceiling_wait_ = kCertifyEvery;
 };
 
-// The upper bound. The upper game's least fixed point is approached from below; a guess a
-// little above the iterate (extrapolated, then lifted) is a proven upper bound as soon as one
-// sweep shows it is a pre-fixed point (B u <= u, B rounded up): it then lies above the least
-// fixed point, which is at least the optimum of the true system (docs/guarantees.md). The
-// least of the verified guesses is kept (a minimum of pre-fixed points is one). If none
-// holds, the bound is iterated down from 1, where every iterate is a bound.
+// The upper bound: a pre-fixed point of the upper game's operator (certificates.hpp), above
+// its least fixed point, which is at least the optimum of the true system. Policy iteration
+// guesses it first, and a post-fixed point of a controller without a trap a little below the
+// guess proves it tight. Otherwise the least fixed point is approached from below, and guesses
+// a little above the iterate (extrapolated, then lifted) are tried as the values settle; the
+// least of the verified ones is kept (a minimum of pre-fixed points is one), and the iterate,
+// below the least fixed point, tells how tight it is. If none holds, the bound is iterated
+// down from 1, where every iterate is a bound.
 class UpperBound {
  public:
   UpperBound(const IntervalMdp& mdp, const ObjectiveCells& cells, SweepMode mode,
@@ -297,11 +283,14 @@ class UpperBound {
         mode_(mode),
         options_(options),
         sweeper_(mdp, cells, mode),
-        checker_(mdp, cells, mode),
-        undecided_(undecided_cells(sweeper_, mdp.grid.cells, Bound::Upper)) {}
+        checks_(mdp, cells, mode, Bound::Upper) {}
 
   std::vector<double> solve() {
-    ValueTable table(mdp_.grid, sweeper_.fixed_or_zero(Bound::Upper));
+    if (options_.policy_iteration && from_policy_iteration()) {
+      method = "policy iteration, verified and proven tight";
+      return best_;
+    }
+    ValueTable table(mdp_.grid, checks_.fixed_or_zero());
     std::vector<double> previous = table.values();
     std::vector<std::uint32_t> choice(mdp_.grid.cells, 0);  // tried first: the last best
     Trend trend;
@@ -331,12 +320,30 @@ class UpperBound {
   }
 
   std::uint64_t sweeps = 0;
+  std::uint64_t policy_rounds = 0;
   std::string method;
   // Set from another thread to stop solve() (it then throws Abandoned).
   std::atomic<bool> abandon{false};
   struct Abandoned {};
 
  private:
+  // Whether policy iteration gave a verified upper bound (kept) proven within the precision
+  // of the least fixed point.
+  bool from_policy_iteration() {
+    std::vector<std::uint32_t> policy(mdp_.grid.cells, 0);
+    std::uint64_t switches = 0;
+    const std::optional<std::vector<double>> guess =
+        checks_.policy_iteration(checks_.fixed_or_zero(), policy, policy_rounds, switches);
+    if (!guess || abandon.load()) return false;
+    const double lift = 0.1 * options_.precision;
+    std::vector<double> above = shifted(*guess, lift, checks_.undecided());
+    if (!checks_.pre_fixed(above)) return false;
+    keep(std::move(above));
+    std::vector<double> below = shifted(*guess, -lift, checks_.undecided());
+    return checks_.post_fixed(below, policy) && checks_.trap_free(policy) &&
+           largest_difference(best_, below) <= options_.precision;
+  }
+
   // Once a verified guess would be within the precision of the iterate (so above the least
   // fixed point, which the iterate approaches from below, by at most that), tries guesses past
   // the iteration's limit, tightest first. Whether one held: the upper bound is then that
@@ -353,43 +360,24 @@ class UpperBound {
   }
 
   bool try_guess(const Trend& trend, double factor, double lift) {
-    std::vector<double> guess = trend.ahead(factor, lift, undecided_);
-    if (!pre_fixed(guess)) return false;
-    if (best_.empty()) {
-      best_ = std::move(guess);
-    } else {
-      for (std::size_t c = 0; c < guess.size(); ++c)
-        best_[c] = std::min(best_[c], guess[c]);
-    }
+    std::vector<double> guess = trend.ahead(factor, lift, checks_.undecided());
+    if (!checks_.pre_fixed(guess)) return false;
+    keep(std::move(guess));
     return true;
   }
 
-  // Whether guess, or one of the next few values the upper game's operator B takes from it,
-  // is a pre-fixed point: B(u) <= u over every action, B rounded up, on every undecided cell.
-  // A guess just above the least fixed point can fall a little short of it on a few cells;
-  // one application of B evens that out where the rest of the guess is above. On success,
-  // `guess` holds the pre-fixed point.
-  bool pre_fixed(std::vector<double>& guess) {
-    std::vector<double> next(guess.size());
-    for (int application = 0; application <= kSmoothings; ++application) {
-      const ValueTable table(mdp_.grid, guess);
-      bool holds = true;
-      for (std::size_t c = 0; c < guess.size(); ++c) {
-        std::uint32_t ignored = 0;
-        next[c] =
-            undecided_[c] != 0 ? checker_.best_action(c, table, Bound::Upper, ignored) : guess[c];
-        if (next[c] > guess[c]) holds = false;
-      }
-      if (holds) return true;
-      guess.swap(next);
+  // Keeps the least of the verified guesses.
+  void keep(std::vector<double> guess) {
+    if (best_.empty()) {
+      best_ = std::move(guess);
+      return;
     }
-    return false;
+    for (std::size_t c = 0; c < guess.size(); ++c)
+      best_[c] = std::min(best_[c], guess[c]);
   }
 
   std::vector<double> from_above() {
-    std::vector<double> start(mdp_.grid.cells);
-    for (std::size_t c = 0; c < start.size(); ++c)
-      start[c] = undecided_[c] != 0 ? 1 : sweeper_.fixed(c, Bound::Upper);
+    std::vector<double> start = shifted(checks_.fixed_or_zero(), 1, checks_.undecided());
     Sweeper sweeper(mdp_, cells_, mode_);  // a fresh action cache for a fresh table
     ValueTable table(mdp_.grid, start);
     std::vector<std::uint32_t> choice(start.size(), 0);
@@ -411,8 +399,7 @@ class UpperBound {
   SweepMode mode_;
   const SynthesisOptions& options_;
   Sweeper sweeper_;
-  Sweeper checker_;
-  std::vector<std::uint8_t> undecided_;
+  Certificates checks_;
   std::vector<double> best_;
 };
 
@@ -449,6 +436,7 @@ Synthesis synthesise_unbounded(const IntervalMdp& mdp, const ObjectiveCells& cel
     LowerBound(mdp, cells, mode, options, published).solve(result);
   }
   result.upper_sweeps = upper.sweeps;
+  result.policy_rounds += upper.policy_rounds;
   result.upper_method = upper.method;
   result.upper = std::move(published.values);
   result.largest_gap = largest_gap(result.lower, result.upper);

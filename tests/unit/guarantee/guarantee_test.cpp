@@ -203,6 +203,37 @@ TEST(RobustValue, MatchesVertexEnumeration) {
   }
 }
 
+TEST(RobustValue, TheChosenDistributionHasTheRobustValue) {
+  const Abstraction a = abstraction("objective reach goal steps 3;");
+  std::mt19937_64 random(5);
+  std::uniform_real_distribution<double> unit(0, 1);
+  RobustScratch scratch;
+  ChosenRow chosen;
+  for (int trial = 0; trial < 10; ++trial) {
+    std::vector<double> values(a.mdp.grid.cells);
+    for (double& v : values)
+      v = unit(random);
+    const ValueTable table(a.mdp.grid, values);
+    for (const RobustGame game : {RobustGame{false, 0, 0}, RobustGame{true, 1, 1}}) {
+      for (std::size_t cell = 0; cell < a.mdp.grid.cells; ++cell) {
+        for (std::size_t action = 0; action < a.mdp.actions.size(); ++action) {
+          const AxisSlice* row = a.mdp.row(cell, action);
+          robust_choice(a.mdp, row, table, game, scratch, chosen);
+          double expectation = chosen.constant;
+          double mass = 0;
+          for (std::size_t k = 0; k < chosen.cells.size(); ++k) {
+            expectation += chosen.probabilities[k] * values[chosen.cells[k]];
+            mass += chosen.probabilities[k];
+          }
+          EXPECT_NEAR(expectation, robust_value(a.mdp, row, table, game, scratch), 1e-12)
+              << "cell " << cell << " action " << action;
+          EXPECT_LE(mass, 1 + 1e-12);
+        }
+      }
+    }
+  }
+}
+
 // Backward induction or value iteration with the brute-force robust values.
 struct BruteBounds {
   std::vector<double> lower;
@@ -309,29 +340,44 @@ std::vector<double> brute_controller_value(const Abstraction& a,
   return v;
 }
 
+// Both ways of guessing the unbounded bounds: policy iteration, or the sweeps alone.
+SynthesisOptions unbounded_options(bool policy_iteration) {
+  SynthesisOptions options;
+  options.policy_iteration = policy_iteration;
+  return options;
+}
+
 TEST(Synthesis, TheUnboundedLowerBoundIsWhatTheControllerAttains) {
   const Abstraction a = abstraction("objective reach goal while keep;");
-  const Synthesis s = synthesise(a.mdp, *a.ir.guarantee, a.cells, SynthesisOptions{});
-  // The certificate, not an evaluation, gave the bound: that is the path checked here.
-  EXPECT_EQ(s.lower_method, "certified: the controller has no trap");
-  EXPECT_EQ(s.evaluation_sweeps, 0u);
-  // 600 steps leave nothing measurable of this small model's unbounded value.
-  const std::vector<double> attained = brute_controller_value(a, s.controller[0], 600);
-  for (std::size_t c = 0; c < a.mdp.grid.cells; ++c) {
-    EXPECT_LE(s.lower[c], attained[c] + 1e-12) << "cell " << c;
-    EXPECT_GE(s.lower[c], attained[c] - 1e-6) << "cell " << c;
+  for (const bool policy_iteration : {true, false}) {
+    const Synthesis s =
+        synthesise(a.mdp, *a.ir.guarantee, a.cells, unbounded_options(policy_iteration));
+    // The certificate, not an evaluation, gave the bound: that is the path checked here.
+    EXPECT_EQ(s.lower_method, "certified: the controller has no trap");
+    EXPECT_EQ(s.evaluation_sweeps, 0u);
+    EXPECT_EQ(s.policy_rounds > 0, policy_iteration);
+    // 600 steps leave nothing measurable of this small model's unbounded value.
+    const std::vector<double> attained = brute_controller_value(a, s.controller[0], 600);
+    for (std::size_t c = 0; c < a.mdp.grid.cells; ++c) {
+      EXPECT_LE(s.lower[c], attained[c] + 1e-12) << "cell " << c;
+      EXPECT_GE(s.lower[c], attained[c] - 1e-6) << "cell " << c;
+    }
   }
 }
 
 TEST(Synthesis, TheUnboundedUpperBoundIsVerifiedAndTight) {
   const Abstraction a = abstraction("objective reach goal while keep;");
-  const Synthesis s = synthesise(a.mdp, *a.ir.guarantee, a.cells, SynthesisOptions{});
-  EXPECT_EQ(s.upper_method, "a guess from below, verified");
   // The upper game's least fixed point, from below, long enough to have converged.
   const BruteBounds below = brute_bounds(a, 600, true, false);
-  for (std::size_t c = 0; c < a.mdp.grid.cells; ++c) {
-    EXPECT_GE(s.upper[c], below.upper[c] - 1e-12) << "cell " << c;
-    EXPECT_LE(s.upper[c], below.upper[c] + 2e-6) << "cell " << c;
+  for (const bool policy_iteration : {true, false}) {
+    const Synthesis s =
+        synthesise(a.mdp, *a.ir.guarantee, a.cells, unbounded_options(policy_iteration));
+    EXPECT_EQ(s.upper_method, policy_iteration ? "policy iteration, verified and proven tight"
+                                               : "a guess from below, verified");
+    for (std::size_t c = 0; c < a.mdp.grid.cells; ++c) {
+      EXPECT_GE(s.upper[c], below.upper[c] - 1e-12) << "cell " << c;
+      EXPECT_LE(s.upper[c], below.upper[c] + 2e-6) << "cell " << c;
+    }
   }
 }
 

@@ -1,0 +1,144 @@
+#include "guarantee/certificates.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "guarantee/chain_solver.hpp"
+#include "guarantee/end_components.hpp"
+
+namespace oasis::guarantee {
+namespace {
+
+// A guess may be replaced by its images under the operator this many times before it is
+// given up.
+constexpr int kSmoothings = 3;
+
+// A controller switches only to an action better by more than this: rounding noise must not
+// make it move between actions of equal value.
+constexpr double kSwitchGain = 1e-12;
+
+// Policy iteration stops after this many solves, once the controller stays, or once no value
+// moves by more than kPolicySettled in a solve: far below the certificates' lift. Noisy models
+// settle in about five; a deterministic one can take a round per step of its longest path,
+// each round costing a sweep over every action, and is better left to the sweeps.
+constexpr std::uint64_t kPolicyRounds = 8;
+constexpr double kPolicySettled = 1e-9;
+
+}  // namespace
+
+Certificates::Certificates(const IntervalMdp& mdp, const ObjectiveCells& cells, SweepMode mode,
+                           Bound bound)
+    : mdp_(mdp), bound_(bound), sweeper_(mdp, cells, mode), undecided_(mdp.grid.cells) {
+  for (std::size_t c = 0; c < undecided_.size(); ++c)
+    undecided_[c] = sweeper_.fixed(c, bound) < 0 ? 1 : 0;
+}
+
+std::vector<double> Certificates::fixed_or_zero() const {
+  return sweeper_.fixed_or_zero(bound_);
+}
+
+bool Certificates::post_fixed(std::vector<double>& candidate,
+                              const std::vector<std::uint32_t>& policy) {
+  std::vector<double> next(candidate.size());
+  for (int application = 0; application <= kSmoothings; ++application) {
+    const ValueTable table(mdp_.grid, candidate);
+    bool holds = true;
+    for (std::size_t c = 0; c < candidate.size(); ++c) {
+      next[c] = undecided_[c] != 0
+                    ? sweeper_.action_value(c, table, policy[c], bound_, Rounding::Down)
+                    : candidate[c];
+      if (next[c] < candidate[c]) holds = false;
+    }
+    if (holds) return true;
+    candidate.swap(next);
+  }
+  return false;
+}
+
+bool Certificates::pre_fixed(std::vector<double>& guess) {
+  std::vector<double> next(guess.size());
+  for (int application = 0; application <= kSmoothings; ++application) {
+    const ValueTable table(mdp_.grid, guess);
+    bool holds = true;
+    for (std::size_t c = 0; c < guess.size(); ++c) {
+      if (undecided_[c] == 0) {
+        next[c] = guess[c];
+        continue;
+      }
+      double best = 0;
+      for (std::uint32_t a = 0; a < mdp_.actions.size(); ++a)
+        best = std::max(best, sweeper_.action_value(c, table, a, bound_, Rounding::Up));
+      next[c] = best;
+      if (next[c] > guess[c]) holds = false;
+    }
+    if (holds) return true;
+    guess.swap(next);
+  }
+  return false;
+}
+
+bool Certificates::trap_free(const std::vector<std::uint32_t>& policy) const {
+  const std::vector<std::uint8_t> trap = greatest_trap(mdp_, undecided_, policy);
+  return std::none_of(trap.begin(), trap.end(), [](std::uint8_t t) { return t != 0; });
+}
+
+std::optional<std::vector<double>> Certificates::policy_iteration(
+    std::vector<double> values, std::vector<std::uint32_t>& policy, std::uint64_t& rounds,
+    std::uint64_t& switches) {
+  std::vector<ChosenRow> rows(values.size());
+  const RobustGame game = sweeper_.game(bound_);
+  RobustScratch scratch;
+  for (std::uint64_t round = 1; round <= kPolicyRounds; ++round) {
+    ++rounds;
+    const ValueTable table(mdp_.grid, values);
+    bool switched = false;
+    for (std::size_t c = 0; c < values.size(); ++c) {
+      if (undecided_[c] == 0) continue;
+      const auto value_of = [&](std::uint32_t a) {
+        return sweeper_.action_value(c, table, a, bound_,
+                                     bound_ == Bound::Lower ? Rounding::Down : Rounding::Up);
+      };
+      const double kept = value_of(policy[c]);
+      double best = kept;
+      std::uint32_t best_action = policy[c];
+      for (std::uint32_t a = 0; a < mdp_.actions.size(); ++a) {
+        if (a == policy[c]) continue;
+        const double q = value_of(a);
+        if (q > best) {
+          best = q;
+          best_action = a;
+        }
+      }
+      if (best > kept + kSwitchGain) {
+        policy[c] = best_action;
+        switched = true;
+        ++switches;
+      }
+      robust_choice(mdp_, mdp_.row(c, policy[c]), table, game, scratch, rows[c]);
+    }
+    std::optional<std::vector<double>> solved = solve_chain(rows, undecided_, values);
+    if (!solved) return std::nullopt;
+    const double moved =
+        std::max(largest_difference(*solved, values), largest_difference(values, *solved));
+    values = std::move(*solved);
+    // Switches that move no value by more than this gain too little to pay another solve.
+    if (!switched || moved <= kPolicySettled) break;
+  }
+  return values;
+}
+
+std::vector<double> shifted(std::vector<double> values, double lift,
+                            const std::vector<std::uint8_t>& undecided) {
+  for (std::size_t c = 0; c < values.size(); ++c)
+    if (undecided[c] != 0) values[c] = std::clamp(values[c] + lift, 0.0, 1.0);
+  return values;
+}
+
+double largest_difference(const std::vector<double>& above, const std::vector<double>& below) {
+  double largest = 0;
+  for (std::size_t c = 0; c < above.size(); ++c)
+    largest = std::max(largest, above[c] - below[c]);
+  return largest;
+}
+
+}  // namespace oasis::guarantee
