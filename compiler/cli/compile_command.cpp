@@ -101,9 +101,11 @@ void print_objective_summary(const model::ModelIR& ir, const pipeline::Guarantee
                              std::FILE* stream) {
   const guarantee::Synthesis& s = result.synthesis;
   const std::size_t cells = result.grid.cells;
-  std::fprintf(stream, "objective: %zu cells x %zu actions, %llu interval entries (%.2f s)\n",
+  std::fprintf(stream,
+               "objective: %zu cells x %zu actions, %llu interval entries, %llu distinct rows "
+               "(%.2f s)\n",
                cells, result.actions.size(), static_cast<unsigned long long>(result.entries),
-               result.abstraction_seconds);
+               static_cast<unsigned long long>(result.distinct_rows), result.abstraction_seconds);
   const std::string sweeps = std::to_string(s.sweeps + s.evaluation_sweeps);
   std::fprintf(stream,
                "  bounds: lower mean %.6f, upper mean %.6f, largest gap %.3g; %s after %s "

@@ -90,6 +90,8 @@ void write_summary(JsonWriter& out, const pipeline::GuaranteeResult& result) {
   out.value(static_cast<std::uint64_t>(result.actions.size()));
   out.key("interval_entries");
   out.value(result.entries);
+  out.key("distinct_rows");
+  out.value(result.distinct_rows);
   out.key("sweeps");
   out.value(s.sweeps);
   out.key("evaluation_sweeps");

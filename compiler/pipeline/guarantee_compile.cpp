@@ -4,6 +4,7 @@
 #include <cstdio>
 
 #include "guarantee/objective_cells.hpp"
+#include "guarantee/row_classes.hpp"
 #include "support/text.hpp"
 
 namespace oasis::pipeline {
@@ -42,6 +43,7 @@ GuaranteeResult compile_guarantee(const model::ModelIR& ir, const GuaranteeOptio
   result.abstraction_seconds = seconds_since(start);
   result.entries = mdp.entries();
   result.bytes = mdp.bytes();
+  result.distinct_rows = guarantee::distinct_rows(mdp);
   if (options.progress) {
     options.progress(format("abstraction: %.0f cells x %.0f actions (%.2f s)",
                             static_cast<double>(mdp.grid.cells),

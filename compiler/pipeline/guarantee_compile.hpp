@@ -30,6 +30,8 @@ struct GuaranteeResult {
   guarantee::Synthesis synthesis;
   std::uint64_t entries = 0;  // interval entries of the abstraction's factored rows
   std::uint64_t bytes = 0;    // what the rows took
+  // Classes of cells with equal rows for every action (guarantee/row_classes.hpp).
+  std::uint64_t distinct_rows = 0;
   double abstraction_seconds = 0;
   double synthesis_seconds = 0;
 };

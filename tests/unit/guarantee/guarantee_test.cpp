@@ -18,6 +18,7 @@
 #include "guarantee/interval_mdp.hpp"
 #include "guarantee/objective_cells.hpp"
 #include "guarantee/robust_value.hpp"
+#include "guarantee/row_classes.hpp"
 #include "guarantee/synthesis.hpp"
 
 namespace oasis::guarantee {
@@ -459,6 +460,26 @@ TEST(Synthesis, NonlinearMapsGiveOrderedBoundsAndTargetsAreCertain) {
     }
   }
   EXPECT_EQ(targets, 1u);  // [-1, 0] x [-2, -1] is exactly one cell of the 1-wide grid
+}
+
+TEST(RowClasses, CellsAMapCannotTellApartHaveEqualRows) {
+  // The test model's maps read both coordinates: every row differs.
+  const Abstraction mixed = abstraction("objective reach goal steps 3;");
+  EXPECT_EQ(distinct_rows(mixed.mdp), mixed.mdp.grid.cells);
+  // Here the successor depends on y alone: the 4 cells of each y row share their rows.
+  const model::ModelIR ir = test::check_spec_text_ir(
+      "mdp t {\n"
+      "  continuous x : [0 .. 4];\n"
+      "  continuous y : [0 .. 4];\n"
+      "  actions go;\n"
+      "  disturbance x ~ gaussian(0, 0.3);\n"
+      "  disturbance y ~ gaussian(0, 0.3);\n"
+      "  dynamics [go] { x' = 0.5 * y + 1; y' = 0.5 * y + 1; }\n"
+      "  region goal = x >= 3;\n"
+      "  objective reach goal steps 2;\n"
+      "  grid x : 4, y : 5;\n"
+      "}\n");
+  EXPECT_EQ(distinct_rows(build_interval_mdp(ir, BuildOptions{})), 5u);
 }
 
 TEST(IntervalMdp, ABudgetTooSmallForTheRowsIsRefusedBeforeBuilding) {
