@@ -200,12 +200,8 @@ int run_compile(CompileOptions options) {
     }
     options.formats = {"json"};
   }
-  if (options.formats.empty()) {
-    options.formats = continuous ? std::vector<std::string>{"bin", "json", "svg"}
-                                 : std::vector<std::string>{"bin", "json", "dot"};
-  }
-  const char* refused = continuous ? (wants(options, "dot") ? "dot" : nullptr)
-                                   : (wants(options, "svg") ? "svg" : nullptr);
+  if (options.formats.empty()) options.formats = codegen::default_catalog_formats(continuous);
+  const char* refused = codegen::unfitting_drawing(options, continuous);
   if (refused != nullptr) {
     report_error(options.spec,
                  std::string("--format ") + refused + " draws " +

@@ -22,6 +22,16 @@ bool wants(const CatalogFileOptions& options, const char* format) {
   return std::find(options.formats.begin(), options.formats.end(), format) != options.formats.end();
 }
 
+std::vector<std::string> default_catalog_formats(bool continuous) {
+  return continuous ? std::vector<std::string>{"bin", "json", "svg"}
+                    : std::vector<std::string>{"bin", "json", "dot"};
+}
+
+const char* unfitting_drawing(const CatalogFileOptions& options, bool continuous) {
+  if (continuous) return wants(options, "dot") ? "dot" : nullptr;
+  return wants(options, "svg") ? "svg" : nullptr;
+}
+
 // Why `-o -` cannot take this compile's files, or "" when they are one file: standard output
 // holds one file, and a second one would follow half a catalog already written.
 std::string one_file_error(const CatalogFileOptions& options, std::size_t contexts) {

@@ -27,6 +27,13 @@ struct CatalogFileOptions {
 
 bool wants(const CatalogFileOptions& options, const char* format);
 
+// The formats a catalog compile writes when none are asked for: bin, json and the drawing that
+// fits the model (dot for explicit quotients, svg for continuous abstractions).
+std::vector<std::string> default_catalog_formats(bool continuous);
+// The drawing asked for that does not fit the model ("svg" for a discrete one, "dot" for a
+// continuous one), or nullptr.
+const char* unfitting_drawing(const CatalogFileOptions& options, bool continuous);
+
 // The files of one compile, written into the staging directory, named relative to it, or
 // the one file of a compile to standard output (an empty directory).
 class OutputSet {

@@ -9,9 +9,8 @@
 #include "text/printable_text.hpp"
 
 namespace oasis {
-namespace {
 
-std::string_view label(Severity severity) {
+std::string_view severity_label(Severity severity) {
   switch (severity) {
     case Severity::Error:
       return "error";
@@ -22,6 +21,8 @@ std::string_view label(Severity severity) {
   }
   return "error";
 }
+
+namespace {
 
 // Byte offset of the code point that starts at `column` (1-based) within `line`.
 std::size_t byte_of_column(std::string_view line, std::uint32_t column) {
@@ -73,8 +74,8 @@ void DiagnosticEngine::emit(Severity severity, SourceRange where, std::string_vi
   count(severity);
   const SourceFile& file = sources_.file(where.begin.file);
   const LineColumn position = file.line_column(where.begin.offset);
-  out_ << file.path() << ':' << position.line << ':' << position.column << ": " << label(severity)
-       << ": " << text::printable_message(message) << '\n';
+  out_ << file.path() << ':' << position.line << ':' << position.column << ": "
+       << severity_label(severity) << ": " << text::printable_message(message) << '\n';
   if (listener_) {
     listener_(
         {severity, file.path(), position.line, position.column, text::printable_message(message)});

@@ -23,6 +23,9 @@ namespace oasis {
 
 enum class Severity { Error, Warning, Note };
 
+// "error", "warning" or "note": the word a diagnostic is printed with.
+std::string_view severity_label(Severity severity);
+
 // A located span: the caret goes under `begin`, tildes under the rest of the span.
 struct SourceRange {
   SourceLocation begin;

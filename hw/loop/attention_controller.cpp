@@ -61,24 +61,6 @@ void domain_of(const rt::CatalogView& catalog, std::vector<double>& low,
 
 }  // namespace
 
-std::string status_name(rt::StepStatus status) {
-  switch (status) {
-    case rt::StepStatus::kOk:
-      return "ok";
-    case rt::StepStatus::kZeroLikelihood:
-      return "zero_likelihood";
-    case rt::StepStatus::kBadState:
-      return "bad_state";
-    case rt::StepStatus::kBadAction:
-      return "bad_action";
-    case rt::StepStatus::kNotReady:
-      return "not_ready";
-    case rt::StepStatus::kMissingObservation:
-      return "missing_observation";
-  }
-  return "unknown";
-}
-
 AttentionController::AttentionController(const rt::CatalogView& catalog,
                                          ControllerSettings settings)
     : catalog_(checked(catalog, settings)),
@@ -161,7 +143,7 @@ log::StepRecord AttentionController::decide(const PerceptionResult& seen, double
   record.belief.assign(filter_.beliefs(), filter_.beliefs() + catalog_.num_abstractions);
   record.abstraction = filter_.ml_abstraction();
   record.abstraction_name = catalog_.abstractions[record.abstraction].context;
-  record.filter_status = status_name(status);
+  record.filter_status = rt::step_status_name(status);
 
   // No enabled action in the block (never for the shipped spec, whose every action is enabled
   // everywhere): stand still and say so, rather than guess.

@@ -85,7 +85,4 @@ class AttentionController final : public LoopController {
   std::uint32_t last_action_ = 0;
 };
 
-// The words the log uses for a filter status.
-std::string status_name(rt::StepStatus status);
-
 }  // namespace oasis::hw::loop

@@ -41,17 +41,15 @@ struct Compiled {
 
 // The formats oasisc compile writes by default, and its refusals of the others.
 void choose_formats(CompileRequest& request, bool continuous) {
-  if (request.files.formats.empty()) {
-    request.files.formats = continuous ? std::vector<std::string>{"bin", "json", "svg"}
-                                       : std::vector<std::string>{"bin", "json", "dot"};
-  }
+  if (request.files.formats.empty())
+    request.files.formats = codegen::default_catalog_formats(continuous);
   for (const std::string& format : request.files.formats) {
     if (format != "bin" && format != "json" && format != "dot" && format != "svg" &&
         format != "cpp")
       throw Failure(ErrorKind::kCompile,
                     "unknown format '" + format + "' (bin, json, dot, svg, cpp)");
   }
-  if (continuous ? codegen::wants(request.files, "dot") : codegen::wants(request.files, "svg")) {
+  if (codegen::unfitting_drawing(request.files, continuous) != nullptr) {
     throw Failure(ErrorKind::kCompile, continuous ? "dot draws explicit quotients; use svg"
                                                   : "svg draws continuous abstractions; use dot");
   }

@@ -25,18 +25,6 @@ const char* class_name(ErrorKind kind) {
   return "Error";
 }
 
-const char* severity_name(Severity severity) {
-  switch (severity) {
-    case Severity::Error:
-      return "error";
-    case Severity::Warning:
-      return "warning";
-    case Severity::Note:
-      return "note";
-  }
-  return "error";
-}
-
 // Sets the Python exception for `failure`. Runs inside pybind11's translator, which must not
 // throw: if the package's classes cannot be reached, a RuntimeError says what failed.
 void raise(const Failure& failure) {
@@ -46,7 +34,7 @@ void raise(const Failure& failure) {
     py::list records;
     for (const DiagnosticRecord& record : failure.diagnostics()) {
       records.append(diagnostic(record.file, record.line, record.column,
-                                severity_name(record.severity), record.message));
+                                std::string(severity_label(record.severity)), record.message));
     }
     const py::object type = errors.attr(class_name(failure.kind()));
     const py::object instance = type(failure.what(), records);

@@ -23,24 +23,6 @@ namespace py = pybind11;
 
 namespace {
 
-const char* status_name(rt::StepStatus status) {
-  switch (status) {
-    case rt::StepStatus::kOk:
-      return "ok";
-    case rt::StepStatus::kZeroLikelihood:
-      return "zero_likelihood";
-    case rt::StepStatus::kBadState:
-      return "bad_state";
-    case rt::StepStatus::kBadAction:
-      return "bad_action";
-    case rt::StepStatus::kNotReady:
-      return "not_ready";
-    case rt::StepStatus::kMissingObservation:
-      return "missing_observation";
-  }
-  return "unknown";
-}
-
 std::string construction_error(rt::FilterError error, const std::string& mode) {
   switch (error) {
     case rt::FilterError::kNone:
@@ -157,7 +139,7 @@ class FilterObject {
     if (!hedged_) return std::nullopt;
     return hedged_->robust_weight();
   }
-  [[nodiscard]] const char* status() const { return status_name(status_); }
+  [[nodiscard]] const char* status() const { return rt::step_status_name(status_); }
   [[nodiscard]] const std::string& mode() const { return mode_; }
 
  private:

@@ -134,6 +134,26 @@ enum class StepStatus : std::uint32_t {
   kMissingObservation = 5,
 };
 
+/// The status's name in logs and bindings: "ok", "zero_likelihood", "bad_state", "bad_action",
+/// "not_ready", "missing_observation".
+inline const char* step_status_name(StepStatus status) {
+  switch (status) {
+    case StepStatus::kOk:
+      return "ok";
+    case StepStatus::kZeroLikelihood:
+      return "zero_likelihood";
+    case StepStatus::kBadState:
+      return "bad_state";
+    case StepStatus::kBadAction:
+      return "bad_action";
+    case StepStatus::kNotReady:
+      return "not_ready";
+    case StepStatus::kMissingObservation:
+      return "missing_observation";
+  }
+  return "unknown";
+}
+
 /// Why construction failed.
 enum class FilterError : std::uint32_t {
   kNone = 0,
