@@ -85,12 +85,13 @@ bool Certificates::trap_free(const std::vector<std::uint32_t>& policy) const {
 std::optional<std::vector<double>> Certificates::policy_iteration(
     std::vector<double> values, std::vector<std::uint32_t>& policy, std::uint64_t& rounds,
     std::uint64_t& switches) {
-  std::vector<ChosenRow> rows(values.size());
+  ChosenRow row;
   const RobustGame game = sweeper_.game(bound_);
   RobustScratch scratch;
   for (std::uint64_t round = 1; round <= kPolicyRounds; ++round) {
     ++rounds;
     const ValueTable table(mdp_.grid, values);
+    ChainSolver chain(undecided_, values);
     bool switched = false;
     for (std::size_t c = 0; c < values.size(); ++c) {
       if (undecided_[c] == 0) continue;
@@ -114,9 +115,10 @@ std::optional<std::vector<double>> Certificates::policy_iteration(
         switched = true;
         ++switches;
       }
-      robust_choice(mdp_, mdp_.row(c, policy[c]), table, game, scratch, rows[c]);
+      robust_choice(mdp_, mdp_.row(c, policy[c]), table, game, scratch, row);
+      chain.add_row(c, row);
     }
-    std::optional<std::vector<double>> solved = solve_chain(rows, undecided_, values);
+    std::optional<std::vector<double>> solved = chain.solve();
     if (!solved) return std::nullopt;
     const double moved =
         std::max(largest_difference(*solved, values), largest_difference(values, *solved));

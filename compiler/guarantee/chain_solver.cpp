@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cstddef>
+#include <limits>
+#include <stdexcept>
 
 #include <Eigen/IterativeLinearSolvers>
 #include <Eigen/SparseCore>
@@ -13,47 +15,77 @@ namespace {
 constexpr double kTolerance = 1e-13;
 constexpr int kMaxIterations = 2000;
 
-using Matrix = Eigen::SparseMatrix<double, Eigen::RowMajor>;
+// Entries of the guess's rows taken at their target's current value instead of as unknowns:
+// the Gaussian tails' products make most entries, and these barely move the solution.
+constexpr double kNegligible = 1e-8;
+
+using Matrix = Eigen::SparseMatrix<double, Eigen::RowMajor, std::int32_t>;
 
 }  // namespace
 
-std::optional<std::vector<double>> solve_chain(const std::vector<ChosenRow>& rows,
-                                               const std::vector<std::uint8_t>& undecided,
-                                               const std::vector<double>& values) {
-  const std::size_t cells = undecided.size();
-  std::vector<std::ptrdiff_t> unknown(cells, -1);
-  std::ptrdiff_t count = 0;
-  for (std::size_t c = 0; c < cells; ++c)
-    if (undecided[c] != 0) unknown[c] = count++;
-  std::vector<Eigen::Triplet<double>> entries;
-  Eigen::VectorXd b = Eigen::VectorXd::Zero(count);
-  for (std::size_t c = 0; c < cells; ++c) {
-    if (unknown[c] < 0) continue;
-    const std::ptrdiff_t row = unknown[c];
-    entries.emplace_back(row, row, 1.0);
-    b[row] = rows[c].constant;
-    for (std::size_t k = 0; k < rows[c].cells.size(); ++k) {
-      const std::uint32_t target = rows[c].cells[k];
-      const double p = rows[c].probabilities[k];
-      if (unknown[target] >= 0) {
-        entries.emplace_back(row, unknown[target], -p);
-      } else {
-        b[row] += p * values[target];
-      }
+ChainSolver::ChainSolver(const std::vector<std::uint8_t>& undecided,
+                         const std::vector<double>& values)
+    : undecided_(undecided), values_(values), unknown_(undecided.size(), -1) {
+  std::int32_t count = 0;
+  for (std::size_t c = 0; c < undecided.size(); ++c) {
+    if (undecided[c] == 0) continue;
+    if (count == std::numeric_limits<std::int32_t>::max())
+      throw std::length_error("too many cells for the chain solver");
+    unknown_[c] = count++;
+  }
+  row_starts_.reserve(static_cast<std::size_t>(count) + 1);
+  row_starts_.push_back(0);
+  b_.reserve(static_cast<std::size_t>(count));
+}
+
+void ChainSolver::add_row(std::size_t cell, const ChosenRow& row) {
+  const std::int32_t self = unknown_[cell];
+  double constant = row.constant;
+  double diagonal = 1;
+  bool diagonal_placed = false;
+  const auto place_diagonal = [&] {
+    columns_.push_back(self);
+    entries_.push_back(diagonal);
+    diagonal_placed = true;
+  };
+  for (std::size_t k = 0; k < row.cells.size(); ++k) {
+    const double p = row.probabilities[k];
+    const std::int32_t column = unknown_[row.cells[k]];
+    if (column < 0 || (p < kNegligible && column != self)) {
+      // A decided cell's fixed value; for a negligible entry, its target's current value,
+      // which keeps the row's mass where dropping it would bias every value low.
+      constant += p * values_[row.cells[k]];
+    } else if (column == self) {
+      diagonal -= p;
+    } else {
+      if (column > self && !diagonal_placed) place_diagonal();
+      columns_.push_back(column);
+      entries_.push_back(-p);
     }
   }
-  Matrix system(count, count);
-  system.setFromTriplets(entries.begin(), entries.end());
-  entries = {};
+  if (!diagonal_placed) place_diagonal();
+  // The diagonal was pushed before its value was final when entries came after it.
+  for (std::size_t i = static_cast<std::size_t>(row_starts_.back()); i < columns_.size(); ++i)
+    if (columns_[i] == self) entries_[i] = diagonal;
+  b_.push_back(constant);
+  row_starts_.push_back(static_cast<std::int32_t>(columns_.size()));
+}
+
+std::optional<std::vector<double>> ChainSolver::solve() {
+  const auto count = static_cast<std::int32_t>(b_.size());
+  const Eigen::Map<const Matrix> system(count, count, static_cast<std::int32_t>(columns_.size()),
+                                        row_starts_.data(), columns_.data(), entries_.data());
+  // Over a Ref to the map: the arrays are not copied.
   Eigen::BiCGSTAB<Matrix> solver;
   solver.setTolerance(kTolerance);
   solver.setMaxIterations(kMaxIterations);
   solver.compute(system);
+  const Eigen::Map<const Eigen::VectorXd> b(b_.data(), count);
   const Eigen::VectorXd x = solver.solve(b);
   if (solver.info() != Eigen::Success || !x.allFinite()) return std::nullopt;
-  std::vector<double> solution = values;
-  for (std::size_t c = 0; c < cells; ++c)
-    if (unknown[c] >= 0) solution[c] = std::clamp(x[unknown[c]], 0.0, 1.0);
+  std::vector<double> solution = values_;
+  for (std::size_t c = 0; c < solution.size(); ++c)
+    if (unknown_[c] >= 0) solution[c] = std::clamp(x[unknown_[c]], 0.0, 1.0);
   return solution;
 }
 
