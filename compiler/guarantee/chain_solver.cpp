@@ -25,7 +25,7 @@ using Matrix = Eigen::SparseMatrix<double, Eigen::RowMajor, std::int32_t>;
 
 ChainSolver::ChainSolver(const std::vector<std::uint8_t>& undecided,
                          const std::vector<double>& values)
-    : undecided_(undecided), values_(values), unknown_(undecided.size(), -1) {
+    : values_(values), unknown_(undecided.size(), -1) {
   std::int32_t count = 0;
   for (std::size_t c = 0; c < undecided.size(); ++c) {
     if (undecided[c] == 0) continue;

@@ -28,7 +28,6 @@ class ChainSolver {
   std::optional<std::vector<double>> solve();
 
  private:
-  const std::vector<std::uint8_t>& undecided_;
   const std::vector<double>& values_;
   std::vector<std::int32_t> unknown_;  // per cell, its index among the undecided, or -1
   // The system (I - P) x = b in compressed rows.
