@@ -26,6 +26,22 @@ constexpr double kPolicySettled = 1e-9;
 
 }  // namespace
 
+template <typename Image, typename Holds>
+bool Certificates::settles(std::vector<double>& guess, const Image& image, const Holds& holds) {
+  std::vector<double> next(guess.size());
+  for (int application = 0; application <= kSmoothings; ++application) {
+    const ValueTable table(mdp_.grid, guess);
+    bool all = true;
+    for (std::size_t c = 0; c < guess.size(); ++c) {
+      next[c] = undecided_[c] != 0 ? image(c, table) : guess[c];
+      if (!holds(next[c], guess[c])) all = false;
+    }
+    if (all) return true;
+    guess.swap(next);
+  }
+  return false;
+}
+
 Certificates::Certificates(const IntervalMdp& mdp, const ObjectiveCells& cells, SweepMode mode,
                            Bound bound)
     : mdp_(mdp), bound_(bound), sweeper_(mdp, cells, mode), undecided_(mdp.grid.cells) {
@@ -39,42 +55,22 @@ std::vector<double> Certificates::fixed_or_zero() const {
 
 bool Certificates::post_fixed(std::vector<double>& candidate,
                               const std::vector<std::uint32_t>& policy) {
-  std::vector<double> next(candidate.size());
-  for (int application = 0; application <= kSmoothings; ++application) {
-    const ValueTable table(mdp_.grid, candidate);
-    bool holds = true;
-    for (std::size_t c = 0; c < candidate.size(); ++c) {
-      next[c] = undecided_[c] != 0
-                    ? sweeper_.action_value(c, table, policy[c], bound_, Rounding::Down)
-                    : candidate[c];
-      if (next[c] < candidate[c]) holds = false;
-    }
-    if (holds) return true;
-    candidate.swap(next);
-  }
-  return false;
+  return settles(
+      candidate,
+      [&](std::size_t c, const ValueTable& table) {
+        return sweeper_.action_value(c, table, policy[c], bound_, Rounding::Down);
+      },
+      [](double image, double value) { return image >= value; });
 }
 
 bool Certificates::pre_fixed(std::vector<double>& guess) {
-  std::vector<double> next(guess.size());
-  for (int application = 0; application <= kSmoothings; ++application) {
-    const ValueTable table(mdp_.grid, guess);
-    bool holds = true;
-    for (std::size_t c = 0; c < guess.size(); ++c) {
-      if (undecided_[c] == 0) {
-        next[c] = guess[c];
-        continue;
-      }
-      double best = 0;
-      for (std::uint32_t a = 0; a < mdp_.actions.size(); ++a)
-        best = std::max(best, sweeper_.action_value(c, table, a, bound_, Rounding::Up));
-      next[c] = best;
-      if (next[c] > guess[c]) holds = false;
-    }
-    if (holds) return true;
-    guess.swap(next);
-  }
-  return false;
+  return settles(
+      guess,
+      [&](std::size_t c, const ValueTable& table) {
+        std::uint32_t ignored = 0;
+        return sweeper_.best_action(c, table, bound_, ignored, Rounding::Up);
+      },
+      [](double image, double value) { return image <= value; });
 }
 
 bool Certificates::trap_free(const std::vector<std::uint32_t>& policy) const {
@@ -96,8 +92,7 @@ std::optional<std::vector<double>> Certificates::policy_iteration(
     for (std::size_t c = 0; c < values.size(); ++c) {
       if (undecided_[c] == 0) continue;
       const auto value_of = [&](std::uint32_t a) {
-        return sweeper_.action_value(c, table, a, bound_,
-                                     bound_ == Bound::Lower ? Rounding::Down : Rounding::Up);
+        return sweeper_.action_value(c, table, a, bound_, chooser_rounding(bound_));
       };
       const double kept = value_of(policy[c]);
       double best = kept;

@@ -50,6 +50,11 @@ class Certificates {
                                                       std::uint64_t& switches);
 
  private:
+  // Whether `guess`, or one of its next few images (`image(cell, table)` on the undecided
+  // cells), has holds(image, value) on every undecided cell; on success `guess` holds it.
+  template <typename Image, typename Holds>
+  bool settles(std::vector<double>& guess, const Image& image, const Holds& holds);
+
   const IntervalMdp& mdp_;
   Bound bound_;
   Sweeper sweeper_;

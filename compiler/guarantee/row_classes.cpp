@@ -6,6 +6,8 @@
 #include <unordered_map>
 #include <vector>
 
+#include "oasis/rt/spec_hash.hpp"
+
 namespace oasis::guarantee {
 namespace {
 
@@ -14,11 +16,9 @@ class RowView {
   RowView(const IntervalMdp& mdp, std::size_t cell) : mdp_(mdp), cell_(cell) {}
 
   [[nodiscard]] std::uint64_t hash() const {
-    std::uint64_t h = 1469598103934665603ULL;  // FNV-1a over the row's bytes
+    std::uint64_t h = rt::kFnv1a64Basis;
     const auto mix = [&h](const void* data, std::size_t size) {
-      const auto* bytes = static_cast<const unsigned char*>(data);
-      for (std::size_t i = 0; i < size; ++i)
-        h = (h ^ bytes[i]) * 1099511628211ULL;
+      h = rt::fnv1a64(static_cast<const unsigned char*>(data), size, h);
     };
     for_each_slice([&](const AxisSlice& slice) {
       mix(&slice.first, sizeof slice.first);

@@ -42,16 +42,15 @@ RobustGame Sweeper::game(Bound bound) const {
 }
 
 double Sweeper::best_action(std::size_t cell, const ValueTable& values, Bound bound,
-                            std::uint32_t& action) {
+                            std::uint32_t& action, Rounding rounding) {
   const double constant = fixed(cell, bound);
   if (constant >= 0) return constant;
-  const RobustGame g = game(bound);
   double best = -1;
-  for (std::size_t a = 0; a < mdp_.actions.size(); ++a) {
-    const double q = robust_value(mdp_, mdp_.row(cell, a), values, g, scratch_);
+  for (std::uint32_t a = 0; a < mdp_.actions.size(); ++a) {
+    const double q = action_value(cell, values, a, bound, rounding);
     if (q > best) {
       best = q;
-      action = static_cast<std::uint32_t>(a);
+      action = a;
     }
   }
   return best;
@@ -100,8 +99,7 @@ double Sweeper::action_value(std::size_t cell, const ValueTable& values, std::ui
   const double constant = fixed(cell, bound);
   if (constant >= 0) return constant;
   RobustGame g = game(bound);
-  // The lower game's chooser (the disturbance, minimising) rounds down, the upper's up.
-  g.round_against_chooser = (bound == Bound::Lower) == (rounding == Rounding::Up);
+  g.round_against_chooser = rounding != chooser_rounding(bound);
   return robust_value(mdp_, mdp_.row(cell, action), values, g, scratch_);
 }
 

@@ -15,6 +15,12 @@ namespace oasis::guarantee {
 enum class Bound { Lower, Upper };
 enum class Rounding { Down, Up };
 
+// How each game rounds in its chooser's favour: the lower game's chooser (the disturbance,
+// minimising) down, the upper game's up.
+inline Rounding chooser_rounding(Bound bound) {
+  return bound == Bound::Lower ? Rounding::Down : Rounding::Up;
+}
+
 // The objective as the sweeps read it.
 enum class SweepMode { Safety, Reach, ReachAt };
 
@@ -33,9 +39,14 @@ class Sweeper {
   [[nodiscard]] std::vector<double> fixed_or_zero(Bound bound) const;
   [[nodiscard]] RobustGame game(Bound bound) const;
 
-  // The first action of greatest value at `cell` under `values`, and that value.
+  // The first action of greatest value at `cell` under `values`, and that value, rounded in the
+  // chooser's favour or as asked.
   double best_action(std::size_t cell, const ValueTable& values, Bound bound,
-                     std::uint32_t& action);
+                     std::uint32_t& action) {
+    return best_action(cell, values, bound, action, chooser_rounding(bound));
+  }
+  double best_action(std::size_t cell, const ValueTable& values, Bound bound, std::uint32_t& action,
+                     Rounding rounding);
 
   struct Choice {
     double best;    // the greatest value over the actions

@@ -4,6 +4,7 @@
 #include <atomic>
 #include <cmath>
 #include <cstdint>
+#include <exception>
 #include <optional>
 #include <string>
 #include <thread>
@@ -416,11 +417,15 @@ Synthesis synthesise_unbounded(const IntervalMdp& mdp, const ObjectiveCells& cel
   };
   if (options.jobs > 1) {
     // The lower bound may stop by an exception (an interrupt from the progress callback): the
-    // upper bound's thread is then told to stop, and joined, before it propagates.
+    // upper bound's thread is then told to stop, and joined, before it propagates. A failure
+    // of the upper bound's own (a refused allocation) is carried over and thrown here.
+    std::exception_ptr upper_failure;
     std::thread upper_thread([&] {
       try {
         solve_upper();
       } catch (const UpperBound::Abandoned&) {
+      } catch (...) {
+        upper_failure = std::current_exception();
       }
     });
     try {
@@ -431,6 +436,7 @@ Synthesis synthesise_unbounded(const IntervalMdp& mdp, const ObjectiveCells& cel
       throw;
     }
     upper_thread.join();
+    if (upper_failure) std::rethrow_exception(upper_failure);
   } else {
     solve_upper();  // first: it usually converges sooner, and lets the lower bound stop on it
     LowerBound(mdp, cells, mode, options, published).solve(result);
