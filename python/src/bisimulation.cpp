@@ -14,10 +14,8 @@
 #include "interruptible.hpp"
 #include "model_object.hpp"
 #include "pipeline/discrete_catalog.hpp"
-#include "verify/bisimulation_check.hpp"
-#include "verify/coarsest_check.hpp"
-#include "verify/partition_shape.hpp"
-#include "verify/unlabelled_check.hpp"
+#include "verify/verifier.hpp"
+#include "verify/violation.hpp"
 
 namespace oasis::python {
 namespace py = pybind11;
@@ -153,25 +151,16 @@ PartitionCheck verify_partition(const ModelPointer& object,
     partition.num_blocks = std::max(partition.num_blocks, partition.block_of.back() + 1);
   }
   return run_interruptible([&](const Cancellation&) {
+    // The checks `oasisc verify` runs, in its order; the failing one's kind says how far the
+    // partition got (shape, then Definition 1, then coarsest).
+    const verify::VerificationResult checked =
+        verify::verify_partition(model, c, partition, classes, storm);
     PartitionCheck result;
-    verify::VerificationResult shape = verify::check_partition_shape(model, partition);
-    if (!shape.ok()) {
-      result.message = shape.violation->message;
-      return result;
-    }
-    const verify::VerificationResult bisimulation =
-        storm ? verify::check_unlabelled_bisimulation(model, c, partition, classes)
-              : verify::check_bisimulation(model, c, partition, classes);
-    result.bisimulation = bisimulation.ok();
-    if (!bisimulation.ok()) {
-      result.message = bisimulation.violation->message;
-      return result;
-    }
-    const verify::VerificationResult coarsest =
-        storm ? verify::check_unlabelled_coarsest(model, c, partition, classes)
-              : verify::check_coarsest(model, c, partition, classes);
-    result.coarsest = coarsest.ok();
-    if (!coarsest.ok()) result.message = coarsest.violation->message;
+    result.coarsest = checked.ok();
+    result.bisimulation =
+        checked.ok() || (checked.violation->kind != verify::ViolationKind::PartitionShape &&
+                         !verify::breaks_bisimulation(checked.violation->kind));
+    if (!checked.ok()) result.message = checked.violation->message;
     return result;
   });
 }
