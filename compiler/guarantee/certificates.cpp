@@ -30,7 +30,7 @@ template <typename Image, typename Holds>
 bool Certificates::settles(std::vector<double>& guess, const Image& image, const Holds& holds) {
   std::vector<double> next(guess.size());
   for (int application = 0; application <= kSmoothings; ++application) {
-    const ValueTable table(mdp_.grid, guess);
+    const ValueTable& table = table_for(guess);
     bool all = true;
     for (std::size_t c = 0; c < guess.size(); ++c) {
       next[c] = undecided_[c] != 0 ? image(c, table) : guess[c];
@@ -44,7 +44,12 @@ bool Certificates::settles(std::vector<double>& guess, const Image& image, const
 
 Certificates::Certificates(const IntervalMdp& mdp, const ObjectiveCells& cells, SweepMode mode,
                            Bound bound)
-    : mdp_(mdp), bound_(bound), sweeper_(mdp, cells, mode), undecided_(mdp.grid.cells) {
+    : mdp_(mdp),
+      bound_(bound),
+      sweeper_(mdp, cells, mode),
+      undecided_(mdp.grid.cells),
+      improver_(mdp, cells, mode),
+      favourite_(mdp.grid.cells, 0) {
   for (std::size_t c = 0; c < undecided_.size(); ++c)
     undecided_[c] = sweeper_.fixed(c, bound) < 0 ? 1 : 0;
 }
@@ -63,12 +68,20 @@ bool Certificates::post_fixed(std::vector<double>& candidate,
       [](double image, double value) { return image >= value; });
 }
 
+const ValueTable& Certificates::table_for(const std::vector<double>& values) {
+  if (table_) {
+    table_->set_all(values);
+  } else {
+    table_.emplace(mdp_.grid, values);
+  }
+  return *table_;
+}
+
 bool Certificates::pre_fixed(std::vector<double>& guess) {
   return settles(
       guess,
       [&](std::size_t c, const ValueTable& table) {
-        std::uint32_t ignored = 0;
-        return sweeper_.best_action(c, table, bound_, ignored, Rounding::Up);
+        return improver_.update(c, table, bound_, favourite_[c], 0, Rounding::Up).best;
       },
       [](double image, double value) { return image <= value; });
 }
@@ -86,27 +99,15 @@ std::optional<std::vector<double>> Certificates::policy_iteration(
   RobustScratch scratch;
   for (std::uint64_t round = 1; round <= kPolicyRounds; ++round) {
     ++rounds;
-    const ValueTable table(mdp_.grid, values);
+    const ValueTable& table = table_for(values);
     ChainSolver chain(undecided_, values);
     bool switched = false;
     for (std::size_t c = 0; c < values.size(); ++c) {
       if (undecided_[c] == 0) continue;
-      const auto value_of = [&](std::uint32_t a) {
-        return sweeper_.action_value(c, table, a, bound_, chooser_rounding(bound_));
-      };
-      const double kept = value_of(policy[c]);
-      double best = kept;
-      std::uint32_t best_action = policy[c];
-      for (std::uint32_t a = 0; a < mdp_.actions.size(); ++a) {
-        if (a == policy[c]) continue;
-        const double q = value_of(a);
-        if (q > best) {
-          best = q;
-          best_action = a;
-        }
-      }
-      if (best > kept + kSwitchGain) {
-        policy[c] = best_action;
+      std::uint32_t action = policy[c];
+      improver_.update(c, table, bound_, action, kSwitchGain);
+      if (action != policy[c]) {
+        policy[c] = action;
         switched = true;
         ++switches;
       }
@@ -121,6 +122,7 @@ std::optional<std::vector<double>> Certificates::policy_iteration(
     // Switches that move no value by more than this gain too little to pay another solve.
     if (!switched || moved <= kPolicySettled) break;
   }
+  favourite_ = policy;
   return values;
 }
 

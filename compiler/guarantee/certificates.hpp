@@ -17,6 +17,7 @@
 
 #include "guarantee/interval_mdp.hpp"
 #include "guarantee/objective_cells.hpp"
+#include "guarantee/robust_value.hpp"
 #include "guarantee/sweeper.hpp"
 
 namespace oasis::guarantee {
@@ -55,10 +56,19 @@ class Certificates {
   template <typename Image, typename Holds>
   bool settles(std::vector<double>& guess, const Image& image, const Holds& holds);
 
+  // `values` in the one table that policy iteration and every check read, whose drift then
+  // bounds how far values have moved since `improver_` cached an action's value: the
+  // improvement and the pre-fixed check skip the actions that cannot win (Sweeper::update),
+  // also right after policy iteration, whose last guess is near what the check reads.
+  const ValueTable& table_for(const std::vector<double>& values);
+
   const IntervalMdp& mdp_;
   Bound bound_;
   Sweeper sweeper_;
   std::vector<std::uint8_t> undecided_;
+  std::optional<ValueTable> table_;
+  Sweeper improver_;                      // its action cache belongs to table_
+  std::vector<std::uint32_t> favourite_;  // per cell, the action tried first
 };
 
 // `values` plus `lift` on the undecided cells, within [0, 1].

@@ -81,7 +81,12 @@ std::optional<std::vector<double>> ChainSolver::solve() {
   solver.setMaxIterations(kMaxIterations);
   solver.compute(system);
   const Eigen::Map<const Eigen::VectorXd> b(b_.data(), count);
-  const Eigen::VectorXd x = solver.solve(b);
+  // From the current values: policy iteration's later rounds move them little, and the
+  // residual target is relative to b, so a close start saves iterations.
+  Eigen::VectorXd start(count);
+  for (std::size_t c = 0; c < values_.size(); ++c)
+    if (unknown_[c] >= 0) start[unknown_[c]] = values_[c];
+  const Eigen::VectorXd x = solver.solveWithGuess(b, start);
   if (solver.info() != Eigen::Success || !x.allFinite()) return std::nullopt;
   std::vector<double> solution = values_;
   for (std::size_t c = 0; c < solution.size(); ++c)

@@ -19,7 +19,8 @@ class AxisChoice {
       : lower_(mdp.lower.data() + slice.offset),
         upper_(mdp.upper.data() + slice.offset),
         slice_(slice),
-        game_(game) {
+        game_(game),
+        maximise_(game.maximise) {
     extras_ = {Extra{game.outside_value, slice.outside_upper - slice.outside_lower},
                Extra{game.truncated_value, slice.truncated}};
     if (better(extras_[1].value, extras_[0].value)) std::swap(extras_[0], extras_[1]);
@@ -28,48 +29,59 @@ class AxisChoice {
   // From now on, each entry's probability is added up in amounts[k] (count entries), and the
   // value of what goes outside the grid's cells in absorbed().
   void record(double* amounts) { amounts_ = amounts; }
-  [[nodiscard]] double absorbed() const { return absorbed_; }
+  [[nodiscard]] double absorbed() const { return sums_.absorbed; }
 
   // Every outcome's lower bound first. `value_of(k)` is entry k's value.
   template <typename ValueOf>
   void start(const ValueOf& value_of) {
     double mass = slice_.outside_lower;
-    value_ = slice_.outside_lower * game_.outside_value;
-    absorbed_ = value_;
+    double value = slice_.outside_lower * game_.outside_value;
+    sums_.absorbed = value;
     for (std::uint32_t k = 0; k < slice_.count; ++k) {
       mass += lower_[k];
-      value_ += lower_[k] * value_of(k);
+      value += lower_[k] * value_of(k);
     }
     if (amounts_ != nullptr) std::copy(lower_, lower_ + slice_.count, amounts_);
-    rest_ = 1.0 - mass;
+    sums_.value = value;
+    sums_.rest = 1.0 - mass;
   }
 
-  // The next entry in order of preference.
-  void offer(std::uint32_t k, double value) {
-    while (next_extra_ < extras_.size() && better(extras_[next_extra_].value, value)) {
-      absorbed_ +=
-          give(extras_[next_extra_].room, extras_[next_extra_].value) * extras_[next_extra_].value;
-      ++next_extra_;
+  // The entries in order of preference, until the mass runs out: for i < n, `entry(i, k,
+  // value)` sets entry k and its value, or returns false to pass over i. The running sums are
+  // a local copy here, in the innermost loop of the synthesis: as a member they would be
+  // stored at every step, in case a write to `amounts_` changed them.
+  template <typename Entry>
+  void offer_in_order(std::size_t n, const Entry& entry) {
+    Sums sums = sums_;
+    for (std::size_t i = 0; i < n && sums.rest > 0; ++i) {
+      std::uint32_t k = 0;
+      double value = 0;
+      if (!entry(i, k, value)) continue;
+      while (next_extra_ < extras_.size() && better(extras_[next_extra_].value, value)) {
+        const Extra& extra = extras_[next_extra_];
+        sums.absorbed += sums.give(extra.room, extra.value) * extra.value;
+        ++next_extra_;
+      }
+      const double amount = sums.give(upper_[k] - lower_[k], value);
+      if (amounts_ != nullptr) amounts_[k] += amount;
     }
-    const double amount = give(upper_[k] - lower_[k], value);
-    if (amounts_ != nullptr) amounts_[k] += amount;
+    sums_ = sums;
   }
-  [[nodiscard]] bool done() const { return rest_ <= 0; }
 
   double finish() {
     for (; next_extra_ < extras_.size(); ++next_extra_) {
-      absorbed_ +=
-          give(extras_[next_extra_].room, extras_[next_extra_].value) * extras_[next_extra_].value;
+      const Extra& extra = extras_[next_extra_];
+      sums_.absorbed += sums_.give(extra.room, extra.value) * extra.value;
     }
     // Mass no outcome can take (bounds rounded outward make this empty): the value at the end
     // the result is rounded to.
     const bool up = game_.maximise != game_.round_against_chooser;
-    if (rest_ > 0) {
-      value_ += rest_ * (up ? 1.0 : 0.0);
-      absorbed_ += rest_ * (up ? 1.0 : 0.0);
+    if (sums_.rest > 0) {
+      sums_.value += sums_.rest * (up ? 1.0 : 0.0);
+      sums_.absorbed += sums_.rest * (up ? 1.0 : 0.0);
     }
     const double error = 2.0 * static_cast<double>(slice_.count + 4) * kUnitRoundoff;
-    return up ? std::min(1.0, value_ + error) : std::max(0.0, value_ - error);
+    return up ? std::min(1.0, sums_.value + error) : std::max(0.0, sums_.value - error);
   }
 
  private:
@@ -77,26 +89,30 @@ class AxisChoice {
     double value;
     double room;
   };
-  [[nodiscard]] bool better(double a, double b) const { return game_.maximise ? a > b : a < b; }
-  // Gives up to `room` of the mass left to an outcome of `value`; returns what it gave.
-  double give(double room, double value) {
-    const double amount = std::min(room, rest_);
-    if (amount <= 0) return 0;
-    value_ += amount * value;
-    rest_ -= amount;
-    return amount;
-  }
+  struct Sums {
+    double value;     // the expectation so far
+    double rest;      // the mass not given yet
+    double absorbed;  // the part of `value` from outside the grid's cells
+    // Gives up to `room` of the mass left to an outcome of `outcome`; returns what it gave.
+    double give(double room, double outcome) {
+      const double amount = std::min(room, rest);
+      if (amount <= 0) return 0;
+      value += amount * outcome;
+      rest -= amount;
+      return amount;
+    }
+  };
+  [[nodiscard]] bool better(double a, double b) const { return maximise_ ? a > b : a < b; }
 
   const double* lower_;
   const double* upper_;
   const AxisSlice& slice_;
   const RobustGame& game_;
+  const bool maximise_;
   std::array<Extra, 2> extras_{};
   std::size_t next_extra_ = 0;
-  double value_ = 0;
-  double rest_ = 0;
+  Sums sums_{0, 0, 0};
   double* amounts_ = nullptr;
-  double absorbed_ = 0;
 };
 
 class Expectation {
@@ -133,8 +149,11 @@ class Expectation {
     std::sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) {
       return game_.maximise ? level[a] > level[b] : level[a] < level[b];
     });
-    for (std::size_t i = 0; i < order.size() && !choice.done(); ++i)
-      choice.offer(order[i], level[order[i]]);
+    choice.offer_in_order(order.size(), [&](std::size_t i, std::uint32_t& k, double& value) {
+      k = order[i];
+      value = level[k];
+      return true;
+    });
     const double value = choice.finish();
     if (recording != nullptr) recording->absorbed = choice.absorbed();
     return value;
@@ -173,11 +192,14 @@ class Expectation {
     choice.start([&](std::uint32_t k) { return values[slice.first + k]; });
     const std::uint32_t* order = table_.order(base / table_.line_length());
     const std::size_t n = table_.line_length();
-    for (std::size_t i = 0; i < n && !choice.done(); ++i) {
-      const std::uint32_t interval = order[game_.maximise ? n - 1 - i : i];
-      if (interval < slice.first || interval >= slice.first + slice.count) continue;
-      choice.offer(interval - slice.first, values[interval]);
-    }
+    const bool maximise = game_.maximise;
+    choice.offer_in_order(n, [&](std::size_t i, std::uint32_t& k, double& value) {
+      const std::uint32_t interval = order[maximise ? n - 1 - i : i];
+      // Unsigned: an interval before the slice's first wraps past its count.
+      k = interval - slice.first;
+      value = values[interval];
+      return k < slice.count;
+    });
     const double value = choice.finish();
     if (recording != nullptr) recording->absorbed = choice.absorbed();
     return value;

@@ -1,6 +1,7 @@
 #include "guarantee/sweeper.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 
 namespace oasis::guarantee {
@@ -10,6 +11,16 @@ namespace {
 // action is skipped on its cached value (each is within about 1e-12 of exact even for rows of
 // a thousand entries per axis in four dimensions).
 constexpr double kLipschitzSlack = 1e-9;
+
+// `x` as a float at least (at most) as large.
+float float_up(double x) {
+  const auto f = static_cast<float>(x);
+  return f < x ? std::nextafter(f, std::numeric_limits<float>::infinity()) : f;
+}
+float float_down(double x) {
+  const auto f = static_cast<float>(x);
+  return f > x ? std::nextafter(f, -std::numeric_limits<float>::infinity()) : f;
+}
 
 }  // namespace
 
@@ -57,19 +68,20 @@ double Sweeper::best_action(std::size_t cell, const ValueTable& values, Bound bo
 }
 
 Sweeper::Choice Sweeper::update(std::size_t cell, const ValueTable& values, Bound bound,
-                                std::uint32_t& action, double switch_gain) {
+                                std::uint32_t& action, double switch_gain, Rounding rounding) {
   const double constant = fixed(cell, bound);
   if (constant >= 0) return {constant, constant};
-  const RobustGame g = game(bound);
+  RobustGame g = game(bound);
+  g.round_against_chooser = rounding != chooser_rounding(bound);
   const std::size_t actions = mdp_.actions.size();
   if (cached_value_.empty()) {
-    cached_value_.assign(mdp_.grid.cells * actions, std::numeric_limits<double>::infinity());
+    cached_value_.assign(mdp_.grid.cells * actions, std::numeric_limits<float>::infinity());
     cached_drift_.assign(mdp_.grid.cells * actions, 0);
   }
   const auto value_of = [&](std::size_t a) {
     const double q = robust_value(mdp_, mdp_.row(cell, a), values, g, scratch_);
-    cached_value_[cell * actions + a] = q;
-    cached_drift_[cell * actions + a] = values.drift_base();
+    cached_value_[cell * actions + a] = float_up(q);
+    cached_drift_[cell * actions + a] = float_down(values.drift_base());
     return q;
   };
   const double current = value_of(action);
@@ -78,8 +90,8 @@ Sweeper::Choice Sweeper::update(std::size_t cell, const ValueTable& values, Boun
   for (std::size_t a = 0; a < actions; ++a) {
     if (a == action) continue;
     const std::size_t slot = cell * actions + a;
-    const double reach =
-        cached_value_[slot] + (values.drift() - cached_drift_[slot]) + kLipschitzSlack;
+    const double reach = double{cached_value_[slot]} +
+                         (values.drift() - double{cached_drift_[slot]}) + kLipschitzSlack;
     if (reach < best) continue;
     const double q = value_of(a);
     if (q > best) {

@@ -63,7 +63,13 @@ class Sweeper {
   // ValueTable::drift() bounds that movement. This skips most actions once the values settle.
   // The cache belongs to one table: a Sweeper's update() always reads the same ValueTable.
   Choice update(std::size_t cell, const ValueTable& values, Bound bound, std::uint32_t& action,
-                double switch_gain);
+                double switch_gain) {
+    return update(cell, values, bound, action, switch_gain, chooser_rounding(bound));
+  }
+  // The same, every value rounded the way asked (a check that values lie above B's least fixed
+  // point rounds the lower game's values up).
+  Choice update(std::size_t cell, const ValueTable& values, Bound bound, std::uint32_t& action,
+                double switch_gain, Rounding rounding);
 
   // The robust value of `action` at `cell` in `bound`'s game (its fixed value if it has one),
   // rounded the way asked: each game rounds in its chooser's favour, and a check that values
@@ -88,9 +94,11 @@ class Sweeper {
   const ObjectiveCells& cells_;
   SweepMode mode_;
   RobustScratch scratch_;
-  // Per (cell, action): its value when last computed, and the drift base of that sweep.
-  std::vector<double> cached_value_;
-  std::vector<double> cached_drift_;
+  // Per (cell, action): its value when last computed, rounded up, and the drift base of that
+  // sweep, rounded down, so that a skip stays safe. Floats: on the vehicle's 4.4 M pairs,
+  // each of the four caches (a sweeper and a checker per bound) holds 35 MB instead of 70.
+  std::vector<float> cached_value_;
+  std::vector<float> cached_drift_;
 };
 
 }  // namespace oasis::guarantee

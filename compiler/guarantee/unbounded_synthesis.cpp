@@ -27,10 +27,6 @@ constexpr std::uint64_t kCertifyEvery = 10;
 // many times the precision past the iterate: earlier, the check would fail and only cost.
 constexpr double kExtrapolationReach = 100;
 
-// Policy iteration starts from the lower bound's iteration after this many sweeps, with the
-// controller they found; the upper bound's starts at once.
-constexpr std::uint64_t kPolicyStart = 5;
-
 // The rate is the geometric mean of the ratios of the last this many largest changes.
 constexpr std::size_t kRateWindow = 10;
 
@@ -133,7 +129,6 @@ class LowerBound {
 
   void solve(Synthesis& result) {
     ValueTable table(mdp_.grid, checks_.fixed_or_zero());
-    std::vector<double> previous = table.values();
     Trend trend;
     result.stop_reason = "sweep limit";
     const auto update = [&](std::size_t c, const ValueTable& values) {
@@ -144,6 +139,15 @@ class LowerBound {
       policy_[c] = action;
       return chosen;
     };
+    // Policy iteration first, from the fixed values (a post-fixed point of every controller's
+    // operator): a sweep before it would evaluate every action at every cell as its first
+    // round does.
+    if (options_.policy_iteration && jump(table, 0, result)) {
+      result.sweeps = 0;
+      finish(table.release(), result);
+      return;
+    }
+    std::vector<double> previous = table.values();
     result.sweeps =
         iterate(table, options_.max_sweeps, update, [&](std::uint64_t sweep, double moved) {
           if (options_.progress) options_.progress(sweep, moved);
@@ -152,8 +156,6 @@ class LowerBound {
           if (moved <= options_.stall) {
             result.stop_reason = "values stopped moving";
             stop = true;
-          } else if (sweep == kPolicyStart && options_.policy_iteration) {
-            stop = jump(table, sweep, result);
           } else if (sweep % kCertifyEvery == 0) {
             stop = try_extrapolation(trend, sweep, result.stop_reason);
           }
