@@ -24,6 +24,12 @@ constexpr double kSwitchGain = 1e-12;
 constexpr std::uint64_t kPolicyRounds = 8;
 constexpr double kPolicySettled = 1e-9;
 
+// Early rounds only point the controller the right way, and their solves may stop sooner:
+// the first asks for a relative residual of kFirstResidual, each later one for
+// kResidualPerMove times the largest change of the round before (at least 1e-13).
+constexpr double kFirstResidual = 1e-8;
+constexpr double kResidualPerMove = 1e-7;
+
 }  // namespace
 
 template <typename Image, typename Holds>
@@ -97,6 +103,7 @@ std::optional<std::vector<double>> Certificates::policy_iteration(
   ChosenRow row;
   const RobustGame game = sweeper_.game(bound_);
   RobustScratch scratch;
+  double residual = kFirstResidual;
   for (std::uint64_t round = 1; round <= kPolicyRounds; ++round) {
     ++rounds;
     const ValueTable& table = table_for(values);
@@ -114,10 +121,11 @@ std::optional<std::vector<double>> Certificates::policy_iteration(
       robust_choice(mdp_, mdp_.row(c, policy[c]), table, game, scratch, row);
       chain.add_row(c, row);
     }
-    std::optional<std::vector<double>> solved = chain.solve();
+    std::optional<std::vector<double>> solved = chain.solve(residual);
     if (!solved) return std::nullopt;
     const double moved =
         std::max(largest_difference(*solved, values), largest_difference(values, *solved));
+    residual = std::min(kFirstResidual, kResidualPerMove * moved);
     values = std::move(*solved);
     // Switches that move no value by more than this gain too little to pay another solve.
     if (!switched || moved <= kPolicySettled) break;

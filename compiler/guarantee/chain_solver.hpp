@@ -19,13 +19,14 @@ class ChainSolver {
   ChainSolver(const std::vector<std::uint8_t>& undecided, const std::vector<double>& values);
 
   // Adds the row of the next undecided cell, in increasing order of cells; its entries come in
-  // increasing order of cells, as robust_choice gives them. Probabilities below 1e-13 are taken
+  // increasing order of cells, as robust_choice gives them. Probabilities below 1e-8 are taken
   // at their target's current value rather than as unknowns: the row is only a guess.
   void add_row(std::size_t cell, const ChosenRow& row);
 
-  // The solution on every cell (the decided ones keep their values), clamped to [0, 1];
+  // The solution on every cell (the decided ones keep their values), clamped to [0, 1], with
+  // a residual at most `tolerance` times b's (1e-13 at most: a smaller one is not asked);
   // nothing when the solver does not converge.
-  std::optional<std::vector<double>> solve();
+  std::optional<std::vector<double>> solve(double tolerance);
 
  private:
   const std::vector<double>& values_;

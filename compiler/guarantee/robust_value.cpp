@@ -120,7 +120,10 @@ class Expectation {
   Expectation(const IntervalMdp& mdp, const AxisSlice* row, const ValueTable& table,
               const RobustGame& game, RobustScratch& scratch)
       : mdp_(mdp), row_(row), table_(table), game_(game), scratch_(scratch) {
-    if (scratch_.values.size() < mdp.grid.dimension()) scratch_.values.resize(mdp.grid.dimension());
+    if (scratch_.values.size() < mdp.grid.dimension()) {
+      scratch_.values.resize(mdp.grid.dimension());
+      scratch_.amounts.resize(mdp.grid.dimension());
+    }
   }
 
   // What at() chose on one axis: each entry's probability, and the value of the rest.
@@ -163,7 +166,9 @@ class Expectation {
   // `out`: cells as they come (a cell may repeat), the rest's value into out.constant.
   void choose(std::size_t axis, std::size_t base, double weight, ChosenRow& out) {
     const AxisSlice& slice = row_[axis];
-    std::vector<double> amounts(slice.count);
+    // Per axis level: the deeper calls below use deeper levels only.
+    std::vector<double>& amounts = scratch_.amounts[axis];
+    amounts.assign(slice.count, 0);
     Recording recording{amounts.data()};
     at(axis, base, &recording);
     out.constant += weight * recording.absorbed;

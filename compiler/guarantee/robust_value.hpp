@@ -72,7 +72,8 @@ class ValueTable {
 
 // Scratch space reused across calls (no allocation per row).
 struct RobustScratch {
-  std::vector<std::vector<double>> values;  // per axis level
+  std::vector<std::vector<double>> values;   // per axis level
+  std::vector<std::vector<double>> amounts;  // per axis level, for robust_choice
   std::vector<std::uint32_t> order;
 };
 
