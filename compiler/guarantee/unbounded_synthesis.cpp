@@ -148,6 +148,7 @@ class LowerBound {
       return;
     }
     std::vector<double> previous = table.values();
+    bool back_to_certificate = false;
     result.sweeps =
         iterate(table, options_.max_sweeps, update, [&](std::uint64_t sweep, double moved) {
           if (options_.progress) options_.progress(sweep, moved);
@@ -156,6 +157,10 @@ class LowerBound {
           if (moved <= options_.stall) {
             result.stop_reason = "values stopped moving";
             stop = true;
+          } else if (certificate_meets_upper()) {
+            result.stop_reason = "gap closed";
+            stop = true;
+            back_to_certificate = true;
           } else if (sweep % kCertifyEvery == 0) {
             stop = try_extrapolation(trend, sweep, result.stop_reason);
           }
@@ -163,7 +168,12 @@ class LowerBound {
           return stop;
         });
     std::vector<double> values = table.release();
-    if (!certified_.empty() && certified_switches_ == switches_) {
+    if (back_to_certificate) {
+      // The sweeps' controller may have moved between actions of equal value since: the
+      // certificate is for the controller it was made with.
+      policy_ = certified_policy_;
+      values = certified_;
+    } else if (!certified_.empty() && certified_switches_ == switches_) {
       for (std::size_t c = 0; c < values.size(); ++c)
         values[c] = std::max(values[c], certified_[c]);
     }
@@ -206,6 +216,14 @@ class LowerBound {
     return false;
   }
 
+  // Whether the last certificate (for the controller it was made with) is within the gap of
+  // the upper bound, once that is published: the other thread's often comes a little after
+  // policy iteration's guess is certified.
+  [[nodiscard]] bool certificate_meets_upper() const {
+    return !certified_.empty() && upper_.ready.load(std::memory_order_acquire) &&
+           largest_difference(upper_.values, certified_) <= options_.gap;
+  }
+
   // Extrapolates the iteration to its limit and tries it with certify_around().
   bool try_extrapolation(const Trend& trend, std::uint64_t sweep, std::string& stop_reason) {
     if (trend.rate() <= 0) return false;
@@ -226,8 +244,8 @@ class LowerBound {
     if (!checks_.post_fixed(candidate, policy_)) return false;
     certified_ = std::move(candidate);
     certified_switches_ = switches_;
-    if (upper_.ready.load(std::memory_order_acquire) &&
-        largest_difference(upper_.values, certified_) <= options_.gap) {
+    certified_policy_ = policy_;
+    if (certificate_meets_upper()) {
       stop_reason = "gap closed";
       return true;
     }
@@ -264,6 +282,7 @@ class LowerBound {
   std::uint64_t switches_ = 0;  // controller changes so far
   std::vector<double> certified_;
   std::uint64_t certified_switches_ = 0;
+  std::vector<std::uint32_t> certified_policy_;  // the controller certified_ is for
   // A failed ceiling costs sweeps over every action: after one, the next waits twice as long.
   std::uint64_t next_ceiling_ = 0;
   std::uint64_t ceiling_wait_ = kCertifyEvery;
