@@ -11,16 +11,18 @@ SourceFile::SourceFile(std::string path, MappedFile contents)
 SourceFile::SourceFile(std::string path, std::string contents)
     : path_(std::move(path)), owned_(std::move(contents)), text_(owned_) {}
 
-void SourceFile::index_lines() const {
-  if (!line_starts_.empty()) return;
-  line_starts_.push_back(0);
-  for (std::size_t i = 0; i < text_.size(); ++i) {
+void SourceFile::index_lines_to(SourceOffset offset) const {
+  if (line_starts_.empty()) line_starts_.push_back(0);
+  const std::size_t end = std::min<SourceOffset>(offset, text_.size());
+  for (std::size_t i = indexed_to_; i < end; ++i) {
     if (text_[i] == '\n') line_starts_.push_back(i + 1);
   }
+  indexed_to_ = std::max<SourceOffset>(indexed_to_, end);
 }
 
 std::size_t SourceFile::line_index(SourceOffset offset) const {
-  index_lines();
+  // A line starts at `offset` when the byte before it is a newline: index up to it.
+  index_lines_to(offset);
   const auto next = std::upper_bound(line_starts_.begin(), line_starts_.end(), offset);
   return static_cast<std::size_t>(next - line_starts_.begin()) - 1;
 }

@@ -46,15 +46,19 @@ class SourceFile {
   [[nodiscard]] std::string_view line_text(SourceOffset offset) const;
 
  private:
-  void index_lines() const;
+  // Finds the line starts up to `offset`, no further.
+  void index_lines_to(SourceOffset offset) const;
   [[nodiscard]] std::size_t line_index(SourceOffset offset) const;
 
   std::string path_;
   MappedFile mapped_;
   std::string owned_;
   std::string_view text_;
-  // Computed on the first diagnostic only: a clean run over a large mapped file never pays.
+  // Computed on the first diagnostic only, and only as far as the diagnostics reach: a clean
+  // run over a large mapped file never pays, and an error in the header of a 5 GB file reads
+  // one page of it, not all of it (nor an index of its 10^8 lines).
   mutable std::vector<SourceOffset> line_starts_;
+  mutable SourceOffset indexed_to_ = 0;  // the bytes before this are in line_starts_
 };
 
 class SourceManager {
