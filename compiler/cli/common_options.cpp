@@ -1,16 +1,20 @@
 #include <unistd.h>
 
 #include "cli/commands.hpp"
+#include "command_line/memory_option.hpp"
 #include "command_line/number_options.hpp"
+#include "support/limits.hpp"
 
 namespace oasis::cli {
 
 void add_common_options(CLI::App& command, CommonOptions& options) {
   command
       .add_option("--max-states", options.load.max_states,
-                  "Stop exploring a factored model past this many states")
+                  "Refuse a model past this many states, explored or declared by a model "
+                  "file's header (by default only what 32-bit state numbers cannot hold: "
+                  "--memory-budget bounds the model)")
       ->capture_default_str()
-      ->check(whole_in(1, 4'000'000'000U));
+      ->check(whole_in(1, limits::kMaxStates));
   command.add_option("--max-errors", options.max_errors, "Stop after this many errors")
       ->capture_default_str()
       ->check(whole_in(1, 100000));
@@ -57,6 +61,8 @@ void add_common_options(CLI::App& command, CommonOptions& options) {
 
 LoadOptions effective_load_options(const CommonOptions& options) {
   LoadOptions load = options.load;
+  // A model file whose header declares more than reading it could fit is refused at once.
+  load.memory_budget = command_memory_budget();
   load.progress =
       options.progress == "always" || (options.progress == "auto" && ::isatty(STDERR_FILENO) == 1);
   return load;

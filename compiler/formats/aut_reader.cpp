@@ -11,6 +11,7 @@
 #include "formats/aut_label.hpp"
 #include "formats/distribution_collector.hpp"
 #include "formats/exact_sum.hpp"
+#include "formats/model_size.hpp"
 #include "formats/text_scanner.hpp"
 #include "formats/value_cache.hpp"
 
@@ -129,6 +130,7 @@ class AutReader {
     if (!expect(',', "expected ',' after the number of transitions")) return false;
     scan_.skip_blanks();
     if (!read_state_count()) return false;
+    if (!fits_memory_budget()) return false;
     scan_.skip_blanks();
     if (!expect(')', "expected ')' to close the header")) return false;
     scan_.skip_blanks();
@@ -147,10 +149,10 @@ class AutReader {
       error_here("expected the number of states");
       return false;
     }
-    if (states.overflow || states.value > options_.max_states) {
-      error_at(token, states.text.size(),
-               "the header declares " + std::string(states.text) +
-                   " states, more than the limit of " + std::to_string(options_.max_states));
+    const std::optional<std::string> refusal =
+        state_count_refusal(states.text, states.overflow ? UINT64_MAX : states.value, options_);
+    if (refusal) {
+      error_at(token, states.text.size(), "the header declares " + *refusal);
       return false;
     }
     if (states.value == 0) {
@@ -160,6 +162,21 @@ class AutReader {
     }
     num_states_ = static_cast<std::uint32_t>(states.value);
     return true;
+  }
+
+  // A header declaring more than reading it could fit is refused here, before any line of
+  // the body is read or anything is reserved for it (on each rank: its share).
+  bool fits_memory_budget() {
+    const DeclaredSize size{.states = num_states_, .choices = declared_transitions_};
+    const std::optional<std::uint32_t> ranks =
+        part_ ? std::optional<std::uint32_t>(part_->count) : std::nullopt;
+    const std::optional<std::string> refusal = memory_refusal(size, options_, ranks);
+    if (!refusal) return true;
+    const std::string transitions = std::to_string(declared_transitions_);
+    error_at(transitions_token_, transitions.size(),
+             "the header declares " + transitions + " transitions and " +
+                 std::to_string(num_states_) + " states: " + *refusal);
+    return false;
   }
 
   // The initial state may be a distribution; our models have a set of initial states, so

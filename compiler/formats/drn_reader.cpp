@@ -11,6 +11,7 @@
 #include "formats/exact_sum.hpp"
 #include "formats/explicit_parts.hpp"
 #include "formats/explicit_reader.hpp"
+#include "formats/model_size.hpp"
 
 namespace oasis::formats {
 namespace {
@@ -27,6 +28,7 @@ struct Header {
   std::vector<std::string> reward_models;
   bool has_states = false;
   std::uint32_t num_states = 0;
+  std::string_view states_text;  // the count as written, for diagnostics
   std::optional<std::uint64_t> num_choices;
   const char* choices_line = nullptr;
   const char* model_line = nullptr;
@@ -220,16 +222,17 @@ class DrnReader {
     std::uint64_t count = 0;
     std::string_view text;
     if (!read_count("the number of states", count, text)) return false;
-    if (count == 0 || count > options_.max_states) {
-      scan_.error_at(text.data(), text.size(),
-                     count == 0 ? std::string("the model has no states")
-                                : "the file declares " + std::string(text) +
-                                      " states, more than the limit of " +
-                                      std::to_string(options_.max_states));
+    if (count == 0) {
+      scan_.error_at(text.data(), text.size(), "the model has no states");
+      return false;
+    }
+    if (const auto refusal = state_count_refusal(text, count, options_)) {
+      scan_.error_at(text.data(), text.size(), "the file declares " + *refusal);
       return false;
     }
     header_.has_states = true;
     header_.num_states = static_cast<std::uint32_t>(count);
+    header_.states_text = text;
     return true;
   }
 
@@ -245,7 +248,23 @@ class DrnReader {
   bool check_header(const char* line) {
     if (!header_.has_type) scan_.error_at(line, 6, "'@type' must come before '@model'");
     if (!header_.has_states) scan_.error_at(line, 6, "'@nr_states' must come before '@model'");
-    return header_.has_type && header_.has_states;
+    return header_.has_type && header_.has_states && fits_memory_budget();
+  }
+
+  // Once the header is read and before the body is, or anything is allocated for its states:
+  // a model whose reading alone would not fit the memory budget is refused at its state count
+  // (with '@nr_choices' when the file gives it; the edges are not declared).
+  bool fits_memory_budget() {
+    const DeclaredSize size{.states = header_.num_states,
+                            .choices = header_.num_choices.value_or(0)};
+    const std::optional<std::string> refusal = memory_refusal(size, options_);
+    if (!refusal) return true;
+    std::string declared = std::string(header_.states_text) + " states";
+    if (header_.num_choices)
+      declared += " and " + std::to_string(*header_.num_choices) + " choices";
+    scan_.error_at(header_.states_text.data(), header_.states_text.size(),
+                   "the file declares " + declared + ": " + *refusal);
+    return false;
   }
 
   // --- The states -----------------------------------------------------------------------

@@ -21,6 +21,7 @@
 #include "formats/exact_sum.hpp"
 #include "formats/explicit_parts.hpp"
 #include "formats/explicit_reader.hpp"
+#include "formats/model_size.hpp"
 
 namespace oasis::formats {
 namespace {
@@ -78,17 +79,31 @@ class TransitionsReader {
       return false;
     }
     result_.markov_chain = count == 2;
-    if (numbers[0] == 0 || numbers[0] > options_.max_states) {
-      scan_.error_at(header_, 1,
-                     numbers[0] == 0 ? std::string("the header declares no states")
-                                     : "the header declares " + std::to_string(numbers[0]) +
-                                           " states, more than the limit of " +
-                                           std::to_string(options_.max_states));
+    if (numbers[0] == 0) {
+      scan_.error_at(header_, 1, "the header declares no states");
+      return false;
+    }
+    if (const auto refusal =
+            state_count_refusal(std::to_string(numbers[0]), numbers[0], options_)) {
+      scan_.error_at(header_, 1, "the header declares " + *refusal);
       return false;
     }
     result_.num_states = static_cast<std::uint32_t>(numbers[0]);
     declared_choices_ = result_.markov_chain ? 0 : numbers[1];
     declared_rows_ = numbers[count - 1];
+    // Before the body is read or anything is reserved for it. A Markov chain's rows are its
+    // edges and its choices, one per state at most.
+    const DeclaredSize size{.states = numbers[0],
+                            .choices = result_.markov_chain ? 0 : declared_choices_,
+                            .edges = declared_rows_};
+    if (const auto refusal = memory_refusal(size, options_)) {
+      scan_.error_at(
+          header_, scan_.rest_of_line().size(),
+          "the header declares " + std::to_string(numbers[0]) + " states" +
+              (result_.markov_chain ? "" : ", " + std::to_string(declared_choices_) + " choices") +
+              " and " + std::to_string(declared_rows_) + " transitions: " + *refusal);
+      return false;
+    }
     const std::size_t reserve = std::min<std::uint64_t>(declared_rows_, scan_.end() - header_);
     const std::uint64_t choices = result_.markov_chain ? numbers[0] : declared_choices_;
     result_.collector.reserve(std::min<std::uint64_t>(choices, reserve), reserve);
@@ -152,7 +167,10 @@ class TransitionsReader {
         if (number.overflow || number.value >= options_.max_states) {
           scan_.error_at(token, number.text.size(),
                          "state " + std::string(number.text) + " is beyond the limit of " +
-                             std::to_string(options_.max_states) + " states");
+                             std::to_string(options_.max_states) + " states" +
+                             (options_.max_states < limits::kMaxStates
+                                  ? " (raise it with --max-states)"
+                                  : " (states are numbered with 32 bits)"));
           return false;
         }
         largest = std::max<std::uint64_t>(largest, number.value);

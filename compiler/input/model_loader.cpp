@@ -121,6 +121,7 @@ std::optional<LoadedModel> load_model(const std::string& path, SourceManager& so
     read_options.max_bytes = options.max_input_bytes;
     read_options.max_number_bits = options.max_number_bits;
     read_options.max_states = options.max_states;
+    read_options.memory_budget = options.memory_budget;
     loaded.model = formats::read_model_file(path, sources, diagnostics, read_options);
     if (!loaded.model) return std::nullopt;
     hash_input();

@@ -21,6 +21,9 @@ namespace oasis::input {
 
 struct LoadOptions {
   std::uint32_t max_states = limits::kDefaultMaxStates;
+  // The command's memory budget in bytes (0: none), for refusing a model file whose header
+  // declares more than reading it could fit (formats::ReadOptions::memory_budget).
+  std::uint64_t memory_budget = 0;
   std::size_t max_spec_bytes = limits::kDefaultMaxSpecBytes;
   std::size_t max_input_bytes = limits::kDefaultMaxInputBytes;  // .aut, .tra, CSV, JSON
   std::size_t max_number_bits = limits::kDefaultMaxNumberBits;

@@ -11,6 +11,7 @@
 #include <string>
 
 #include "codegen/catalog_files.hpp"
+#include "command_line/memory_option.hpp"
 #include "command_line/number_options.hpp"
 #include "command_line/output_names.hpp"
 #include "distributed/context_spreading.hpp"
@@ -40,7 +41,9 @@ std::optional<model::ExplicitModel> load_discrete_model(
   SourceManager sources;
   std::ostringstream others;
   DiagnosticEngine diagnostics(sources, communicator.is_root() ? std::cerr : others);
-  auto loaded = input::load_model(options.spec, sources, diagnostics, options.load);
+  input::LoadOptions load = options.load;
+  load.memory_budget = cli::command_memory_budget();  // each rank loads the whole model
+  auto loaded = input::load_model(options.spec, sources, diagnostics, load);
   if (communicator.any(!loaded || diagnostics.has_errors())) return std::nullopt;
   hash = loaded->source_hash;
   std::string problem;
@@ -157,9 +160,10 @@ CommandRunner add_compile_command(CLI::App& app, const distributed::Communicator
       ->check(cli::whole_in(0, limits::kMaxJobs));
   command
       ->add_option("--max-states", options->load.max_states,
-                   "Stop exploring a factored model past this many states")
+                   "Stop exploring a factored model past this many states (by default only "
+                   "what 32-bit state numbers cannot hold: --memory-budget bounds the model)")
       ->capture_default_str()
-      ->check(cli::whole_in(1, 4'000'000'000U));
+      ->check(cli::whole_in(1, limits::kMaxStates));
   command->add_option("--const", options->load.constants,
                       "PRISM programs: values of undefined constants (N=4,p=0.1)");
   command

@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "command_line/memory_option.hpp"
 #include "command_line/number_options.hpp"
 #include "distributed/distributed_reader.hpp"
 #include "distributed/partition_output.hpp"
@@ -23,6 +24,7 @@
 #include "formats/aut_writer.hpp"
 #include "mpi_cli/commands.hpp"
 #include "support/error_report.hpp"
+#include "support/limits.hpp"
 #include "support/peak_memory.hpp"
 
 namespace oasis::mpi_cli {
@@ -117,8 +119,12 @@ distributed::ReadProgress reading_progress(const Options& options,
 bool run_one(const std::string& path, const Options& options,
              const distributed::Communicator& communicator) {
   const Clock::time_point start = Clock::now();
+  // The budget is each rank's: a header declaring more than a rank's share could fit is
+  // refused before any rank reads its part.
+  formats::ReadOptions read = options.read;
+  read.memory_budget = cli::command_memory_budget();
   std::optional<distributed::OwnedModel> owned = distributed::read_aut_distributed(
-      path, options.read, communicator, reading_progress(options, communicator));
+      path, read, communicator, reading_progress(options, communicator));
   if (!owned) return false;
   distributed::RunFacts facts;
   facts.file = path;
@@ -232,9 +238,11 @@ CommandRunner add_quotient_command(CLI::App& app, const distributed::Communicato
                    ->capture_default_str());
   command
       ->add_option("--max-states", options->read.max_states,
-                   "Refuse files whose header declares more states")
+                   "Refuse files whose header declares more states (by default only what "
+                   "32-bit state numbers cannot hold: --memory-budget, per rank, bounds the "
+                   "model)")
       ->capture_default_str()
-      ->check(cli::whole_in(1, 4'000'000'000U));
+      ->check(cli::whole_in(1, limits::kMaxStates));
   command->add_flag("--rational-sums", options->rational_sums,
                     "Add probabilities with GMP even when integers would be exact (for tests)");
   command->add_flag("--progress", options->progress,

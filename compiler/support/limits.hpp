@@ -61,9 +61,17 @@ inline constexpr unsigned kMaxJobs = 1024;
 
 // --- The work ----------------------------------------------------------------------------
 
-// Exploration of a factored spec, and the state count an .aut or PRISM header may declare,
-// stop past this many states (--max-states).
-inline constexpr std::uint32_t kDefaultMaxStates = 20'000'000;
+// States are numbered with 32 bits, and the largest number marks "no state" where one is
+// needed (the refiners' lists, the state store's slots): no model has more states than this,
+// whatever the options. A header declaring more is refused, naming this limit.
+inline constexpr std::uint32_t kMaxStates = 4'294'967'294;
+
+// Exploration of a factored spec, and the state count a model file's header may declare,
+// stop past this many states (--max-states). By default nothing below the index's limit: what
+// bounds a model is the memory budget (a header declaring more than reading it could fit is
+// refused before the body is read, formats/model_size.hpp; exploration stops with "out of
+// memory"). Until issue 41 the default was 20,000,000, which refused models that fit.
+inline constexpr std::uint32_t kDefaultMaxStates = kMaxStates;
 
 // Diagnostics shown before a command stops (--max-errors).
 inline constexpr std::size_t kDefaultMaxErrors = 20;

@@ -62,7 +62,7 @@ def number_probes(paths):
         yield c + ["--robust", value], 2, "--robust"
     for value in NOT_A_NUMBER + NOT_A_COUNT + ["100000"]:
         yield c + ["-j", value], 2, "--jobs"
-    for value in NOT_A_NUMBER + NOT_A_COUNT + ["0", "4000000001"]:
+    for value in NOT_A_NUMBER + NOT_A_COUNT + ["0", "4294967295"]:  # past 32-bit state numbers
         yield c + ["--max-states", value], 2, "--max-states"
         yield q + ["--max-states", value], 2, "--max-states"
     for value in ["nan", "-1", "+5", "twelve", "1.5.5", "8G!"]:

@@ -205,8 +205,47 @@ TEST_F(AutTest, StateLimitIsEnforcedBeforeAllocating) {
   options_.max_states = 10;
   EXPECT_FALSE(read("des (0,0,11)\n"));
   EXPECT_TRUE(
-      reported("x.aut:1:10: error: the header declares 11 states, more than the limit of 10"))
+      reported("x.aut:1:10: error: the header declares 11 states, more than the limit "
+               "of 10 (raise it with --max-states)"))
       << output();
+}
+
+// Issue 41: without --max-states, only 32-bit state numbers bound the count, and no option
+// raises that.
+TEST_F(AutTest, TheStateIndexIsTheHardLimit) {
+  EXPECT_FALSE(read("des (0,0,4294967295)\n"));
+  EXPECT_TRUE(
+      reported("x.aut:1:10: error: the header declares 4294967295 states, more than the "
+               "4294967294 that oasis can number (states are numbered with 32 bits; no "
+               "option raises this)"))
+      << output();
+}
+
+// Issue 41: a header declaring more than reading it could fit is refused at the header, before
+// the body is read (its bad line is never reported), naming the option that raises the budget.
+TEST_F(AutTest, AHeaderBeyondTheMemoryBudgetIsRefusedBeforeTheBody) {
+  options_.memory_budget = std::uint64_t{1} << 30;
+  // 24 + 8 bytes per transition (one edge each, at least) and 4 per state: 3.24e11 bytes.
+  EXPECT_FALSE(read("des (0,10000000000,1000000000)\n(0,\"a\",1)\n(0,\"b\",x)\n"));
+  EXPECT_TRUE(
+      reported("x.aut:1:8: error: the header declares 10000000000 transitions and "
+               "1000000000 states: reading it takes at least 301.7 GiB, more than the "
+               "memory budget of 1.0 GiB (raise it with --memory-budget)"))
+      << output();
+  EXPECT_FALSE(reported("x.aut:3:")) << output();
+}
+
+TEST_F(AutTest, AModelWithinTheMemoryBudgetIsReadAsWithout) {
+  const std::string text = "des (0,3,2)\n(0,\"a\",1)\n(1,\"a\",0 1/4 1)\n(1,\"b\",1)\n";
+  const std::optional<ExplicitModel> without = read(text);
+  ASSERT_TRUE(without) << output();
+  options_.memory_budget = std::uint64_t{16} << 20;
+  const std::optional<ExplicitModel> with = read(text, "y.aut");
+  ASSERT_TRUE(with) << output();
+  EXPECT_EQ(with->num_states(), without->num_states());
+  EXPECT_EQ(with->actions, without->actions);
+  EXPECT_EQ(probability(*with, 1, "a", 0), Rational(1, 4));
+  EXPECT_EQ(output(), "");
 }
 
 TEST_F(AutTest, SeveralErrorsInOneRun) {

@@ -198,5 +198,35 @@ TEST(AutPart, AHeaderErrorSaysTheHeaderWasNotRead) {
   EXPECT_FALSE(header_read);
 }
 
+// Issue 41: the memory budget is each rank's, and a rank holds about 1/P of the model: a
+// header that 4 ranks cannot hold within 1 GiB each is refused, naming the option and the way
+// out; 64 ranks hold it.
+TEST(AutPart, TheMemoryBudgetIsPerRank) {
+  const std::string text = "des (0,1000000000,100000000)\n(0,\"a\",1)\n";
+  ReadOptions options;
+  options.memory_budget = std::uint64_t{1} << 30;
+  const auto read_first_part = [&](std::uint32_t count, std::string& messages) {
+    SourceManager sources;
+    std::ostringstream out;
+    DiagnosticEngine diagnostics(sources, out);
+    bool header_read = false;
+    const auto part = read_aut_part(
+        sources.add("x.aut", text), diagnostics, options, 0, count, [](const AutLine&) {},
+        header_read);
+    messages = out.str();
+    return part.has_value();
+  };
+  std::string messages;
+  EXPECT_FALSE(read_first_part(4, messages));
+  // A rank's share: 2.5e8 lines of 16 + 8 bytes and 2.5e7 states of 4.
+  EXPECT_NE(messages.find("x.aut:1:8: error: the header declares 1000000000 transitions and "
+                          "100000000 states: reading it takes at least 5.7 GiB on the largest "
+                          "of 4 ranks, more than the memory budget of 1.0 GiB per rank (raise "
+                          "it with --memory-budget, or run on more ranks)"),
+            std::string::npos)
+      << messages;
+  EXPECT_TRUE(read_first_part(64, messages)) << messages;
+}
+
 }  // namespace
 }  // namespace oasis::formats

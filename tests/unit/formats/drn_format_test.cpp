@@ -38,6 +38,33 @@ Read read_text(const std::string& text, const ReadOptions& options = {}) {
   return result;
 }
 
+// Issue 41: '@nr_states' and '@nr_choices' beyond the memory budget are refused before the
+// body is read, naming the option; --max-states, when given, names itself.
+TEST(Drn, AHeaderBeyondTheMemoryBudgetIsRefusedBeforeTheBody) {
+  ReadOptions options;
+  options.memory_budget = std::uint64_t{1} << 30;
+  const std::string header =
+      "@type: MDP\n@value_type: double\n@nr_states\n1000000000\n@nr_choices\n4000000000\n"
+      "@model\nstate 0\n\taction a\n\t\tx : 1\n";
+  const Read read = read_text(header, options);
+  EXPECT_FALSE(read.model);
+  EXPECT_NE(read.messages.find("x.drn:4:1: error: the file declares 1000000000 states and "
+                               "4000000000 choices: reading it takes at least 122.9 GiB, more "
+                               "than the memory budget of 1.0 GiB (raise it with "
+                               "--memory-budget)"),
+            std::string::npos)
+      << read.messages;
+  EXPECT_EQ(read.messages.find("x.drn:10:"), std::string::npos) << read.messages;
+
+  options.memory_budget = 0;
+  options.max_states = 10;
+  const Read capped = read_text(header, options);
+  EXPECT_NE(capped.messages.find("x.drn:4:1: error: the file declares 1000000000 states, more "
+                                 "than the limit of 10 (raise it with --max-states)"),
+            std::string::npos)
+      << capped.messages;
+}
+
 // An MDP with two reward models, labels (one with a blank), a named and an unlabelled choice,
 // exact fractions and decimals, laid out as Storm writes it (its header comments, a blank
 // @parameters line, a trailing blank after the reward model names).

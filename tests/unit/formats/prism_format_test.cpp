@@ -201,6 +201,26 @@ TEST_P(PrismErrorTest, ReportsAtTheRightPlace) {
 
 constexpr const char* kTra = "2 2 3\n0 0 1 0.5 a\n0 0 0 0.5 a\n1 0 1 1\n";
 
+// Issue 41: a header declaring more than reading it could fit is refused before the rows are
+// read, naming the option.
+TEST(PrismFormat, AHeaderBeyondTheMemoryBudgetIsRefusedBeforeTheRows) {
+  SourceManager sources;
+  std::ostringstream out;
+  DiagnosticEngine diagnostics(sources, out);
+  PrismFiles files;
+  files.transitions = sources.add("x.tra", "1000000000 2000000000 3000000000\n0 0 1 x\n");
+  ReadOptions options;
+  options.memory_budget = std::uint64_t{1} << 30;
+  EXPECT_FALSE(read_prism(files, diagnostics, options));
+  EXPECT_NE(out.str().find("x.tra:1:1: error: the header declares 1000000000 states, 2000000000 "
+                           "choices and 3000000000 transitions: reading it takes at least "
+                           "70.8 GiB, more than the memory budget of 1.0 GiB (raise it with "
+                           "--memory-budget)"),
+            std::string::npos)
+      << out.str();
+  EXPECT_EQ(out.str().find("x.tra:2:"), std::string::npos) << out.str();
+}
+
 INSTANTIATE_TEST_SUITE_P(
     Errors, PrismErrorTest,
     ::testing::Values(

@@ -239,6 +239,25 @@ TEST(Umb, ValuationsOfAnotherFormAreReadPastWithAWarning) {
   EXPECT_EQ(read.model->states.valuations, (std::vector<std::int64_t>{9, 0, 13, 1, 11, 0}));
 }
 
+// Issue 41: the index's counts beyond the memory budget are refused before any array of the
+// model is built, naming the option.
+TEST(Umb, AnIndexBeyondTheMemoryBudgetIsRefused) {
+  HandMade file;
+  file.index["transition-system"]["#states"] = 1000000000;
+  file.index["transition-system"]["#choices"] = 4000000000U;
+  file.index["transition-system"]["#branches"] = 4000000000U;
+  ReadOptions options;
+  options.memory_budget = std::uint64_t{1} << 30;
+  const Read read = read_bytes(file.bytes(), options);
+  EXPECT_FALSE(read.model);
+  EXPECT_NE(read.messages.find("x.umb: error: index.json: transition-system: the index declares "
+                               "1000000000 states, 4000000000 choices and 4000000000 branches: "
+                               "reading it takes at least 122.9 GiB, more than the memory "
+                               "budget of 1.0 GiB (raise it with --memory-budget)"),
+            std::string::npos)
+      << read.messages;
+}
+
 TEST(Umb, AMarkovChainHasTheOneActionOfTheOtherReaders) {
   HandMade file;
   file.index["transition-system"]["#players"] = 0;

@@ -198,4 +198,64 @@ TEST_F(Limits, InputFilesLargerThanTheirLimitAreRefused) {
       << json_result.output;
 }
 
+// --- Model sizes (issue 41): the memory budget, not a fixed state count ---------------------
+
+// An .aut file of `transitions` lines over `states` states (a ring, each state's lines to its
+// neighbours), small enough to write in a test and large enough that its reading needs more
+// than a tiny budget: 32 bytes per line at least.
+std::string ring_aut(std::uint32_t states, std::uint32_t transitions) {
+  std::string text = "des (0," + std::to_string(transitions) + "," + std::to_string(states) + ")\n";
+  for (std::uint32_t t = 0; t < transitions; ++t) {
+    const std::uint32_t s = t % states;
+    text += "(" + std::to_string(s) + ",\"a" + std::to_string(t / states) + "\"," +
+            std::to_string((s + 1) % states) + ")\n";
+  }
+  return text;
+}
+
+// A header declaring 4*10^9 states and 10^15 transitions, with one line of body: the default
+// budget (75% of the machine) refuses it at the header, naming the option, and no output is
+// written. Before issue 41 the message named no option, and oasisc read the whole file first.
+TEST_F(Limits, AHeaderBeyondTheDefaultMemoryBudgetIsRefusedNamingTheOption) {
+  const fs::path aut = write("huge.aut", "des (0,1000000000000000,4000000000)\n(0,\"a\",1)\n");
+  const fs::path out = scratch_.path() / "q.json";
+  const CommandResult result =
+      run_oasisc("quotient " + aut.string() + " --format json -o " + out.string());
+  EXPECT_EQ(result.status, 1) << result.output;
+  EXPECT_TRUE(output_has(result,
+                         "huge.aut:1:8: error: the header declares 1000000000000000 transitions "
+                         "and 4000000000 states: reading it takes at least "))
+      << result.output;
+  EXPECT_TRUE(output_has(result, "(raise it with --memory-budget)")) << result.output;
+  EXPECT_FALSE(fs::exists(out));
+}
+
+TEST_F(Limits, ASmallMemoryBudgetRefusesAModelThatOtherwiseLoads) {
+  // 10^6 lines, 2.5*10^5 states: at least 32 MB to read; about 17 MB of file.
+  const fs::path aut = write("ring.aut", ring_aut(250000, 1000000));
+  const CommandResult loads = run_oasisc("check " + aut.string());
+  EXPECT_EQ(loads.status, 0) << loads.output;
+  const CommandResult refused = run_oasisc("check " + aut.string() + " --memory-budget 24M");
+  EXPECT_EQ(refused.status, 1) << refused.output;
+  EXPECT_TRUE(output_has(refused,
+                         "ring.aut:1:8: error: the header declares 1000000 transitions and "
+                         "250000 states: reading it takes at least 31.5 MiB, more than the "
+                         "memory budget of 24.0 MiB (raise it with --memory-budget)"))
+      << refused.output;
+}
+
+TEST_F(Limits, MaxStatesStillCapsWhenGiven) {
+  const fs::path aut = write("ring.aut", ring_aut(2000, 4000));
+  EXPECT_EQ(run_oasisc("check " + aut.string()).status, 0);
+  EXPECT_EQ(run_oasisc("check " + aut.string() + " --max-states 2000").status, 0);
+  const CommandResult capped = run_oasisc("check " + aut.string() + " --max-states 1999");
+  EXPECT_EQ(capped.status, 1) << capped.output;
+  EXPECT_TRUE(output_has(capped,
+                         "ring.aut:1:13: error: the header declares 2000 states, more than the "
+                         "limit of 1999 (raise it with --max-states)"))
+      << capped.output;
+  // Past 32-bit state numbers the option itself is refused: no cap can be set there.
+  EXPECT_EQ(run_oasisc("check " + aut.string() + " --max-states 4294967295").status, 2);
+}
+
 }  // namespace
