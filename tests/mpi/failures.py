@@ -83,6 +83,16 @@ def main():
     expect_clean_failure(out_dir, result, "a bad header")
     check(result.stderr.count("bad_header.aut:1:") == 1, "the header's error is reported once, not per rank", result)
 
+    # Issue 41: the memory budget is each rank's. A header that 4 ranks cannot hold within
+    # 64 MiB each is refused at once, before any rank reads its part, once, naming the option.
+    huge = work / "huge_header.aut"
+    huge.write_text("des (0,100000000,25000000)\n(0,\"a\",1)\n")
+    result = mpirun(4, [args.oasisc_mpi, "quotient", str(huge), "-o", output, "--memory-budget", "64M"])
+    expect_clean_failure(out_dir, result, "a header beyond the budget per rank")
+    check(result.stderr.count("huge_header.aut:1:8: error: the header declares 100000000 transitions") == 1
+          and "more than the memory budget of 64.0 MiB per rank (raise it with --memory-budget, or run on more ranks)"
+          in result.stderr, "the header's size is refused once, naming --memory-budget", result)
+
     repeated = work / "repeated.aut"
     repeated.write_text(chain_text(n, repeat=1))  # state 1's second line is in the last part
     result = mpirun(4, [args.oasisc_mpi, "quotient", str(repeated), "-o", output])
