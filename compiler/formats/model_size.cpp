@@ -73,15 +73,21 @@ std::optional<std::string> memory_refusal(const DeclaredSize& size, const ReadOp
   if (options.memory_budget == 0) return std::nullopt;
   const std::uint64_t needed = least_reading_bytes(size, ranks);
   if (needed <= options.memory_budget) return std::nullopt;
+  std::string needed_text = describe(needed);
+  std::string budget_text = describe(options.memory_budget);
+  if (needed_text == budget_text) {  // "3.2 KiB, more than 3.2 KiB" would say nothing
+    needed_text = std::to_string(needed) + " bytes";
+    budget_text = std::to_string(options.memory_budget) + " bytes";
+  }
   if (ranks) {
     const std::string where =
         *ranks == 1 ? " on one rank" : " on the largest of " + std::to_string(*ranks) + " ranks";
-    return "reading it takes at least " + describe(needed) + where +
-           ", more than the memory budget of " + describe(options.memory_budget) +
+    return "reading it takes at least " + needed_text + where +
+           ", more than the memory budget of " + budget_text +
            " per rank (raise it with --memory-budget, or run on more ranks)";
   }
-  return "reading it takes at least " + describe(needed) + ", more than the memory budget of " +
-         describe(options.memory_budget) + " (raise it with --memory-budget)";
+  return "reading it takes at least " + needed_text + ", more than the memory budget of " +
+         budget_text + " (raise it with --memory-budget)";
 }
 
 }  // namespace oasis::formats
