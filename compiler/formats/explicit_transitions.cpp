@@ -91,8 +91,8 @@ class TransitionsReader {
     result_.num_states = static_cast<std::uint32_t>(numbers[0]);
     declared_choices_ = result_.markov_chain ? 0 : numbers[1];
     declared_rows_ = numbers[count - 1];
-    // Before the body is read or anything is reserved for it. A Markov chain's rows are its
-    // edges and its choices, one per state at most.
+    // Before the body is read or anything is reserved for it. A Markov chain's header counts
+    // its rows (edges) only; its choices, one per state with rows, are left out of the bound.
     const DeclaredSize size{.states = numbers[0],
                             .choices = result_.markov_chain ? 0 : declared_choices_,
                             .edges = declared_rows_};

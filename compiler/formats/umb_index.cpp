@@ -167,15 +167,16 @@ void read_transition_system(const Json& ts, const ReadOptions& options, UmbIndex
   const std::uint64_t states = count_at(ts, "#states", where, UINT64_MAX);
   if (const auto refusal = state_count_refusal(std::to_string(states), states, options))
     fail(where + "\"#states\" is " + *refusal);
-  index.num_states = static_cast<std::uint32_t>(states);
+  index.num_states = states;
   if (index.num_states == 0) fail(where + "\"#states\" is 0: the model has no states");
   index.num_initial_states = count_at(ts, "#initial-states", where, index.num_states);
   // Edge and choice indices are 32-bit.
   index.num_choices = count_at(ts, "#choices", where, UINT32_MAX - 1);
   index.num_choice_actions = count_at(ts, "#choice-actions", where, UINT32_MAX);
   index.num_branches = count_at(ts, "#branches", where, UINT32_MAX - 2);
-  // The index is read before any array of the archive: a model whose reading alone would not
-  // fit the memory budget is refused here.
+  // The index is read before the model's arrays are decoded from the archive's entries (the
+  // entries themselves are unpacked already: a tar may hold them in any order). A model whose
+  // reading alone would not fit the memory budget is refused here.
   const DeclaredSize size{
       .states = states, .choices = index.num_choices, .edges = index.num_branches};
   if (const auto refusal = memory_refusal(size, options)) {
