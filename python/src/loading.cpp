@@ -8,6 +8,7 @@
 #include <pybind11/stl.h>
 
 #include "bindings.hpp"
+#include "command_line/memory_budget.hpp"
 #include "errors.hpp"
 #include "input/model_loader.hpp"
 #include "interruptible.hpp"
@@ -131,6 +132,14 @@ ModelPointer build_program(const PrismProgram& program, const std::string& rewar
   });
 }
 
+// What oasisc's default --memory-budget ("auto") allows, 0 when the machine's memory is
+// unknown: a model file whose header declares more than reading it could fit is refused at
+// once (formats/model_size.hpp), before Python's process asks for it.
+std::uint64_t default_memory_budget() {
+  std::string ignored;
+  return parse_memory_budget("auto", ignored).value_or(0);
+}
+
 ModelPointer load_file(const std::string& path, const std::optional<py::dict>& constants,
                        const py::handle& rewards, std::uint32_t max_states) {
   input::LoadOptions options;
@@ -138,6 +147,7 @@ ModelPointer load_file(const std::string& path, const std::optional<py::dict>& c
   options.rewards = rewards_text(rewards);
   options.hash_source = false;
   options.max_states = max_states;
+  options.memory_budget = default_memory_budget();
   return run_interruptible([&](const Cancellation& cancellation) {
     options.on_progress = [&](std::uint64_t, std::uint64_t) { cancellation.check(); };
     Diagnostics diagnostics;
@@ -194,7 +204,8 @@ void bind_loading(py::module_& module) {
              py::arg("rewards") = py::none(), py::arg("max_states") = limits::kDefaultMaxStates,
              "Loads any model oasisc reads, as it reads it: a spec (.oasis), a PRISM program "
              "(.pm, .nm, .prism), or an explicit model (.aut, .tra with its .lab/.srew/.trew, "
-             ".drn, .umb). Raises SpecError with every problem located.");
+             ".drn, .umb). Raises SpecError with every problem located, also when a model "
+             "file's header declares more than 75% of the machine's memory could hold.");
 }
 
 }  // namespace oasis::python

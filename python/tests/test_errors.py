@@ -31,6 +31,16 @@ def test_spec_error_is_located(tmp_path):
     assert str(bad) + ":4:" in str(raised.value)  # the text oasisc prints
 
 
+def test_header_beyond_the_memory_budget(tmp_path):
+    # As oasisc's default --memory-budget: refused in the header, before the body is read.
+    huge = tmp_path / "huge.aut"
+    huge.write_text("des (0, 1000000000000000, 1000000)\n(0, \"a\", 0)\n")
+    with pytest.raises(oasis.SpecError) as raised:
+        oasis.load_model(str(huge))
+    first = raised.value.diagnostics[0]
+    assert first.line == 1 and "memory budget" in first.message
+
+
 def test_several_errors_in_one_run(tmp_path):
     bad = tmp_path / "two.pm"
     bad.write_text("dtmc\nmodule m\n  x : [0..1] init y;\n  [] x=0 -> (z'=1);\nendmodule\n")
