@@ -5,7 +5,7 @@
 #include <stdexcept>
 #include <thread>
 
-#include "model/enclosure.hpp"
+#include "model/enclosure_program.hpp"
 
 namespace oasis::guarantee {
 namespace {
@@ -31,6 +31,13 @@ struct Chunk {
   std::vector<double> upper;
 };
 
+// What one thread reuses from cell to cell: the cell, its enclosure, the programs' scratch.
+struct Workspace {
+  std::vector<model::Interval> box;
+  std::vector<model::Interval> mean;
+  model::EnclosureScratch scratch;
+};
+
 class RowBuilder {
  public:
   RowBuilder(const model::ModelIR& ir, const UniformGrid& grid,
@@ -46,21 +53,24 @@ class RowBuilder {
       std::vector<model::Interval> inputs;
       for (const Rational& value : choice.inputs)
         inputs.push_back(model::from_rational(value));
-      inputs_.push_back(std::move(inputs));
+      // Compiled once per action and inputs: the map over every cell is then a flat program
+      // with the input-only parts evaluated (model/enclosure_program.hpp).
+      programs_.emplace_back(map.next, grid.dimension(), inputs);
     }
   }
 
-  void build(std::size_t cell, Chunk& out) const {
+  void build(std::size_t cell, Chunk& out, Workspace& work) const {
     const std::size_t d = grid_.dimension();
-    std::vector<model::Interval> box(d);
+    std::vector<model::Interval>& box = work.box;
+    box.resize(d);
     for (std::size_t i = 0; i < d; ++i) {
       const std::size_t k = grid_.coordinate(cell, i);
       box[i] = model::Interval{grid_.breaks[i][k], grid_.breaks[i][k + 1]};
     }
-    const model::ContextIR& context = ir_.contexts.front();
+    std::vector<model::Interval>& mean = work.mean;
     for (std::size_t a = 0; a < actions_.size(); ++a) {
-      const model::MapDynamics& map = *context.maps[actions_[a].action];
-      const std::vector<model::Interval> mean = model::enclose_map(map.next, box, inputs_[a]);
+      mean.resize(programs_[a].components());
+      programs_[a].enclose(box, work.scratch, mean);
       for (std::size_t i = 0; i < d; ++i) {
         AxisRow row = axis_row(noise_[a][i], mean[i].lo, mean[i].hi, grid_.breaks[i]);
         AxisSlice slice;
@@ -82,7 +92,7 @@ class RowBuilder {
   const UniformGrid& grid_;
   const std::vector<ActionChoice>& actions_;
   std::vector<std::vector<AxisNoise>> noise_;
-  std::vector<std::vector<model::Interval>> inputs_;
+  std::vector<model::EnclosureProgram> programs_;
 };
 
 void append(IntervalMdp& mdp, Chunk& chunk) {
@@ -159,10 +169,11 @@ IntervalMdp build_interval_mdp(const model::ModelIR& ir, const BuildOptions& opt
   // A first sample of cells spread over the grid sizes the abstraction before it is built.
   {
     Chunk sample;
+    Workspace workspace;
     const std::size_t step = std::max<std::size_t>(1, cells / 64);
     std::size_t sampled = 0;
     for (std::size_t cell = 0; cell < cells; cell += step, ++sampled)
-      builder.build(cell, sample);
+      builder.build(cell, sample, workspace);
     check_budget(sample, sampled, cells, options.memory_budget);
   }
   const unsigned jobs = std::max(1u, options.jobs);
@@ -174,8 +185,9 @@ IntervalMdp build_interval_mdp(const model::ModelIR& ir, const BuildOptions& opt
       try {
         const std::size_t from = begin + j * kBlock;
         const std::size_t to = std::min(cells, from + kBlock);
+        Workspace workspace;
         for (std::size_t cell = from; cell < to; ++cell)
-          builder.build(cell, chunks[j]);
+          builder.build(cell, chunks[j], workspace);
       } catch (...) {
         errors[j] = std::current_exception();
       }

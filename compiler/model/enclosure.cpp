@@ -6,8 +6,22 @@
 #include <limits>
 #include <utility>
 
+#include "model/enclosure_rules.hpp"
+
 namespace oasis::model {
 namespace {
+
+using enclosure_rules::binary;
+using enclosure_rules::disallowed_name;
+using enclosure_rules::exponent;
+using enclosure_rules::is_allowed;
+using enclosure_rules::is_binary;
+using enclosure_rules::is_leaf;
+using enclosure_rules::is_unary;
+using enclosure_rules::kOne;
+using enclosure_rules::operand;
+using enclosure_rules::unary;
+using enclosure_rules::unary_derivative;
 
 // Where the variables of an expression range: the box holds the continuous variables, by slot,
 // and `inputs` the inputs.
@@ -19,73 +33,6 @@ struct Ranges {
 // A piece narrower than this fraction of the domain on every axis is not bisected further: a
 // failure there is taken to be real (find_domain_error).
 constexpr double kTinyFraction = 1e-9;
-
-// The operations the dynamics may use.
-bool is_leaf(Op op) {
-  return op == Op::Constant || op == Op::ContinuousVariable || op == Op::InputVariable;
-}
-
-bool is_unary(Op op) {
-  switch (op) {
-    case Op::Negate:
-    case Op::Abs:
-    case Op::Sin:
-    case Op::Cos:
-    case Op::Tan:
-    case Op::Atan:
-    case Op::Exp:
-    case Op::Log:
-    case Op::Sqrt:
-      return true;
-    default:
-      return false;
-  }
-}
-
-bool is_binary(Op op) {
-  switch (op) {
-    case Op::Add:
-    case Op::Subtract:
-    case Op::Multiply:
-    case Op::Divide:
-    case Op::Min:
-    case Op::Max:
-      return true;
-    default:
-      return false;
-  }
-}
-
-bool is_allowed(Op op) {
-  return is_leaf(op) || is_unary(op) || is_binary(op) || op == Op::Power;
-}
-
-// What the message calls an operation the dynamics may not use.
-std::string_view disallowed_name(Op op) {
-  switch (op) {
-    case Op::Variable:
-      return "a discrete variable";
-    case Op::StateIs:
-      return "a state test";
-    case Op::RegionIs:
-      return "a region";
-    case Op::Floor:
-      return "floor";
-    case Op::Ceil:
-      return "ceil";
-    case Op::Mod:
-    case Op::ModPositive:
-      return "mod";
-    case Op::IfThenElse:
-      return "a conditional (c ? a : b)";
-    case Op::Not:
-    case Op::And:
-    case Op::Or:
-      return "a boolean operator";
-    default:
-      return "a comparison";
-  }
-}
 
 // Refused before anything is evaluated, so the message names the construct, not what an
 // evaluation inside it happened to meet.
@@ -106,13 +53,6 @@ auto at(const Expression& f, Operation operation) -> decltype(operation()) {
   }
 }
 
-// Operand i of f; a tree with too few operands is a bug of its builder.
-const Expression& operand(const Expression& f, std::size_t i) {
-  if (i >= f.operands.size())
-    throw std::invalid_argument("a malformed expression: an operand is missing");
-  return f.operands[i];
-}
-
 // A variable's range by slot; a slot beyond the ranges given is the caller's bug.
 Interval variable(const Expression& f, std::span<const Interval> values) {
   if (f.slot >= values.size()) {
@@ -128,58 +68,6 @@ Interval leaf(const Expression& f, const Ranges& ranges) {
   if (f.op == Op::ContinuousVariable) return variable(f, ranges.box);
   if (f.op == Op::InputVariable) return variable(f, ranges.inputs);
   return at(f, [&] { return from_rational(f.constant); });
-}
-
-// The exponent of x^n: an integer constant (the checker folds constant expressions).
-std::int64_t exponent(const Expression& power_node) {
-  const Expression& e = operand(power_node, 1);
-  Rational n = e.constant;
-  n.canonicalize();
-  if (e.op != Op::Constant || n.get_den() != 1 || !n.get_num().fits_slong_p()) {
-    throw EnclosureError(e.range, "the exponent must be an integer constant here");
-  }
-  return n.get_num().get_si();
-}
-
-// The interval operation of each op (is_unary, is_binary), shared by both enclosures.
-Interval unary(Op op, Interval x) {
-  switch (op) {
-    case Op::Negate:
-      return -x;
-    case Op::Abs:
-      return abs(x);
-    case Op::Sin:
-      return sin(x);
-    case Op::Cos:
-      return cos(x);
-    case Op::Tan:
-      return tan(x);
-    case Op::Atan:
-      return atan(x);
-    case Op::Exp:
-      return exp(x);
-    case Op::Log:
-      return log(x);
-    default:
-      return sqrt(x);
-  }
-}
-
-Interval binary(Op op, Interval x, Interval y) {
-  switch (op) {
-    case Op::Add:
-      return x + y;
-    case Op::Subtract:
-      return x - y;
-    case Op::Multiply:
-      return x * y;
-    case Op::Divide:
-      return x / y;
-    case Op::Min:
-      return min(x, y);
-    default:
-      return max(x, y);
-  }
 }
 
 // Bottom-up interval evaluation; a refusal carries the range of the node that refused.
@@ -230,34 +118,6 @@ Gradient hulled(const Gradient& a, const Gradient& b) {
   for (std::size_t j = 0; j < a.size(); ++j)
     result.push_back(hull(a[j], b[j]));
   return result;
-}
-
-constexpr Interval kOne{1, 1};
-
-// The chain rule's factor of a unary operation: its derivative at x, whose result is `value`.
-Interval unary_derivative(Op op, Interval x, Interval value) {
-  switch (op) {
-    case Op::Negate:
-      return {-1, -1};
-    case Op::Abs:
-      if (x.lo >= 0) return kOne;
-      if (x.hi <= 0) return {-1, -1};
-      return {-1, 1};
-    case Op::Sin:
-      return cos(x);
-    case Op::Cos:
-      return -sin(x);
-    case Op::Tan:
-      return kOne + power(value, 2);
-    case Op::Atan:
-      return kOne / (kOne + power(x, 2));
-    case Op::Exp:
-      return value;
-    case Op::Log:
-      return kOne / x;
-    default:  // sqrt: 1 / (2 sqrt(x)), refused where sqrt(x) reaches 0
-      return kOne / (Interval{2, 2} * value);
-  }
 }
 
 // The gradient of a binary operation from its operands' values and gradients (`value` is the
