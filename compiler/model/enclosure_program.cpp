@@ -1,6 +1,7 @@
 #include "model/enclosure_program.hpp"
 
 #include <algorithm>
+#include <bit>
 #include <limits>
 #include <stdexcept>
 #include <utility>
@@ -63,91 +64,161 @@ Interval value_of(const Instruction& in, std::span<const Interval> values,
   raise(tables.failures[in.a]);
 }
 
+// ---- Gradients, sparse ----
+// An instruction's `mask` says which partial derivatives may be nonzero (bit j: d/dx_j; every
+// bit when there are more than 64 variables). The others are exactly [+0, +0] in the tree
+// walk: a zero partial times any finite factor, or plus another zero partial, is [+0, +0]
+// again, and such an operation cannot throw. So only the partials in the mask are computed
+// (each by the tree walk's formula, an operand's partial outside its mask read as [+0, +0])
+// and the rest are neither computed nor stored.
+
+constexpr std::size_t kMaskBits = 64;
+
+bool has(std::uint64_t mask, std::size_t j) {
+  return j >= kMaskBits || ((mask >> j) & 1U) != 0;
+}
+
+// Calls visit(j) for each partial in `mask` below d.
+template <typename Visit>
+void for_each_partial(std::uint64_t mask, std::size_t d, Visit visit) {
+  if (d > kMaskBits) {
+    for (std::size_t j = 0; j < d; ++j)
+      visit(j);
+    return;
+  }
+  for (std::uint64_t m = d == kMaskBits ? mask : mask & ((std::uint64_t{1} << d) - 1); m != 0;
+       m &= m - 1) {
+    visit(static_cast<std::size_t>(std::countr_zero(m)));
+  }
+}
+
+// An operand's gradient: its stored partials, and [+0, +0] outside its mask.
+struct Partials {
+  const Interval* stored;
+  std::uint64_t mask;
+  Interval operator[](std::size_t j) const { return has(mask, j) ? stored[j] : kZero; }
+};
+
 // g = du * factor, componentwise (the tree walk's `scaled`).
-void scale(const Interval* du, Interval factor, Interval* g, std::size_t d) {
-  for (std::size_t j = 0; j < d; ++j)
-    g[j] = du[j] * factor;
+void scale(Partials du, Interval factor, Interval* g, std::uint64_t mask, std::size_t d) {
+  for_each_partial(mask, d, [&](std::size_t j) { g[j] = du[j] * factor; });
 }
 
 // The gradient of min (is_min) or max: one operand's where their ranges do not overlap, the
 // hull of both at a possible kink.
-void extremum_gradient(bool is_min, Interval u, Interval v, const Interval* du, const Interval* dv,
-                       Interval* g, std::size_t d) {
+void extremum_gradient(bool is_min, Interval u, Interval v, Partials du, Partials dv, Interval* g,
+                       std::uint64_t mask, std::size_t d) {
   const bool first = is_min ? u.hi <= v.lo : u.lo >= v.hi;
   const bool second = is_min ? v.hi <= u.lo : v.lo >= u.hi;
-  for (std::size_t j = 0; j < d; ++j)
+  for_each_partial(mask, d, [&](std::size_t j) {
     g[j] = first ? du[j] : second ? dv[j] : hull(du[j], dv[j]);
+  });
 }
 
 // The product, quotient and sum rules, in the order of the tree walk's binary_gradient.
-void binary_gradient(Op op, Interval u, Interval v, Interval value, const Interval* du,
-                     const Interval* dv, Interval* g, std::size_t d) {
+void binary_gradient(Op op, Interval u, Interval v, Interval value, Partials du, Partials dv,
+                     Interval* g, std::uint64_t mask, std::size_t d) {
   switch (op) {
     case Op::Add:
-      for (std::size_t j = 0; j < d; ++j)
-        g[j] = du[j] + dv[j];
+      for_each_partial(mask, d, [&](std::size_t j) { g[j] = du[j] + dv[j]; });
       return;
     case Op::Subtract:
-      for (std::size_t j = 0; j < d; ++j)
-        g[j] = du[j] + dv[j] * kMinusOne;
+      for_each_partial(mask, d, [&](std::size_t j) { g[j] = du[j] + dv[j] * kMinusOne; });
       return;
     case Op::Multiply:
-      for (std::size_t j = 0; j < d; ++j)
-        g[j] = du[j] * v + dv[j] * u;
+      for_each_partial(mask, d, [&](std::size_t j) { g[j] = du[j] * v + dv[j] * u; });
       return;
     case Op::Divide: {  // (u' - (u / v) v') / v
       const Interval minus_quotient = -value;
       const Interval reciprocal = rules::kOne / v;
-      for (std::size_t j = 0; j < d; ++j)
-        g[j] = (du[j] + dv[j] * minus_quotient) * reciprocal;
+      for_each_partial(
+          mask, d, [&](std::size_t j) { g[j] = (du[j] + dv[j] * minus_quotient) * reciprocal; });
       return;
     }
     default:
-      extremum_gradient(op == Op::Min, u, v, du, dv, g, d);
+      extremum_gradient(op == Op::Min, u, v, du, dv, g, mask, d);
   }
 }
 
 // (u^n)' = n u^(n-1) u', refused for the one n whose n - 1 does not exist.
-void power_gradient(const Instruction& in, Interval u, const Interval* du, Interval* g,
+void power_gradient(const Instruction& in, Interval u, Partials du, Interval* g,
                     const Tables& tables) {
-  const std::size_t d = tables.dimension;
-  if (in.exponent == 0) {
-    std::fill(g, g + d, kZero);
+  if (in.exponent == 0) {  // a zero gradient: its mask is empty unless the masks are dense
+    for_each_partial(in.mask, tables.dimension, [&](std::size_t j) { g[j] = kZero; });
     return;
   }
   if (in.exponent == std::numeric_limits<std::int64_t>::min()) {
     throw EnclosureError(tables.locations[in.where], "the exponent is too large to differentiate");
   }
-  scale(du, in.exponent_factor * power(u, in.exponent - 1), g, d);
+  scale(du, in.exponent_factor * power(u, in.exponent - 1), g, in.mask, tables.dimension);
 }
 
-// The gradient of instruction `slot` (the tree walk's `differentiate`), from the ranges in
-// `values` and the operands' gradients, `dimension` intervals per slot in `gradients`.
-void gradient_of(const Instruction& in, std::size_t slot, std::span<const Interval> values,
-                 std::span<Interval> gradients, const Tables& tables) {
+// The gradient of code[slot] (the tree walk's `differentiate`), from the ranges in `values`
+// and the operands' gradients, `dimension` intervals per slot in `gradients`.
+void gradient_of(std::span<const Instruction> code, std::size_t slot,
+                 std::span<const Interval> values, std::span<Interval> gradients,
+                 const Tables& tables) {
+  const Instruction& in = code[slot];
   const std::size_t d = tables.dimension;
   Interval* g = gradients.data() + slot * d;
-  const Interval* du = gradients.data() + in.a * d;
+  auto operand = [&](std::uint32_t k) { return Partials{gradients.data() + k * d, code[k].mask}; };
   switch (in.code) {
-    case Code::kLoad:
-      std::copy_n(tables.loaded_gradients.data() + in.a * d, d, g);
+    case Code::kLoad: {
+      const Interval* stored = tables.loaded_gradients.data() + in.a * d;
+      for_each_partial(in.mask, d, [&](std::size_t j) { g[j] = stored[j]; });
       return;
+    }
     case Code::kVariable:
-      std::fill(g, g + d, kZero);
+      for_each_partial(in.mask, d, [&](std::size_t j) { g[j] = kZero; });
       g[in.a] = rules::kOne;
       return;
     case Code::kUnary:
-      scale(du, rules::unary_derivative(in.op, values[in.a], values[slot]), g, d);
+      scale(operand(in.a), rules::unary_derivative(in.op, values[in.a], values[slot]), g, in.mask,
+            d);
       return;
     case Code::kBinary:
-      binary_gradient(in.op, values[in.a], values[in.b], values[slot], du,
-                      gradients.data() + in.b * d, g, d);
+      binary_gradient(in.op, values[in.a], values[in.b], values[slot], operand(in.a), operand(in.b),
+                      g, in.mask, d);
       return;
     case Code::kPower:
-      power_gradient(in, values[in.a], du, g, tables);
+      power_gradient(in, values[in.a], operand(in.a), g, tables);
       return;
     case Code::kFail:
       raise(tables.failures[in.a]);
+  }
+}
+
+// Each instruction's mask, from its operands' (a load's from the partials it holds).
+void set_masks(std::span<Instruction> code, std::span<const Interval> loaded_gradients,
+               std::size_t d) {
+  const bool dense = d > kMaskBits;
+  for (Instruction& in : code) {
+    std::uint64_t mask = 0;
+    switch (in.code) {
+      case Code::kLoad:
+        for (std::size_t j = 0; j < std::min(d, kMaskBits); ++j) {
+          const Interval partial = loaded_gradients[in.a * d + j];
+          const bool zero = std::bit_cast<std::uint64_t>(partial.lo) == 0 &&
+                            std::bit_cast<std::uint64_t>(partial.hi) == 0;  // +0, not -0
+          if (!zero) mask |= std::uint64_t{1} << j;
+        }
+        break;
+      case Code::kVariable:
+        mask = std::uint64_t{1} << in.a;
+        break;
+      case Code::kUnary:
+        mask = code[in.a].mask;
+        break;
+      case Code::kPower:
+        mask = in.exponent == 0 ? 0 : code[in.a].mask;
+        break;
+      case Code::kBinary:
+        mask = code[in.a].mask | code[in.b].mask;
+        break;
+      case Code::kFail:
+        break;
+    }
+    in.mask = dense ? ~std::uint64_t{0} : mask;
   }
 }
 
@@ -188,7 +259,9 @@ class ProgramBuilder {
     (void)translate(component);
     const std::vector<Instruction> full = std::move(code_);
     code_.clear();  // relinked() emits the bound program here
-    return bound(full);
+    std::vector<Instruction> code = bound(full);
+    set_masks(code, program_.loaded_gradients_, program_.dimension_);
+    return code;
   }
 
  private:
@@ -300,7 +373,7 @@ class ProgramBuilder {
       for (std::size_t i = 0; i < full.size(); ++i) {
         if (depends[i]) continue;
         values[i] = value_of(full[i], values, {}, view);
-        gradient_of(full[i], i, values, gradients, view);
+        gradient_of(full, i, values, gradients, view);  // dense: masks are set afterwards
       }
     } catch (const std::exception&) {
       return full;
@@ -396,7 +469,7 @@ void EnclosureProgram::run_gradients(std::span<const Instruction> code,
   std::size_t i = 0;
   try {
     for (; i < code.size(); ++i)
-      gradient_of(code[i], i, values, gradients, view);
+      gradient_of(code, i, values, gradients, view);
   } catch (const IntervalError& error) {
     throw EnclosureError(locations_[code[i].where], error.what());
   }
@@ -411,7 +484,7 @@ void EnclosureProgram::run_dual(std::span<const Instruction> code, std::span<con
   try {
     for (; i < code.size(); ++i) {
       values[i] = value_of(code[i], values, box, view);
-      gradient_of(code[i], i, values, gradients, view);
+      gradient_of(code, i, values, gradients, view);
     }
   } catch (const IntervalError& error) {
     throw EnclosureError(locations_[code[i].where], error.what());
@@ -419,13 +492,16 @@ void EnclosureProgram::run_dual(std::span<const Instruction> code, std::span<con
 }
 
 // f(c) + sum_j df/dx_j(box) * (box_j - c_j), its errors placed at the component.
-Interval EnclosureProgram::mean_value_sum(const Component& component, Interval at_centre,
-                                          std::span<const Interval> gradient,
+Interval EnclosureProgram::mean_value_sum(const Component& component,
+                                          std::span<const Instruction> code, Interval at_centre,
+                                          std::span<const Interval> gradients,
                                           std::span<const Interval> box,
                                           std::span<const Interval> centre) const {
+  const std::size_t root = code.size() - 1;
+  const Partials gradient{gradients.data() + root * dimension_, code[root].mask};
   try {
     Interval range = at_centre;
-    for (std::size_t j = 0; j < dimension_; ++j)
+    for (std::size_t j = 0; j < dimension_; ++j)  // every partial, zero or not, as the tree walk
       range = range + gradient[j] * (box[j] - centre[j]);
     return range;
   } catch (const IntervalError& error) {
@@ -448,9 +524,8 @@ Interval EnclosureProgram::mean_value(std::size_t component, std::span<const Int
   run_values(code, scratch.centre, scratch.centre_values);
   run_dual(code, box, scratch.values, scratch.gradients);
   const std::size_t root = code.size() - 1;
-  return mean_value_sum(components_[component], scratch.centre_values[root],
-                        std::span(scratch.gradients).subspan(root * dimension_, dimension_), box,
-                        scratch.centre);
+  return mean_value_sum(components_[component], code, scratch.centre_values[root],
+                        scratch.gradients, box, scratch.centre);
 }
 
 // Per component, as enclose_map: the natural range (its errors propagate), then the
@@ -468,9 +543,8 @@ void EnclosureProgram::enclose(std::span<const Interval> box, EnclosureScratch& 
     try {
       run_values(code, scratch.centre, scratch.centre_values);
       run_gradients(code, scratch.values, scratch.gradients);
-      mean_value_range = mean_value_sum(
-          components_[c], scratch.centre_values[root],
-          std::span(scratch.gradients).subspan(root * dimension_, dimension_), box, scratch.centre);
+      mean_value_range = mean_value_sum(components_[c], code, scratch.centre_values[root],
+                                        scratch.gradients, box, scratch.centre);
     } catch (const EnclosureError&) {
       out[c] = natural_range;
       continue;

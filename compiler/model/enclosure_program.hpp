@@ -77,6 +77,9 @@ class EnclosureProgram {
     std::uint32_t where = 0;  // index into locations_: where an interval error is placed
     std::int64_t exponent = 0;
     Interval exponent_factor;  // the exponent as an interval: the power rule's factor
+    // Bit j: d/dx_j may be nonzero (the others are exactly [+0, +0] and not computed); every
+    // bit until the program is complete, and when there are more than 64 variables.
+    std::uint64_t mask = ~std::uint64_t{0};
   };
   // A refusal found while translating: an EnclosureError at `where`, or a malformed tree
   // (std::invalid_argument).
@@ -102,8 +105,9 @@ class EnclosureProgram {
                      std::span<Interval> gradients) const;
   void run_dual(std::span<const Instruction> code, std::span<const Interval> box,
                 std::span<Interval> values, std::span<Interval> gradients) const;
-  [[nodiscard]] Interval mean_value_sum(const Component& component, Interval at_centre,
-                                        std::span<const Interval> gradient,
+  [[nodiscard]] Interval mean_value_sum(const Component& component,
+                                        std::span<const Instruction> code, Interval at_centre,
+                                        std::span<const Interval> gradients,
                                         std::span<const Interval> box,
                                         std::span<const Interval> centre) const;
 
