@@ -300,16 +300,20 @@ class ProgramBuilder {
     return load(value, zero);
   }
 
+  // What the tree walk throws for a variable it has no range for (a bug of the caller).
+  std::uint32_t fail_beyond(const Expression& f) {
+    return fail(false, f.range,
+                "a variable's slot " + std::to_string(f.slot) + " is beyond the ranges given");
+  }
+
   // Variables read the box (or the inputs, fixed here); constants are converted once.
   std::uint32_t translate_leaf(const Expression& f) {
-    const std::string beyond =
-        "a variable's slot " + std::to_string(f.slot) + " is beyond the ranges given";
     if (f.op == Op::ContinuousVariable) {
-      if (f.slot >= program_.dimension_) return fail(false, f.range, beyond);
+      if (f.slot >= program_.dimension_) return fail_beyond(f);
       return emit(instruction(Code::kVariable, f.op, f.slot, 0, 0));
     }
     if (f.op == Op::InputVariable) {
-      if (f.slot >= inputs_.size()) return fail(false, f.range, beyond);
+      if (f.slot >= inputs_.size()) return fail_beyond(f);
       return load_leaf(inputs_[f.slot]);
     }
     try {
@@ -533,6 +537,8 @@ Interval EnclosureProgram::mean_value(std::size_t component, std::span<const Int
 // both forms: the tree walk computes them twice, with the same result.
 void EnclosureProgram::enclose(std::span<const Interval> box, EnclosureScratch& scratch,
                                std::span<Interval> out) const {
+  if (out.size() != components_.size())
+    throw std::invalid_argument("an enclosure's output needs one interval per component");
   prepare(box, scratch);
   for (std::size_t c = 0; c < components_.size(); ++c) {
     const std::span<const Instruction> code = code_of(c);
