@@ -156,6 +156,45 @@ TEST(Interval, ExactResultsAreNotWidened) {
   EXPECT_TRUE(exact(hundredth.hi) > exact(0.1) * exact(0.1));
 }
 
+// interval.cpp steps to a neighbouring double by its bit pattern, not by std::nextafter; the
+// widened end points must be nextafter's bit for bit, across signs, zero, subnormals and the
+// largest double (the test's next_up and next_down are std::nextafter).
+TEST(Interval, WideningStepsAreNextafters) {
+  constexpr double kTiny = std::numeric_limits<double>::denorm_min();
+  constexpr double kMax = std::numeric_limits<double>::max();
+  // A product below 2^-450 in both operands: both sides widened, around 0 and around a
+  // subnormal.
+  const Interval zero = Interval::point(1e-300) * Interval::point(1e-300);
+  EXPECT_EQ(zero.lo, next_down(0.0));
+  EXPECT_EQ(zero.hi, next_up(0.0));
+  const Interval negative_zero = Interval::point(-1e-300) * Interval::point(1e-300);
+  EXPECT_EQ(negative_zero.lo, next_down(-0.0));
+  EXPECT_EQ(negative_zero.hi, next_up(-0.0));
+  const Interval subnormal = Interval::point(0x1p-520) * Interval::point(-0x1p-520);
+  EXPECT_EQ(subnormal.lo, next_down(-0x1p-1040));
+  EXPECT_EQ(subnormal.hi, next_up(-0x1p-1040));
+  // Sums rounded on one side, both signs; and near the largest double.
+  const Interval up = Interval::point(1) + Interval::point(1e-20);
+  EXPECT_EQ(up.hi, next_up(1.0));
+  const Interval down = Interval::point(-1) + Interval::point(-1e-20);
+  EXPECT_EQ(down.lo, next_down(-1.0));
+  const Interval high = Interval::point(kMax) + Interval::point(-1e280);
+  EXPECT_EQ(high.lo, next_down(kMax));
+  EXPECT_EQ(high.hi, kMax);
+  // libm results: 4 ulps, then DBL_MIN, which dominates near 0.
+  const double e = std::exp(1.0);
+  double four_down = e;
+  double four_up = e;
+  for (int i = 0; i < 4; ++i) {
+    four_down = next_down(four_down);
+    four_up = next_up(four_up);
+  }
+  EXPECT_EQ(exp({1, 1}).lo, four_down);
+  EXPECT_EQ(exp({1, 1}).hi, four_up);
+  EXPECT_EQ(exp({-745, -745}).lo, 0.0);  // exp(-745) is the smallest subnormal, kTiny
+  EXPECT_EQ(std::exp(-745.0), kTiny);
+}
+
 TEST(Interval, SqrtEnclosesExactlyAndIsTight) {
   std::mt19937_64 rng(2);
   for (int trial = 0; trial < 20000; ++trial) {
