@@ -43,8 +43,9 @@ class Certificates {
   // Policy iteration from `values`: the controller greedy at the current values (a cell
   // switches only on a gain above 1e-12), the distributions the disturbance picks, and the
   // chain they make solved as a linear system; until the controller stays or the values
-  // settle. A guess, or nothing when a solve fails. `rounds` counts the solves, `switches` the
-  // controller's changes.
+  // settle. A guess, or nothing when a solve fails or when three solves in a row each move
+  // some value by half or more (nearly deterministic rows: a round per step of the way). `rounds`
+  // counts the solves, `switches` the controller's changes.
   std::optional<std::vector<double>> policy_iteration(std::vector<double> values,
                                                       std::vector<std::uint32_t>& policy,
                                                       std::uint64_t& rounds,
