@@ -42,7 +42,7 @@ class RowBuilder {
  public:
   RowBuilder(const model::ModelIR& ir, const UniformGrid& grid,
              const std::vector<ActionChoice>& actions)
-      : ir_(ir), grid_(grid), actions_(actions) {
+      : grid_(grid), actions_(actions) {
     const model::ContextIR& context = ir.contexts.front();
     for (const ActionChoice& choice : actions) {
       const model::MapDynamics& map = *context.maps[choice.action];
@@ -88,7 +88,6 @@ class RowBuilder {
   }
 
  private:
-  const model::ModelIR& ir_;
   const UniformGrid& grid_;
   const std::vector<ActionChoice>& actions_;
   std::vector<std::vector<AxisNoise>> noise_;
