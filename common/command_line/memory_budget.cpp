@@ -13,6 +13,8 @@
 #include <sys/resource.h>
 #include <unistd.h>
 
+#include "text/byte_size.hpp"
+
 // GCC defines __SANITIZE_ADDRESS__ / __SANITIZE_THREAD__; clang answers __has_feature.
 #if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
 #define OASIS_SHADOW_MEMORY_SANITIZER 1
@@ -153,8 +155,8 @@ std::optional<std::uint64_t> parse_memory_budget(std::string_view text, std::str
     }
   }
   if (*bytes < kMinMemoryBudgetBytes) {
-    error = "a memory budget must be at least " + describe_bytes(kMinMemoryBudgetBytes) + ", not " +
-            describe_bytes(*bytes);
+    error = "a memory budget must be at least " + text::describe_bytes(kMinMemoryBudgetBytes) +
+            ", not " + text::describe_bytes(*bytes);
     return std::nullopt;
   }
   return bytes;
@@ -190,23 +192,6 @@ std::optional<std::uint64_t> address_space_limit() {
   rlimit limit{};
   if (::getrlimit(RLIMIT_AS, &limit) != 0 || limit.rlim_cur == RLIM_INFINITY) return std::nullopt;
   return static_cast<std::uint64_t>(limit.rlim_cur);
-}
-
-std::string describe_bytes(std::uint64_t bytes) {
-  static constexpr std::array<const char*, 5> kUnits{"bytes", "KiB", "MiB", "GiB", "TiB"};
-  double value = static_cast<double>(bytes);
-  std::size_t unit = 0;
-  while (value >= 1024 && unit + 1 < kUnits.size()) {
-    value /= 1024;
-    ++unit;
-  }
-  char text[32];
-  if (unit == 0) {
-    std::snprintf(text, sizeof text, "%llu bytes", static_cast<unsigned long long>(bytes));
-  } else {
-    std::snprintf(text, sizeof text, "%.1f %s", value, kUnits[unit]);
-  }
-  return text;
 }
 
 }  // namespace oasis

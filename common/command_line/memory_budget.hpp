@@ -62,7 +62,4 @@ void lift_memory_budget();
 // names whichever is in force and lower.
 [[nodiscard]] std::optional<std::uint64_t> address_space_limit();
 
-// "1.5 GiB", "512 MiB", "900 KiB": for messages.
-[[nodiscard]] std::string describe_bytes(std::uint64_t bytes);
-
 }  // namespace oasis

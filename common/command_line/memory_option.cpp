@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "command_line/memory_budget.hpp"
+#include "text/byte_size.hpp"
 
 namespace oasis::cli {
 namespace {
@@ -25,15 +26,16 @@ std::string out_of_memory_message(std::uint64_t budget) {
   const std::optional<std::uint64_t> address_space = address_space_limit();
   if (address_space && (budget == 0 || *address_space <= budget))
     return "out of memory: the command needs more than the address-space limit of " +
-           describe_bytes(*address_space) +
+           text::describe_bytes(*address_space) +
            " set for it (ulimit -v, RLIMIT_AS; --memory-budget cannot raise it)";
   if (budget == 0) return "out of memory";
   std::string message = "out of memory: the command needs more than its memory budget of " +
-                        describe_bytes(budget) + " (" + std::string(kMemoryBudgetFlag) +
+                        text::describe_bytes(budget) + " (" + std::string(kMemoryBudgetFlag) +
                         "; the default is " + std::to_string(kDefaultMemoryBudgetPercent) +
                         "% of the machine's memory)";
   if (address_space)
-    message += " or the address-space limit of " + describe_bytes(*address_space) + " (ulimit -v)";
+    message +=
+        " or the address-space limit of " + text::describe_bytes(*address_space) + " (ulimit -v)";
   return message;
 }
 

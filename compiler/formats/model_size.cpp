@@ -4,6 +4,8 @@
 #include <cstdio>
 #include <limits>
 
+#include "text/byte_size.hpp"
+
 namespace oasis::formats {
 namespace {
 
@@ -20,25 +22,6 @@ std::uint64_t plus(std::uint64_t a, std::uint64_t b) {
 // The largest rank's share of `count` items spread over `ranks`.
 std::uint64_t share(std::uint64_t count, std::uint32_t ranks) {
   return count / ranks + (count % ranks != 0 ? 1 : 0);
-}
-
-// "1.5 GiB", "300.0 MiB": the budget's own unit in messages (memory_budget.hpp's
-// describe_bytes, which this layer cannot reach).
-std::string describe(std::uint64_t bytes) {
-  static constexpr const char* kUnits[] = {"bytes", "KiB", "MiB", "GiB", "TiB", "PiB", "EiB"};
-  double value = static_cast<double>(bytes);
-  std::size_t unit = 0;
-  while (value >= 1024 && unit + 1 < std::size(kUnits)) {
-    value /= 1024;
-    ++unit;
-  }
-  char text[40];
-  if (unit == 0) {
-    std::snprintf(text, sizeof text, "%llu bytes", static_cast<unsigned long long>(bytes));
-  } else {
-    std::snprintf(text, sizeof text, "%.1f %s", value, kUnits[unit]);
-  }
-  return text;
 }
 
 }  // namespace
@@ -73,8 +56,8 @@ std::optional<std::string> memory_refusal(const DeclaredSize& size, const ReadOp
   if (options.memory_budget == 0) return std::nullopt;
   const std::uint64_t needed = least_reading_bytes(size, ranks);
   if (needed <= options.memory_budget) return std::nullopt;
-  std::string needed_text = describe(needed);
-  std::string budget_text = describe(options.memory_budget);
+  std::string needed_text = text::describe_bytes(needed);
+  std::string budget_text = text::describe_bytes(options.memory_budget);
   if (needed_text == budget_text) {  // "3.2 KiB, more than 3.2 KiB" would say nothing
     needed_text = std::to_string(needed) + " bytes";
     budget_text = std::to_string(options.memory_budget) + " bytes";

@@ -18,6 +18,7 @@
 #include "../../support/spec_models.hpp"
 #include "command_line/memory_budget.hpp"
 #include "support/parallel.hpp"
+#include "text/byte_size.hpp"
 
 namespace {
 
@@ -69,9 +70,9 @@ TEST(MemoryBudget, ParsesSizesPercentagesAndNone) {
 }
 
 TEST(MemoryBudget, DescribesBytesForMessages) {
-  EXPECT_EQ(oasis::describe_bytes(900), "900 bytes");
-  EXPECT_EQ(oasis::describe_bytes(std::uint64_t{3} << 29), "1.5 GiB");
-  EXPECT_EQ(oasis::describe_bytes(std::uint64_t{16} << 20), "16.0 MiB");
+  EXPECT_EQ(oasis::text::describe_bytes(900), "900 bytes");
+  EXPECT_EQ(oasis::text::describe_bytes(std::uint64_t{3} << 29), "1.5 GiB");
+  EXPECT_EQ(oasis::text::describe_bytes(std::uint64_t{16} << 20), "16.0 MiB");
 }
 
 // An exception in a worker (std::bad_alloc under a budget) reaches the caller instead of
