@@ -60,7 +60,6 @@ Certificates::Certificates(const IntervalMdp& mdp, const ObjectiveCells& cells, 
       bound_(bound),
       sweeper_(mdp, cells, mode),
       undecided_(mdp.grid.cells),
-      improver_(mdp, cells, mode),
       favourite_(mdp.grid.cells, 0) {
   for (std::size_t c = 0; c < undecided_.size(); ++c)
     undecided_[c] = sweeper_.fixed(c, bound) < 0 ? 1 : 0;
@@ -93,7 +92,7 @@ bool Certificates::pre_fixed(std::vector<double>& guess) {
   return settles(
       guess,
       [&](std::size_t c, const ValueTable& table) {
-        return improver_.update(c, table, bound_, favourite_[c], 0, Rounding::Up).best;
+        return sweeper_.update(c, table, bound_, favourite_[c], 0, Rounding::Up).best;
       },
       [](double image, double value) { return image <= value; });
 }
@@ -104,8 +103,7 @@ bool Certificates::trap_free(const std::vector<std::uint32_t>& policy) const {
 }
 
 std::optional<std::vector<double>> Certificates::policy_iteration(
-    std::vector<double> values, std::vector<std::uint32_t>& policy, std::uint64_t& rounds,
-    std::uint64_t& switches) {
+    std::vector<double> values, std::vector<std::uint32_t>& policy, std::uint64_t& rounds) {
   ChosenRow row;
   const RobustGame game = sweeper_.game(bound_);
   RobustScratch scratch;
@@ -119,11 +117,10 @@ std::optional<std::vector<double>> Certificates::policy_iteration(
     for (std::size_t c = 0; c < values.size(); ++c) {
       if (undecided_[c] == 0) continue;
       std::uint32_t action = policy[c];
-      improver_.update(c, table, bound_, action, kSwitchGain);
+      sweeper_.update(c, table, bound_, action, kSwitchGain);
       if (action != policy[c]) {
         policy[c] = action;
         switched = true;
-        ++switches;
       }
       robust_choice(mdp_, mdp_.row(c, policy[c]), table, game, scratch, row);
       chain.add_row(c, row);

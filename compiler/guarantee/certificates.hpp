@@ -45,11 +45,10 @@ class Certificates {
   // chain they make solved as a linear system; until the controller stays or the values
   // settle. A guess, or nothing when a solve fails or when three solves in a row each move
   // some value by half or more (nearly deterministic rows: a round per step of the way). `rounds`
-  // counts the solves, `switches` the controller's changes.
+  // counts the solves.
   std::optional<std::vector<double>> policy_iteration(std::vector<double> values,
                                                       std::vector<std::uint32_t>& policy,
-                                                      std::uint64_t& rounds,
-                                                      std::uint64_t& switches);
+                                                      std::uint64_t& rounds);
 
  private:
   // Whether `guess`, or one of its next few images (`image(cell, table)` on the undecided
@@ -58,17 +57,16 @@ class Certificates {
   bool settles(std::vector<double>& guess, const Image& image, const Holds& holds);
 
   // `values` in the one table that policy iteration and every check read, whose drift then
-  // bounds how far values have moved since `improver_` cached an action's value: the
+  // bounds how far values have moved since `sweeper_` cached an action's value: the
   // improvement and the pre-fixed check skip the actions that cannot win (Sweeper::update),
   // also right after policy iteration, whose last guess is near what the check reads.
   const ValueTable& table_for(const std::vector<double>& values);
 
   const IntervalMdp& mdp_;
   Bound bound_;
-  Sweeper sweeper_;
+  Sweeper sweeper_;  // its action cache belongs to table_
   std::vector<std::uint8_t> undecided_;
   std::optional<ValueTable> table_;
-  Sweeper improver_;                      // its action cache belongs to table_
   std::vector<std::uint32_t> favourite_;  // per cell, the action tried first
 };
 

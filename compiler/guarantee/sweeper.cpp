@@ -53,12 +53,12 @@ RobustGame Sweeper::game(Bound bound) const {
 }
 
 double Sweeper::best_action(std::size_t cell, const ValueTable& values, Bound bound,
-                            std::uint32_t& action, Rounding rounding) {
+                            std::uint32_t& action) {
   const double constant = fixed(cell, bound);
   if (constant >= 0) return constant;
   double best = -1;
   for (std::uint32_t a = 0; a < mdp_.actions.size(); ++a) {
-    const double q = action_value(cell, values, a, bound, rounding);
+    const double q = action_value(cell, values, a, bound, chooser_rounding(bound));
     if (q > best) {
       best = q;
       action = a;

@@ -40,13 +40,9 @@ class Sweeper {
   [[nodiscard]] RobustGame game(Bound bound) const;
 
   // The first action of greatest value at `cell` under `values`, and that value, rounded in the
-  // chooser's favour or as asked.
+  // chooser's favour.
   double best_action(std::size_t cell, const ValueTable& values, Bound bound,
-                     std::uint32_t& action) {
-    return best_action(cell, values, bound, action, chooser_rounding(bound));
-  }
-  double best_action(std::size_t cell, const ValueTable& values, Bound bound, std::uint32_t& action,
-                     Rounding rounding);
+                     std::uint32_t& action);
 
   struct Choice {
     double best;    // the greatest value over the actions

@@ -140,7 +140,6 @@ class LowerBound {
       std::uint32_t action = policy_[c];
       const double chosen = sweeper_.update(c, values, Bound::Lower, action, kSwitchGain).chosen;
       if (chosen < values[c]) return values[c];  // keep the action that earned the value
-      if (action != policy_[c]) ++switches_;
       policy_[c] = action;
       return chosen;
     };
@@ -178,7 +177,7 @@ class LowerBound {
       // certificate is for the controller it was made with.
       policy_ = certified_policy_;
       values = certified_;
-    } else if (!certified_.empty() && certified_switches_ == switches_) {
+    } else if (certificate_for_current()) {
       for (std::size_t c = 0; c < values.size(); ++c)
         values[c] = std::max(values[c], certified_[c]);
     }
@@ -205,20 +204,23 @@ class LowerBound {
   // invariant holds again from there); else as it was.
   bool jump(ValueTable& table, std::uint64_t sweep, Synthesis& result) {
     const std::vector<std::uint32_t> kept = policy_;
-    const std::uint64_t kept_switches = switches_;
     const std::optional<std::vector<double>> guess =
-        checks_.policy_iteration(table.values(), policy_, result.policy_rounds, switches_);
+        checks_.policy_iteration(table.values(), policy_, result.policy_rounds);
     if (guess && certify_around(*guess, sweep, result.stop_reason)) {
       table.set_all(certified_);
       return true;
     }
-    if (guess && !certified_.empty() && certified_switches_ == switches_) {
+    if (guess && certificate_for_current()) {
       table.set_all(certified_);
       return false;
     }
     policy_ = kept;
-    switches_ = kept_switches + 1;  // invalidates a certificate made with the other controller
     return false;
+  }
+
+  // Whether the last certificate was made for the controller as it is now.
+  [[nodiscard]] bool certificate_for_current() const {
+    return !certified_.empty() && certified_policy_ == policy_;
   }
 
   // Whether the last certificate (for the controller it was made with) is within the gap of
@@ -248,7 +250,6 @@ class LowerBound {
     std::vector<double> candidate = shifted(estimate, -lift, checks_.undecided());
     if (!checks_.post_fixed(candidate, policy_)) return false;
     certified_ = std::move(candidate);
-    certified_switches_ = switches_;
     certified_policy_ = policy_;
     if (certificate_meets_upper()) {
       stop_reason = "gap closed";
@@ -284,9 +285,7 @@ class LowerBound {
   Sweeper sweeper_;
   Certificates checks_;
   std::vector<std::uint32_t> policy_;
-  std::uint64_t switches_ = 0;  // controller changes so far
   std::vector<double> certified_;
-  std::uint64_t certified_switches_ = 0;
   std::vector<std::uint32_t> certified_policy_;  // the controller certified_ is for
   // A failed ceiling costs sweeps over every action: after one, the next waits twice as long.
   std::uint64_t next_ceiling_ = 0;
@@ -358,9 +357,8 @@ class UpperBound {
   // of the least fixed point.
   bool from_policy_iteration() {
     std::vector<std::uint32_t> policy(mdp_.grid.cells, 0);
-    std::uint64_t switches = 0;
     const std::optional<std::vector<double>> guess =
-        checks_.policy_iteration(checks_.fixed_or_zero(), policy, policy_rounds, switches);
+        checks_.policy_iteration(checks_.fixed_or_zero(), policy, policy_rounds);
     if (!guess || abandon.load()) return false;
     const double lift = 0.1 * options_.precision;
     std::vector<double> above = shifted(*guess, lift, checks_.undecided());
