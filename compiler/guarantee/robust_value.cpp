@@ -19,8 +19,7 @@ class AxisChoice {
       : lower_(mdp.lower.data() + slice.offset),
         upper_(mdp.upper.data() + slice.offset),
         slice_(slice),
-        game_(game),
-        maximise_(game.maximise) {
+        game_(game) {
     extras_ = {Extra{game.outside_value, slice.outside_upper - slice.outside_lower},
                Extra{game.truncated_value, slice.truncated}};
     if (better(extras_[1].value, extras_[0].value)) std::swap(extras_[0], extras_[1]);
@@ -102,13 +101,12 @@ class AxisChoice {
       return amount;
     }
   };
-  [[nodiscard]] bool better(double a, double b) const { return maximise_ ? a > b : a < b; }
+  [[nodiscard]] bool better(double a, double b) const { return game_.maximise ? a > b : a < b; }
 
   const double* lower_;
   const double* upper_;
   const AxisSlice& slice_;
   const RobustGame& game_;
-  const bool maximise_;
   std::array<Extra, 2> extras_{};
   std::size_t next_extra_ = 0;
   Sums sums_{0, 0, 0};
