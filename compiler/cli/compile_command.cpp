@@ -48,6 +48,7 @@ struct CompileOptions : codegen::CatalogFileOptions {
   std::optional<double> p_correct;
   pipeline::TargetFlags target;  // continuous: --epsilon and --max-cells, when given
   bool no_attention = false;
+  std::string grid_rows = "auto";  // --grid-rows
   unsigned jobs = 0;
   CommonOptions common;
 };
@@ -248,6 +249,11 @@ int run_compile(CompileOptions options) {
     pipeline::ContinuousCatalogOptions build;
     build.abstraction.target = pipeline::continuous_target(*loaded->ir, options.target);
     build.abstraction.attention = !options.no_attention;
+    build.abstraction.grid_rows = options.grid_rows == "product" ? pipeline::GridRows::kProduct
+                                  : options.grid_rows == "materialised"
+                                      ? pipeline::GridRows::kMaterialised
+                                      : pipeline::GridRows::kAutomatic;
+    build.abstraction.keep_rows = options.with_transitions;
     build.jobs = options.jobs;
     std::mutex stderr_lock;
     // Said at once, whatever --progress says: the stages after the partition can be long.
@@ -379,6 +385,17 @@ CommandRunner add_compile_command(CLI::App& app) {
                     "Continuous: partition every variable (the no-attention baseline)");
   command->add_flag("--with-transitions", options->with_transitions,
                     "Continuous: also write the quotient's transition rows (large)");
+  command
+      ->add_option("--grid-rows", options->grid_rows,
+                   "Continuous, grid path: 'product' keeps each row as per-axis rows, proves "
+                   "by invariants that no two cells are bisimilar and solves on that form "
+                   "(memory grows with the axes' rows, not their product); 'materialised' "
+                   "writes every row out for the exact refinement; 'auto' takes product form "
+                   "above " +
+                       std::to_string(pipeline::kProductRowsAbove) +
+                       " edges per context (docs/geometry.md)")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"auto", "product", "materialised"}));
   command->add_option("-j,--jobs", options->jobs, "Contexts abstracted in parallel (0: all cores)")
       ->capture_default_str()
       ->check(whole_in(0, limits::kMaxJobs));

@@ -17,6 +17,7 @@
 
 #include "geom/grid.hpp"
 #include "geom/grid_geometry.hpp"
+#include "geom/grid_product_rows.hpp"
 #include "model/explicit_model.hpp"
 
 namespace oasis::geom {
@@ -25,6 +26,10 @@ namespace oasis::geom {
 // `objective` is copied into the result. Throws nothing; may take a while for large grids
 // (one row per cell and action, a product of 1-D overlap lists).
 model::ExplicitModel grid_finite_mdp(const GridGeometry& geometry, const Grid& grid,
+                                     const std::vector<std::string>& action_names,
+                                     const model::Objective& objective);
+// The same, from rows already computed in product form (they hold the exact numbers).
+model::ExplicitModel grid_finite_mdp(const ProductRows& rows, const std::string& context,
                                      const std::vector<std::string>& action_names,
                                      const model::Objective& objective);
 

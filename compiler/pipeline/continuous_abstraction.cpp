@@ -7,11 +7,13 @@
 #include "bisim/refinement.hpp"
 #include "geom/grid_geometry.hpp"
 #include "geom/grid_mdp.hpp"
+#include "geom/grid_product_rows.hpp"
 #include "geom/grid_refinement.hpp"
 #include "geom/polytope_mdp.hpp"
 #include "geom/polytope_partition.hpp"
 #include "geom/relevance.hpp"
 #include "oasis/rt/bsp_locator.hpp"
+#include "pipeline/product_form.hpp"
 #include "policy/value_iteration.hpp"
 
 namespace oasis::pipeline {
@@ -104,7 +106,10 @@ CellPartition polytope_cells(const geom::Grid& box, const geom::BspTree& tree) {
 
 namespace {
 
-// The grid path: product-structured contexts (box rewards, moves along single axes).
+// The grid path: product-structured contexts (box rewards, moves along single axes). The rows
+// stay in product form when options ask for it and the proof of pipeline/product_form.hpp goes
+// through: then `result` is complete and `mdp` stays empty. Otherwise `mdp` is the
+// materialised finite MDP.
 bool partition_by_grid(const geom::GridGeometry& geometry, const model::ModelIR& ir,
                        const ContinuousOptions& options, ContinuousAbstraction& result,
                        Clock::time_point& start, std::optional<model::ExplicitModel>& mdp,
@@ -120,7 +125,29 @@ bool partition_by_grid(const geom::GridGeometry& geometry, const model::ModelIR&
   if (!result.met && options.warn)
     options.warn(result.context, above_target(result, target.grid_cells, target.epsilon));
   result.seconds.grid = seconds_since(start);
-  mdp = geom::grid_finite_mdp(geometry, partition->grid, ir.actions, ir.objective);
+  // The rows are worked out once, in product form; they are materialised from it when needed.
+  const geom::ProductRows rows(geometry, partition->grid,
+                               static_cast<std::uint32_t>(ir.actions.size()));
+  if (wants_product_form(rows, ir, options)) {
+    result.finite_edges = rows.num_edges();
+    result.seconds.finite_mdp = seconds_since(start);
+    if (options.progress) {
+      options.progress(result.context, describe_partition(result), result.seconds.grid);
+      options.progress(result.context,
+                       "product rows, " + std::to_string(rows.num_numbers()) + " numbers for " +
+                           std::to_string(rows.num_edges()) + " edges",
+                       result.seconds.finite_mdp);
+    }
+    switch (solve_in_product_form(geometry, rows, ir, options, result, error)) {
+      case ProductOutcome::kSolved:
+        return true;
+      case ProductOutcome::kFailed:
+        return false;
+      case ProductOutcome::kNotDiscrete:
+        break;
+    }
+  }
+  mdp = geom::grid_finite_mdp(rows, geometry.context, ir.actions, ir.objective);
   return true;
 }
 
@@ -196,6 +223,7 @@ std::optional<ContinuousAbstraction> abstract_context(const model::ModelIR& ir, 
   std::string grid_refusal;
   if (const auto geometry = geom::grid_geometry(ir, context, relevance, grid_refusal)) {
     if (!partition_by_grid(*geometry, ir, options, result, start, mdp, error)) return std::nullopt;
+    if (!mdp) return result;  // solved on the rows in product form
   } else {
     std::string polytope_refusal;
     const auto polytopes = geom::polytope_geometry(ir, context, relevance, polytope_refusal);

@@ -38,9 +38,24 @@ struct TargetFlags {
 // or the spec is that of both paths.
 ContinuousTarget continuous_target(const model::ModelIR& spec, const TargetFlags& flags);
 
+// How a grid context's rows are kept. Materialised: CSR rows, the exact partition refinement
+// and the solver on them. Product: per-axis rows (geom/grid_product_rows.hpp), a proof by
+// invariants that no two cells are bisimilar (bisim/discrete_proof.hpp; when it cannot be
+// had, the rows are materialised after all) and value iteration on the product form.
+// Automatic: product when the materialised rows would pass kProductRowsAbove edges per
+// context; below it the rows are cheap, and catalogs stay bit for bit those of the
+// materialised solver (the product form sums in another order, so its values differ in the
+// last bits).
+enum class GridRows { kAutomatic, kMaterialised, kProduct };
+inline constexpr std::size_t kProductRowsAbove = std::size_t{1} << 24;
+
 struct ContinuousOptions {
   ContinuousTarget target;
   bool attention = true;  // false: partition the full state (the baseline)
+  GridRows grid_rows = GridRows::kAutomatic;
+  // The quotient's transition rows are wanted (--with-transitions): a grid context in product
+  // form then materialises them for the quotient alone.
+  bool keep_rows = false;
   policy::PolicyOptions policy;
   // Called as each stage of a context ends (from the thread abstracting it, so possibly
   // from several threads at once): the context, what was done, and its seconds.

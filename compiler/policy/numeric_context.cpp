@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "policy/discounted_iteration.hpp"
+
 namespace oasis::policy {
 
 NumericContext::NumericContext(const model::ExplicitModel& model, std::size_t context)
@@ -45,23 +47,7 @@ double NumericContext::q_value(const std::vector<double>& values, model::StateIn
 
 Greedy greedy(const NumericContext& context, const std::vector<double>& values, model::StateIndex s,
               double discount) {
-  Greedy best;
-  for (model::ActionIndex a = 0; a < context.num_actions(); ++a) {
-    if (!context.enabled(s, a)) continue;
-    const double q = context.q_value(values, s, a, discount);
-    if (best.action == kNoAction || q > best.value) best.value = q;
-    if (best.action == kNoAction) best.action = a;
-  }
-  if (best.action == kNoAction) return best;
-  // Second pass: the smallest action within the slack of the maximum.
-  const double floor = best.value - kTieSlack * std::max(1.0, std::abs(best.value));
-  for (model::ActionIndex a = 0; a < context.num_actions(); ++a) {
-    if (context.enabled(s, a) && context.q_value(values, s, a, discount) >= floor) {
-      best.action = a;
-      break;
-    }
-  }
-  return best;
+  return greedy_action(context, values, s, discount);
 }
 
 }  // namespace oasis::policy

@@ -1,0 +1,117 @@
+#include "geom/grid_product_rows.hpp"
+
+#include <algorithm>
+
+#include "geom/grid_axis_rows.hpp"
+
+namespace oasis::geom {
+namespace {
+
+// Σ_k p[k] x[k] in four running sums: four independent chains of additions keep the
+// floating-point unit busy where one would wait on each addition's latency.
+double dot(const double* p, const double* x, std::uint32_t n) {
+  double s0 = 0, s1 = 0, s2 = 0, s3 = 0;
+  std::uint32_t k = 0;
+  for (; k + 4 <= n; k += 4) {
+    s0 += p[k] * x[k];
+    s1 += p[k + 1] * x[k + 1];
+    s2 += p[k + 2] * x[k + 2];
+    s3 += p[k + 3] * x[k + 3];
+  }
+  for (; k < n; ++k)
+    s0 += p[k] * x[k];
+  return (s0 + s1) + (s2 + s3);
+}
+
+}  // namespace
+
+ProductRows::ProductRows(const GridGeometry& geometry, const Grid& grid, std::uint32_t num_actions)
+    : num_cells_(static_cast<std::uint32_t>(grid.num_cells())), num_actions_(num_actions) {
+  const std::size_t d = grid.dimension();
+  for (std::size_t i = 0; i < d; ++i)
+    extent_.push_back(static_cast<std::uint32_t>(grid.intervals(i)));
+  spans_.resize(std::size_t{num_cells_} * num_actions_ * d);
+  outside_id_.resize(std::size_t{num_cells_} * num_actions_);
+  reward_.assign(num_states(), RationalPool::kZero);
+
+  AxisRowBuilder axis_rows(grid, values_);
+  std::vector<std::uint32_t> index(d);
+  std::vector<AxisRow> axes(d);
+  std::uint32_t longest_path = 0;
+  for (std::uint32_t cell = 0; cell < num_cells_; ++cell) {
+    grid.index_of(cell, index);
+    const std::vector<Rational> centre = cell_centre(grid, index);
+    reward_[cell] = values_.intern(cell_reward(geometry, grid, index));
+    for (std::uint32_t a = 0; a < num_actions_; ++a) {
+      const std::size_t choice = std::size_t{cell} * num_actions_ + a;
+      Rational inside = 1;
+      std::size_t targets = 1;
+      std::uint32_t path = 0;
+      for (std::size_t i = 0; i < d; ++i) {
+        axis_rows.axis_row(geometry.actions[a], i, centre, axes[i]);
+        const AxisRow& row = axes[i];
+        AxisSpan& span = spans_[choice * d + i];
+        span.first = row.entries.empty() ? 0 : row.entries.front().first;
+        span.count = static_cast<std::uint32_t>(row.entries.size());
+        span.offset = probability_id_.size();
+        for (const auto& [k, p] : row.entries)
+          probability_id_.push_back(p);
+        inside *= row.inside;
+        targets *= span.count;
+        path += span.count + 2;  // the conversion, the product and the additions of one axis
+      }
+      if (targets == 0) {  // no mass stays on some axis: none stays at all
+        for (std::size_t i = 0; i < d; ++i)
+          spans_[choice * d + i].count = 0;
+      }
+      const ValueId leaving = values_.intern(1 - inside);
+      outside_id_[choice] = leaving;
+      num_edges_ += targets + (leaving != RationalPool::kZero ? 1 : 0);
+      longest_path = std::max(longest_path, path + 3);
+    }
+  }
+  num_edges_ += num_actions_;  // outside's self-loops
+
+  std::vector<double> as_double(values_.size());
+  std::vector<double> smallest(d, 1);
+  for (ValueId id = 0; id < as_double.size(); ++id)
+    as_double[id] = to_double(values_[id]);
+  probability_.reserve(probability_id_.size());
+  for (const ValueId id : probability_id_)
+    probability_.push_back(as_double[id]);
+  outside_.reserve(outside_id_.size());
+  for (const ValueId id : outside_id_)
+    outside_.push_back(as_double[id]);
+  for (std::size_t s = 0; s < spans_.size(); ++s) {
+    const AxisSpan& span = spans_[s];
+    for (std::uint32_t k = 0; k < span.count; ++k)
+      smallest[s % d] = std::min(smallest[s % d], probability_[span.offset + k]);
+  }
+  for (const double p : smallest)
+    smallest_term_ *= p;
+  for (const double p : outside_)
+    if (p > 0) smallest_term_ = std::min(smallest_term_, p);
+  rounding_depth_ = longest_path;
+}
+
+double ProductRows::axis_sum(const AxisSpan* spans, std::size_t axis, std::size_t prefix,
+                             const double* x) const {
+  const AxisSpan& span = spans[axis];
+  const double* p = probability_.data() + span.offset;
+  const std::size_t start = prefix * extent_[axis] + span.first;
+  if (axis + 1 == extent_.size()) return dot(p, x + start, span.count);
+  double sum = 0;
+  for (std::uint32_t k = 0; k < span.count; ++k)
+    sum += p[k] * axis_sum(spans, axis + 1, start + k, x);
+  return sum;
+}
+
+double ProductRows::expectation(std::uint32_t s, std::uint32_t a, const double* x) const {
+  if (s == num_cells_) return x[num_cells_];  // outside is absorbing
+  const std::size_t choice = std::size_t{s} * num_actions_ + a;
+  const AxisSpan* spans = spans_.data() + choice * extent_.size();
+  const double inside = spans[0].count == 0 ? 0.0 : axis_sum(spans, 0, 0, x);
+  return inside + outside_[choice] * x[num_cells_];
+}
+
+}  // namespace oasis::geom
