@@ -50,6 +50,40 @@ inline double resolution_floor(const std::vector<double>& value) {
   return kResolutionUlps * std::numeric_limits<double>::epsilon() * largest;
 }
 
+// One Jacobi sweep, next = T value over the live states: each takes its largest q-value (the
+// first action to reach it goes into `chosen`). Returns max |next - value|.
+template <class Context>
+double full_backup(const Context& context, double gamma, const std::vector<double>& value,
+                   std::vector<double>& next, std::vector<model::ActionIndex>& chosen) {
+  double change = 0;
+  for (model::StateIndex s = 0; s < context.num_states(); ++s) {
+    if (context.dead_end(s)) continue;
+    double best = 0;
+    chosen[s] = kNoAction;
+    for (model::ActionIndex a = 0; a < context.num_actions(); ++a) {
+      if (!context.enabled(s, a)) continue;
+      const double q = context.q_value(value, s, a, gamma);
+      if (chosen[s] == kNoAction || q > best) {
+        best = q;
+        chosen[s] = a;
+      }
+    }
+    next[s] = best;
+    change = std::max(change, std::abs(best - value[s]));
+  }
+  return change;
+}
+
+// `value` filled with `start`, but dead ends at their fixed point: R(s) + γ V(s) = V(s).
+template <class Context>
+void initial_values(const Context& context, double gamma, double start,
+                    std::vector<double>& value) {
+  value.assign(context.num_states(), start);
+  for (model::StateIndex s = 0; s < context.num_states(); ++s) {
+    if (context.dead_end(s)) value[s] = context.state_reward(s) / (1 - gamma);
+  }
+}
+
 // Jacobi sweeps from V = 0 into `value`; true when the stopping rule held within
 // `max_iterations`. The stopping bound of objective.hpp is the textbook one for Jacobi
 // updates, which Gauss-Seidel would change.
@@ -57,81 +91,44 @@ template <class Context>
 bool discounted_iteration(const Context& context, double gamma, double threshold,
                           std::uint32_t max_iterations, std::vector<double>& value,
                           std::uint32_t& iterations, double& residual) {
-  const std::uint32_t n = context.num_states();
-  value.assign(n, 0);
-  // Dead ends hold their fixed point from the start: R(s) + γ V(s) = V(s).
-  for (model::StateIndex s = 0; s < n; ++s) {
-    if (context.dead_end(s)) value[s] = context.state_reward(s) / (1 - gamma);
-  }
+  initial_values(context, gamma, 0.0, value);
   std::vector<double> next = value;
+  std::vector<model::ActionIndex> chosen(context.num_states(), kNoAction);
   while (iterations < max_iterations) {
-    double change = 0;
-    for (model::StateIndex s = 0; s < n; ++s) {
-      if (context.dead_end(s)) continue;
-      double best = 0;
-      bool first = true;
-      for (model::ActionIndex a = 0; a < context.num_actions(); ++a) {
-        if (!context.enabled(s, a)) continue;
-        const double q = context.q_value(value, s, a, gamma);
-        if (first || q > best) best = q;
-        first = false;
-      }
-      next[s] = best;
-      change = std::max(change, std::abs(best - value[s]));
-    }
+    residual = full_backup(context, gamma, value, next, chosen);
     std::swap(value, next);
     ++iterations;
-    residual = change;
-    if (change <= std::max(threshold, resolution_floor(value))) return true;
+    if (residual <= std::max(threshold, resolution_floor(value))) return true;
   }
   return false;
 }
 
 // Modified policy iteration (Puterman 1994, Section 6.5) into `value`: a full Bellman backup
 // fixes a greedy policy, then `evaluations` in-place sweeps of that policy alone (one q-value
-// per state instead of one per action) move the values on. It starts from min R / (1 - γ),
-// below the optimum, so that the iterates rise to it. Every round ends with a full backup
-// V = T W, and the stopping rule is that of discounted_iteration() on it: ||T W - W|| at most
-// the threshold, so the same bound holds (Theorem 6.3.1 asks nothing of W). The values differ
-// from Jacobi's in the last bits; it is the solver of rows that are dear to evaluate.
+// per state instead of one per action) move the values on. It starts from min(0, min R) /
+// (1 - γ), below the optimum, so that the iterates rise to it. Every round ends with a full
+// backup V = T W, and the stopping rule is that of discounted_iteration() on it: ||T W - W||
+// at most the threshold, so the same bound holds (Theorem 6.3.1 asks nothing of W). The
+// values differ from Jacobi's in the last bits; it is the solver of rows that are dear to
+// evaluate.
 template <class Context>
 bool modified_policy_iteration(const Context& context, double gamma, double threshold,
                                std::uint32_t max_rounds, std::uint32_t evaluations,
                                std::vector<double>& value, std::uint32_t& rounds,
                                double& residual) {
-  const std::uint32_t n = context.num_states();
   double lowest = 0;
-  for (model::StateIndex s = 0; s < n; ++s)
+  for (model::StateIndex s = 0; s < context.num_states(); ++s)
     lowest = std::min(lowest, context.state_reward(s));
-  value.assign(n, lowest / (1 - gamma));
-  for (model::StateIndex s = 0; s < n; ++s) {
-    if (context.dead_end(s)) value[s] = context.state_reward(s) / (1 - gamma);
-  }
+  initial_values(context, gamma, lowest / (1 - gamma), value);
   std::vector<double> next = value;
-  std::vector<model::ActionIndex> chosen(n, kNoAction);
+  std::vector<model::ActionIndex> chosen(context.num_states(), kNoAction);
   while (rounds < max_rounds) {
-    double change = 0;
-    for (model::StateIndex s = 0; s < n; ++s) {
-      if (context.dead_end(s)) continue;
-      double best = 0;
-      chosen[s] = kNoAction;
-      for (model::ActionIndex a = 0; a < context.num_actions(); ++a) {
-        if (!context.enabled(s, a)) continue;
-        const double q = context.q_value(value, s, a, gamma);
-        if (chosen[s] == kNoAction || q > best) {
-          best = q;
-          chosen[s] = a;
-        }
-      }
-      next[s] = best;
-      change = std::max(change, std::abs(best - value[s]));
-    }
+    residual = full_backup(context, gamma, value, next, chosen);
     std::swap(value, next);
     ++rounds;
-    residual = change;
-    if (change <= std::max(threshold, resolution_floor(value))) return true;
+    if (residual <= std::max(threshold, resolution_floor(value))) return true;
     for (std::uint32_t sweep = 0; sweep < evaluations; ++sweep) {
-      for (model::StateIndex s = 0; s < n; ++s) {
+      for (model::StateIndex s = 0; s < context.num_states(); ++s) {
         if (!context.dead_end(s)) value[s] = context.q_value(value, s, chosen[s], gamma);
       }
     }
