@@ -77,6 +77,7 @@ bool write_continuous(const CompileRequest& request, const input::LoadedModel& l
                       std::vector<std::string>& warnings, std::string& error) {
   pipeline::ContinuousCatalogOptions build;
   build.abstraction.target = pipeline::continuous_target(*loaded.ir, {request.epsilon, {}});
+  build.abstraction.keep_rows = request.files.with_transitions;
   build.jobs = request.jobs;
   std::mutex lock;
   build.abstraction.warn = [&](const std::string& context, const std::string& warning) {
