@@ -1,6 +1,7 @@
 #include "geom/grid_product_rows.hpp"
 
 #include <algorithm>
+#include <optional>
 #include <utility>
 
 #if defined(__SSE2__)
@@ -74,6 +75,14 @@ std::pair<double, double> dot_pair(const double* p, const double* x, const doubl
 #endif
 }
 
+// True when axis i's image depends on no other axis under `action`: then its axis row is the
+// same for every cell with the same interval on that axis.
+bool separable(const AxisDynamics& action, std::size_t i) {
+  for (std::size_t j = 0; j < action.matrix[i].size(); ++j)
+    if (j != i && sgn(action.matrix[i][j]) != 0) return false;
+  return true;
+}
+
 }  // namespace
 
 ProductRows::ProductRows(const GridGeometry& geometry, const Grid& grid, std::uint32_t num_actions)
@@ -86,9 +95,13 @@ ProductRows::ProductRows(const GridGeometry& geometry, const Grid& grid, std::ui
   reward_.assign(num_states(), RationalPool::kZero);
 
   AxisRowBuilder axis_rows(grid, values_);
+  // Per (action, axis) that is separable, the span and mass of each interval, once computed.
+  std::vector<std::vector<std::optional<std::pair<AxisSpan, Rational>>>> known(num_actions_ * d);
+  for (std::uint32_t a = 0; a < num_actions_; ++a)
+    for (std::size_t i = 0; i < d; ++i)
+      if (separable(geometry.actions[a], i)) known[a * d + i].resize(extent_[i]);
   std::vector<std::uint32_t> index(d);
-  std::vector<AxisRow> axes(d);
-  std::uint32_t longest_path = 0;
+  AxisRow row;
   for (std::uint32_t cell = 0; cell < num_cells_; ++cell) {
     grid.index_of(cell, index);
     const std::vector<Rational> centre = cell_centre(grid, index);
@@ -96,35 +109,55 @@ ProductRows::ProductRows(const GridGeometry& geometry, const Grid& grid, std::ui
     for (std::uint32_t a = 0; a < num_actions_; ++a) {
       const std::size_t choice = std::size_t{cell} * num_actions_ + a;
       Rational inside = 1;
-      std::size_t targets = 1;
-      std::uint32_t path = 0;
       for (std::size_t i = 0; i < d; ++i) {
-        axis_rows.axis_row(geometry.actions[a], i, centre, axes[i]);
-        const AxisRow& row = axes[i];
-        AxisSpan& span = spans_[choice * d + i];
-        span.first = row.entries.empty() ? 0 : row.entries.front().first;
-        span.count = static_cast<std::uint32_t>(row.entries.size());
-        span.offset = probability_id_.size();
-        for (const auto& [k, p] : row.entries)
-          probability_id_.push_back(p);
+        std::vector<std::optional<std::pair<AxisSpan, Rational>>>& cache = known[a * d + i];
+        if (!cache.empty() && cache[index[i]]) {  // computed for an earlier cell
+          spans_[choice * d + i] = cache[index[i]]->first;
+          inside *= cache[index[i]]->second;
+          continue;
+        }
+        axis_rows.axis_row(geometry.actions[a], i, centre, row);
+        spans_[choice * d + i] = add_axis_row(row);
         inside *= row.inside;
-        targets *= span.count;
-        path += span.count + 2;  // the conversion, the product and the additions of one axis
+        if (!cache.empty()) cache[index[i]].emplace(spans_[choice * d + i], row.inside);
       }
-      if (targets == 0) {  // no mass stays on some axis: none stays at all
-        for (std::size_t i = 0; i < d; ++i)
-          spans_[choice * d + i].count = 0;
-      }
-      const ValueId leaving = values_.intern(1 - inside);
-      outside_id_[choice] = leaving;
-      num_edges_ += targets + (leaving != RationalPool::kZero ? 1 : 0);
-      longest_path = std::max(longest_path, path + 3);
+      outside_id_[choice] = values_.intern(1 - inside);
+      count_choice(choice);
     }
   }
   num_edges_ += num_actions_;  // outside's self-loops
+  round_numbers();
+}
 
+ProductRows::AxisSpan ProductRows::add_axis_row(const AxisRow& row) {
+  AxisSpan span;
+  span.first = row.entries.empty() ? 0 : row.entries.front().first;
+  span.count = static_cast<std::uint32_t>(row.entries.size());
+  span.offset = probability_id_.size();
+  for (const auto& [k, p] : row.entries)
+    probability_id_.push_back(p);
+  return span;
+}
+
+void ProductRows::count_choice(std::size_t choice) {
+  const std::size_t d = extent_.size();
+  std::size_t targets = 1;
+  std::uint32_t path = 3;  // the outside term: its conversion, product and addition
+  for (std::size_t i = 0; i < d; ++i) {
+    targets *= spans_[choice * d + i].count;
+    path += spans_[choice * d + i].count + 2;  // an axis's conversions, product and additions
+  }
+  if (targets == 0) {  // no mass stays on some axis: none stays at all
+    for (std::size_t i = 0; i < d; ++i)
+      spans_[choice * d + i].count = 0;
+  }
+  num_edges_ += targets + (outside_id_[choice] != RationalPool::kZero ? 1 : 0);
+  rounding_depth_ = std::max(rounding_depth_, path);
+}
+
+void ProductRows::round_numbers() {
+  const std::size_t d = extent_.size();
   std::vector<double> as_double(values_.size());
-  std::vector<double> smallest(d, 1);
   for (ValueId id = 0; id < as_double.size(); ++id)
     as_double[id] = to_double(values_[id]);
   probability_.reserve(probability_id_.size());
@@ -133,6 +166,7 @@ ProductRows::ProductRows(const GridGeometry& geometry, const Grid& grid, std::ui
   outside_.reserve(outside_id_.size());
   for (const ValueId id : outside_id_)
     outside_.push_back(as_double[id]);
+  std::vector<double> smallest(d, 1);
   for (std::size_t s = 0; s < spans_.size(); ++s) {
     const AxisSpan& span = spans_[s];
     for (std::uint32_t k = 0; k < span.count; ++k)
@@ -142,7 +176,6 @@ ProductRows::ProductRows(const GridGeometry& geometry, const Grid& grid, std::ui
     smallest_term_ *= p;
   for (const double p : outside_)
     if (p > 0) smallest_term_ = std::min(smallest_term_, p);
-  rounding_depth_ = longest_path;
 }
 
 double ProductRows::axis_sum(const AxisSpan* spans, std::size_t axis, std::size_t prefix,

@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "geom/grid.hpp"
+#include "geom/grid_axis_rows.hpp"
 #include "geom/grid_geometry.hpp"
 #include "support/rational.hpp"
 
@@ -68,6 +69,12 @@ class ProductRows {
   [[nodiscard]] double smallest_term() const { return smallest_term_; }
 
  private:
+  // Appends an axis row's probabilities; its span.
+  AxisSpan add_axis_row(const AxisRow& row);
+  // Counts the edges of one (cell, action) and the roundings of its expectation.
+  void count_choice(std::size_t choice);
+  // The probabilities in doubles, and the least term.
+  void round_numbers();
   [[nodiscard]] double axis_sum(const AxisSpan* spans, std::size_t axis, std::size_t prefix,
                                 const double* x) const;
 
