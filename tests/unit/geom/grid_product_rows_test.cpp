@@ -82,7 +82,7 @@ TEST(GridProductRows, ProductFormSolvesTheGo1LikeTheMaterialisedRows) {
   const model::ModelIR ir = test::shipped_go1_spec();
   std::string error;
   pipeline::ContinuousOptions options;
-  options.target.epsilon = 0.2;
+  options.target.epsilon = 0.25;
   options.grid_rows = pipeline::GridRows::kMaterialised;
   const auto materialised = pipeline::abstract_context(ir, 0, options, error);
   ASSERT_TRUE(materialised) << error;
