@@ -17,11 +17,13 @@ What it does, in order:
   3. Runs, on each model, --pairs times in turn (A B A B ...):
        A  oasisc quotient IN.aut --format aut -o OUT_A.aut -j 1 --progress never
        B  ltspbisim -epbisim IN.aut OUT_B.aut
-     each end to end (read, reduce, write) as a fresh process, timed from outside with its
-     peak resident memory (getrusage of the child). The ratio is taken pair by pair (B's
-     seconds over A's: "oasisc is N times faster"; the same for peak memory), and the
-     median of the ratios is printed: pairing keeps the ratio meaningful when the machine's
-     speed drifts (other work on it), which a ratio of two medians would not.
+     each end to end (read, reduce, write) as a fresh process, timed from outside: wall
+     seconds, CPU seconds (user + system) and peak resident memory (getrusage of the
+     child). Each ratio is taken pair by pair (B's figure over A's: "oasisc is N times
+     faster"), and the median of the ratios is printed: pairing keeps the ratio meaningful
+     when the machine's speed drifts (other work on it), which a ratio of two medians would
+     not. On a busy machine the CPU ratio is the steadier one: wall time also counts the
+     time a run waited for a core.
   4. Checks that both outputs have the same number of states (the `des (...)` header of
      each output .aut) and that it is the generator's known block count; a difference is
      reported and makes the exit status 1.
@@ -75,7 +77,7 @@ import sys
 import tempfile
 import time
 
-from timed_run import run_timed
+from timed_run import run_timed_cpu
 
 # mCRL2's public repository, and the newest release tag of it when this script was written
 # (mcrl2-202607.0, tagged 2026-07-13).
@@ -227,17 +229,18 @@ def run_model(args: argparse.Namespace, oasisc: str, planted: str, ltspbisim: st
     print(f"\n## {humanise(transitions)} action transitions, {states:,} states, {blocks:,} "
           f"planted blocks ({known:,} in the coarsest bisimulation), {size:.0f} MB, "
           f"generated in {time.perf_counter() - started:.1f} s; load {load()}", flush=True)
-    print(f"{'pair':>4} {'oasisc s':>9} {'MiB':>7} {'ltspbisim s':>12} {'MiB':>7} "
-          f"{'time ratio':>11} {'RSS ratio':>10} {'blocks A/B':>17}", flush=True)
+    print(f"{'pair':>4} {'oasisc s':>9} {'cpu s':>7} {'MiB':>6} {'ltspbisim s':>12} "
+          f"{'cpu s':>8} {'MiB':>6} {'wall ratio':>11} {'cpu ratio':>10} {'RSS ratio':>10}  "
+          "blocks A/B", flush=True)
     command_a = [oasisc, "quotient", source, "--format", "aut", "-o", out_a, "-j", "1",
                  "--progress", "never"]
     command_b = [ltspbisim, f"-e{args.equivalence}", source, out_b]
     rows, agreed = [], True
     for pair in range(1, args.pairs + 1):
         try:
-            seconds_a, peak_a, _ = run_timed(command_a)
-            seconds_b, peak_b, _ = run_timed(command_b)
-        except SystemExit as failure:  # run_timed's report of a failed command
+            wall_a, cpu_a, peak_a, _ = run_timed_cpu(command_a)
+            wall_b, cpu_b, peak_b, _ = run_timed_cpu(command_b)
+        except SystemExit as failure:  # run_timed_cpu's report of a failed command
             print(f"!! pair {pair}: {failure}", flush=True)
             agreed = False
             break
@@ -246,23 +249,29 @@ def run_model(args: argparse.Namespace, oasisc: str, planted: str, ltspbisim: st
         os.remove(out_b)
         same = blocks_a == blocks_b == known
         agreed = agreed and same
-        rows.append((seconds_a, peak_a, seconds_b, peak_b))
-        print(f"{pair:>4} {seconds_a:>9.2f} {peak_a:>7.0f} {seconds_b:>12.2f} {peak_b:>7.0f} "
-              f"{seconds_b / seconds_a:>10.1f}x {peak_b / peak_a:>9.1f}x "
-              f"{blocks_a:>8}/{blocks_b:<8}{'' if same else ' DIFFER'}", flush=True)
+        row = (wall_a, cpu_a, peak_a, wall_b, cpu_b, peak_b)
+        rows.append(row)
+        print(f"{pair:>4} {format_row(row)}  {blocks_a}/{blocks_b}{'' if same else ' DIFFER'}",
+              flush=True)
     if rows:
-        median = statistics.median
-        print(f"{'med':>4} {median(r[0] for r in rows):>9.2f} "
-              f"{median(r[1] for r in rows):>7.0f} {median(r[2] for r in rows):>12.2f} "
-              f"{median(r[3] for r in rows):>7.0f} {median(r[2] / r[0] for r in rows):>10.1f}x "
-              f"{median(r[3] / r[1] for r in rows):>9.1f}x   (medians; the ratios' is the "
-              "median of the per-pair ratios)", flush=True)
+        medians = [statistics.median(row[i] for row in rows) for i in range(6)]
+        ratios = [statistics.median(row[i + 3] / row[i] for row in rows) for i in range(3)]
+        print(f"{'med':>4} {format_row(medians, ratios)}  (medians; a ratio's is the median "
+              "of the per-pair ratios)", flush=True)
     if not agreed:
         print(f"!! not every pair ran, or the block counts differ (known {known})", flush=True)
     if not args.keep:
         os.remove(source)
     print(f"# load average after this model {load()}", flush=True)
     return agreed
+
+
+def format_row(row: list[float] | tuple, ratios: list[float] | None = None) -> str:
+    """wall, cpu, MiB of A and of B, then B/A of each (the given ratios, or this row's)."""
+    wall_a, cpu_a, peak_a, wall_b, cpu_b, peak_b = row
+    wall, cpu, peak = ratios or (wall_b / wall_a, cpu_b / max(cpu_a, 1e-3), peak_b / peak_a)
+    return (f"{wall_a:>9.2f} {cpu_a:>7.2f} {peak_a:>6.0f} {wall_b:>12.2f} {cpu_b:>8.2f} "
+            f"{peak_b:>6.0f} {wall:>10.1f}x {cpu:>9.1f}x {peak:>9.1f}x")
 
 
 def load() -> str:
