@@ -36,7 +36,8 @@ decide the relation oasisc computes: an MDP has one distribution per (state, act
 the label carries the action and its reward, so "every a-transition is matched by an
 a-transition with the same distribution over classes" is Definition 1 (docs/formats.md,
 "Rewards in labels"). ltspbisim also drops states unreachable from the initial state
-first; in these models every block has reachable members, so the block counts agree.
+first, oasisc does not; in these models every block keeps reachable members, so the block
+counts agree (step 4 checks it every run).
 
 Models (--models, a list of TRANSITIONS/BLOCKS; default below): the benchmarks' planted
 family (1,000 blocks) and a many-block family with one block per 10 states (25,000 blocks
@@ -59,12 +60,15 @@ Examples:
   # build mCRL2 only (then it prints where ltspbisim is and exits):
   tests/bench/mcrl2_benchmark.py --build-only
 
-  # use an ltspbisim built elsewhere (its commit is then read from `ltspbisim --version`):
+  # use an ltspbisim built elsewhere (mCRL2's commit is then only the short one in the
+  # version line `ltspbisim --version` prints, which the report shows):
   tests/bench/mcrl2_benchmark.py --ltspbisim /opt/mcrl2/bin/ltspbisim
 
-Time and space: at 10^7 action transitions the input file is about 440 MB, oasisc takes
-seconds and ltspbisim minutes and several GiB per run. Model files go to --workdir (a
-temporary folder by default, removed at the end unless --keep). Not part of ctest.
+Time and space: at 10^7 action transitions the input file is about 490 MB, oasisc takes
+about 5 s and 0.6 GiB and ltspbisim 5 to 8 minutes and 11.4 GiB per run (2-core VM, 2026-11):
+leave 12 GiB free, and about 40 minutes for the default models at 3 pairs. Model files go
+to --workdir (a temporary folder by default, removed at the end unless --keep). Not part of
+ctest. Figures and how they were taken: docs/PERFORMANCE.md, "Against mCRL2's ltspbisim".
 """
 import argparse
 import os
@@ -125,6 +129,8 @@ def checkout(source: str, commit: str, prefix: pathlib.Path) -> tuple[pathlib.Pa
     """A work tree of mCRL2 at COMMIT in PREFIX/src (cloned from SOURCE on first use, fetched
     from it when COMMIT is not there yet); returns the tree and the full commit hash."""
     tree = prefix / "src"
+    if os.path.exists(source):  # a local clone: git fetch runs inside the tree
+        source = os.path.abspath(source)
     if not (tree / ".git").exists():
         print(f"# cloning {source} into {tree}", flush=True)
         prefix.mkdir(parents=True, exist_ok=True)
