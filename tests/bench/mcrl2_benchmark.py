@@ -36,8 +36,10 @@ decide the relation oasisc computes: an MDP has one distribution per (state, act
 the label carries the action and its reward, so "every a-transition is matched by an
 a-transition with the same distribution over classes" is Definition 1 (docs/formats.md,
 "Rewards in labels"). ltspbisim also drops states unreachable from the initial state
-first, oasisc does not; in these models every block keeps reachable members, so the block
-counts agree (step 4 checks it every run).
+first, oasisc does not. Where a whole block is unreachable from state 0 the counts differ
+by that block, and step 4 says DIFFER: with the default seed this happens on the 10^7,
+250,000-block model (one block of 10 unreachable states: ltspbisim 249,999, oasisc and the
+generator 250,000); the other default models agree.
 
 Models (--models, a list of TRANSITIONS/BLOCKS; default below): the benchmarks' planted
 family (1,000 blocks) and a many-block family with one block per 10 states (25,000 blocks
@@ -65,8 +67,9 @@ Examples:
   tests/bench/mcrl2_benchmark.py --ltspbisim /opt/mcrl2/bin/ltspbisim
 
 Time and space: at 10^7 action transitions the input file is about 490 MB, oasisc takes
-about 5 s and 0.6 GiB and ltspbisim 5 to 8 minutes and 11.4 GiB per run (2-core VM, 2026-11):
-leave 12 GiB free, and about 40 minutes for the default models at 3 pairs. Model files go
+5 to 8 s and 0.6 to 0.7 GiB and ltspbisim 5 to 15 minutes and 11.4 to 11.7 GiB per run
+(2-core VM, 2026-11, loaded): leave 12 GiB free, and about an hour for the default models
+at 3 pairs. Model files go
 to --workdir (a temporary folder by default, removed at the end unless --keep). Not part of
 ctest. Figures and how they were taken: docs/PERFORMANCE.md, "Against mCRL2's ltspbisim".
 """
