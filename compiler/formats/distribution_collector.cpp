@@ -96,9 +96,21 @@ void DistributionCollector::normalize_in_place(RationalPool& values) {
   std::vector<std::pair<model::StateIndex, ValueId>> row;
   std::size_t kept = 0;
   for (std::uint32_t d = 0; d < size(); ++d) {
-    copy_distribution(d, row);
-    model::normalize_distribution(row, values);
+    const std::size_t first = edge_begin_[d];
+    const std::size_t last = d + 1 < size() ? edge_begin_[d + 1] : targets_.size();
     edge_begin_[d] = static_cast<model::EdgeIndex>(kept);
+    // Most distributions are in order already: they only move towards the front.
+    if (strictly_increasing(first, last)) {
+      for (std::size_t e = first; e < last; ++e, ++kept) {
+        targets_[kept] = targets_[e];
+        probabilities_[kept] = probabilities_[e];
+      }
+      continue;
+    }
+    row.clear();
+    for (std::size_t e = first; e < last; ++e)
+      row.emplace_back(targets_[e], probabilities_[e]);
+    model::normalize_distribution(row, values);
     for (const auto& [target, probability] : row) {
       targets_[kept] = target;
       probabilities_[kept] = probability;
@@ -108,6 +120,13 @@ void DistributionCollector::normalize_in_place(RationalPool& values) {
   targets_.resize(kept);
   probabilities_.resize(kept);
   sorted_ = true;
+}
+
+bool DistributionCollector::strictly_increasing(std::size_t first, std::size_t last) const {
+  for (std::size_t e = first + 1; e < last; ++e) {
+    if (targets_[e - 1] >= targets_[e]) return false;
+  }
+  return true;
 }
 
 void DistributionCollector::build_copying(model::TransitionMatrix& matrix, RationalPool& values) {

@@ -73,6 +73,8 @@ class DistributionCollector {
 
   void build_copying(model::TransitionMatrix& matrix, RationalPool& values);
   void normalize_in_place(RationalPool& values);
+  // Whether the targets of edges [first, last) strictly increase.
+  [[nodiscard]] bool strictly_increasing(std::size_t first, std::size_t last) const;
   void copy_distribution(std::uint32_t d,
                          std::vector<std::pair<model::StateIndex, ValueId>>& row) const;
   void build_in_place(model::TransitionMatrix& matrix);

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "model/state_store.hpp"
+#include "model/transition_stream.hpp"
 #include "model/valuation_text.hpp"
 #include "support/double_range.hpp"
 #include "support/text.hpp"
@@ -26,7 +27,6 @@ class Explorer {
         options_(options),
         store_(ir.variables),
         valuation_(ir.variables.size()),
-        successor_(ir.variables.size()),
         key_(store_.words_per_state()) {}
 
   std::optional<ExplicitModel> run() {
@@ -52,7 +52,7 @@ class Explorer {
   struct Table {
     const CommandTable* commands = nullptr;
     std::vector<std::vector<const Command*>> by_state;  // [action][state]; explicit only
-    std::unique_ptr<TransitionBuilder> builder;         // the state count is set at the end
+    std::unique_ptr<TransitionStream> stream;           // edges in choice order
     bool used = false;                                  // by some context: only these are explored
     // [action][command][outcome]: a constant probability's id, interned once rather than per
     // state; kStateDependent where it depends on the state.
@@ -86,7 +86,7 @@ class Explorer {
             table.by_state[a][command.guard.slot] = &command;
         }
       }
-      table.builder = std::make_unique<TransitionBuilder>(0, num_actions);
+      table.stream = std::make_unique<TransitionStream>(num_actions, values_);
       table.probability_ids = constant_probability_ids(commands);
       tables_.push_back(std::move(table));
     }
@@ -179,23 +179,29 @@ class Explorer {
     }
   }
 
+  // Each table's edges of this state go to its stream in action order, as step() found them.
   void add_edges(StateIndex s) {
     const std::size_t words = store_.words_per_state();
+    const auto num_actions = static_cast<ChoiceIndex>(ir_.actions.size());
+    const Edge* previous = nullptr;
     for (Edge& edge : edges_) {
       if (edge.pending) {
         const std::span<const std::uint64_t> key(pending_keys_.data() + edge.target * words, words);
         edge.target = intern_key(key, pending_[edge.target].cause);
       }
-      tables_[edge.table].builder->add(s, edge.action, edge.target, edge.probability);
+      TransitionStream& stream = *tables_[edge.table].stream;
+      if (previous == nullptr || previous->table != edge.table || previous->action != edge.action)
+        stream.begin(s * num_actions + edge.action);
+      stream.add(edge.target, edge.probability);
+      previous = &edge;
     }
   }
 
   // A successor of the state being explored: itself, or one to look up in add_edges().
+  // The successor's key is in key_.
   void add_successor(std::size_t t, std::uint32_t s, std::uint32_t a, ValueId p,
                      SourceRange cause) {
-    store_.pack(successor_, key_);
-    const std::span<const std::uint64_t> current = store_.key_of(s);
-    if (std::equal(key_.begin(), key_.end(), current.begin())) {
+    if (store_.is_key_of(s, key_)) {
       edges_.push_back({static_cast<std::uint32_t>(t), a, s, p, false});
       return;
     }
@@ -243,7 +249,9 @@ class Explorer {
         sum += values_[p];
       }
       if (p == RationalPool::kZero) continue;
-      successor_ = valuation_;
+      // The successor is the state's key with the updated variables changed in place.
+      const std::span<const std::uint64_t> current = store_.key_of(s);
+      std::copy(current.begin(), current.end(), key_.begin());
       for (const Update& update : outcome.updates)
         apply(update);
       add_successor(t, s, a, p, outcome.range);
@@ -295,14 +303,16 @@ class Explorer {
     }
   }
 
+  // Every update reads the state being explored, never the successor.
   void apply(const Update& update) {
     const std::int64_t value = evaluate([&] { return evaluate_int(update.value, valuation_); });
-    if (const std::string problem = range_violation(ir_.variables[update.variable], value);
-        !problem.empty()) {
-      diagnostics_.error(update.range, problem + ", in state " + state_text());
+    const DiscreteVariable& variable = ir_.variables[update.variable];
+    if (value < variable.low || value > variable.high) {
+      diagnostics_.error(update.range,
+                         range_violation(variable, value) + ", in state " + state_text());
       throw ExplorationFailed{};
     }
-    successor_[update.variable] = value;
+    store_.set(key_, update.variable, value);
   }
 
   // Runs an evaluation, turning an evaluation error into a diagnostic about this state.
@@ -354,9 +364,9 @@ class Explorer {
         matrices.push_back(nullptr);
         continue;
       }
-      table.builder->set_num_states(store_.size());
-      matrices.push_back(std::make_shared<const TransitionMatrix>(table.builder->finish(values_)));
-      table.builder.reset();
+      matrices.push_back(std::make_shared<const TransitionMatrix>(
+          table.stream->finish(store_.size(), values_)));
+      table.stream.reset();
     }
     for (const ContextIR& context : ir_.contexts) {
       model.contexts.push_back({context.name, matrices[context.command_table], rewards(context)});
@@ -413,8 +423,7 @@ class Explorer {
   const ExploreOptions& options_;
   StateStore store_;
   std::vector<std::int64_t> valuation_;
-  std::vector<std::int64_t> successor_;
-  std::vector<std::uint64_t> key_;
+  std::vector<std::uint64_t> key_;  // of the successor being built, or a state to intern
   std::vector<Table> tables_;
   std::vector<Edge> edges_;                  // of the state being explored
   std::vector<Pending> pending_;             // its successors still to look up

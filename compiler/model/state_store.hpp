@@ -31,6 +31,21 @@ class StateStore {
   // Packs `valuation` (every value within its variable's bounds) into `key`.
   void pack(Valuation valuation, std::span<std::uint64_t> key) const;
   void unpack(std::uint32_t state, std::span<std::int64_t> valuation) const;
+  // Sets variable `v` to `value` (within its bounds) in a packed key: a successor is its
+  // source's key with the updated variables changed, with no valuation packed whole.
+  void set(std::span<std::uint64_t> key, std::size_t v, std::int64_t value) const {
+    const Field& f = fields_[v];
+    key[f.word] = (key[f.word] & ~(f.mask << f.shift)) |
+                  ((static_cast<std::uint64_t>(value - f.low) & f.mask) << f.shift);
+  }
+  // Whether `key` is that of `state` (a self-loop needs no lookup).
+  [[nodiscard]] bool is_key_of(std::uint32_t state, std::span<const std::uint64_t> key) const {
+    const std::uint64_t* stored = keys_.data() + std::size_t{state} * words_;
+    for (std::size_t i = 0; i < words_; ++i) {
+      if (stored[i] != key[i]) return false;
+    }
+    return true;
+  }
 
   // Starts fetching the table slot where `key` would be, for an insert() soon after: a
   // caller with several keys at hand prefetches them all so that their cache misses overlap.

@@ -278,23 +278,26 @@ class Explorer {
     record_action_rewards(std::nullopt, share);
   }
 
-  // The outcomes of choice.commands[i..], appended to row_: stack_[i] is the successor as the
-  // earlier commands' updates left it, reached with `probability`. Every update reads the
-  // source state, as in PRISM.
+  // The packed key of the successor under construction after i commands (stack_).
+  std::span<std::uint64_t> stacked_key(std::size_t i) {
+    const std::size_t words = store_.words_per_state();
+    return {stack_.data() + i * words, words};
+  }
+
+  // The outcomes of choice.commands[i..], appended to row_: stacked_key(i) is the successor
+  // as the earlier commands' updates left it, reached with `probability`. Every update reads
+  // the source state, as in PRISM.
   void outcomes(const Choice& choice, std::size_t i, ValueId probability) {
     if (i == choice.count) {
       // A self-loop (`true`, an update that changes nothing) needs no lookup in the store;
       // another successor is looked up later (all_outcomes()), its slot fetched now.
-      store_.pack(stack_[i], key_);
-      const std::span<const std::uint64_t> current = store_.key_of(current_);
-      const bool same = key_.size() == 1 ? key_[0] == current[0]
-                                         : std::equal(key_.begin(), key_.end(), current.begin());
-      if (same) {
+      const std::span<const std::uint64_t> key = stacked_key(i);
+      if (store_.is_key_of(current_, key)) {
         row_.emplace_back(current_, probability);
         return;
       }
-      store_.prefetch(key_);
-      pending_keys_.insert(pending_keys_.end(), key_.begin(), key_.end());
+      store_.prefetch(key);
+      pending_keys_.insert(pending_keys_.end(), key.begin(), key.end());
       pending_.push_back({row_.size(), choice_commands_[choice.first]->range});
       row_.emplace_back(0, probability);
       return;
@@ -309,9 +312,11 @@ class Explorer {
       const ValueId p = id == kStateDependent ? state_probability(update) : id;
       if (check_sum) sums_[i] += values_[p];
       if (p == RationalPool::kZero) continue;
-      stack_[i + 1] = stack_[i];
+      const std::span<std::uint64_t> next = stacked_key(i + 1);
+      const std::span<const std::uint64_t> before = stacked_key(i);
+      std::copy(before.begin(), before.end(), next.begin());
       for (const model::Update& assignment : update.assignments)
-        apply(assignment, stack_[i + 1]);
+        apply(assignment, next);
       const ValueId combined =
           probability == RationalPool::kOne ? p : values_.intern(values_[probability] * values_[p]);
       outcomes(choice, i + 1, combined);
@@ -325,11 +330,13 @@ class Explorer {
 
   void start_outcomes(const Choice& choice) {
     check_outcome_count(choice);
-    if (stack_.size() < choice.count + 1) {
-      stack_.resize(choice.count + 1);
+    const std::size_t words = store_.words_per_state();
+    if (sums_.size() < choice.count + 1) {
+      stack_.resize((choice.count + 1) * words);
       sums_.resize(choice.count + 1);
     }
-    stack_[0] = valuation_;
+    const std::span<const std::uint64_t> current = store_.key_of(current_);
+    std::copy(current.begin(), current.end(), stack_.begin());
     outcomes(choice, 0, RationalPool::kOne);
   }
 
@@ -360,16 +367,17 @@ class Explorer {
     return values_.intern(value);
   }
 
-  void apply(const model::Update& update, std::vector<std::int64_t>& successor) {
+  // Sets the updated variable in `successor`, a packed key.
+  void apply(const model::Update& update, std::span<std::uint64_t> successor) {
     const std::int64_t value =
         evaluate([&] { return model::evaluate_int(update.value, valuation_); });
-    if (const std::string problem =
-            model::range_violation(program_.variables[update.variable], value);
-        !problem.empty()) {
-      diagnostics_.error(update.range, problem + ", in state " + state_text());
+    const model::DiscreteVariable& variable = program_.variables[update.variable];
+    if (value < variable.low || value > variable.high) {
+      diagnostics_.error(update.range,
+                         model::range_violation(variable, value) + ", in state " + state_text());
       throw ExplorationFailed{};
     }
-    successor[update.variable] = value;
+    store_.set(successor, update.variable, value);
   }
 
   template <typename Evaluate>
@@ -561,7 +569,7 @@ class Explorer {
   RationalPool values_;
   std::vector<std::int64_t> valuation_;  // of the state being explored, current_
   StateIndex current_ = 0;
-  std::vector<std::vector<std::int64_t>> stack_;  // successors under construction (outcomes())
+  std::vector<std::uint64_t> stack_;  // keys of successors under construction (outcomes())
   std::vector<Rational> sums_;                    // per command of a choice (outcomes())
   std::vector<std::uint64_t> key_;
   static constexpr ValueId kStateDependent = UINT32_MAX;
