@@ -101,9 +101,7 @@ TransitionMatrix TransitionBuilder::finish(RationalPool& values) {
   return matrix;
 }
 
-void normalize_distribution(std::vector<std::pair<StateIndex, ValueId>>& row,
-                            RationalPool& values) {
-  const auto by_target = [](const auto& x, const auto& y) { return x.first < y.first; };
+void sort_by_target(std::span<std::pair<StateIndex, ValueId>> row) {
   // Insertion sort for the short rows most models have: stable like std::stable_sort, and
   // it needs no temporary buffer (an allocation per row).
   constexpr std::size_t kInsertionSortLimit = 32;
@@ -115,9 +113,17 @@ void normalize_distribution(std::vector<std::pair<StateIndex, ValueId>>& row,
         row[j] = row[j - 1];
       row[j] = edge;
     }
-  } else if (!std::is_sorted(row.begin(), row.end(), by_target)) {
+    return;
+  }
+  const auto by_target = [](const auto& x, const auto& y) { return x.first < y.first; };
+  if (!std::is_sorted(row.begin(), row.end(), by_target)) {
     std::stable_sort(row.begin(), row.end(), by_target);
   }
+}
+
+void normalize_distribution(std::vector<std::pair<StateIndex, ValueId>>& row,
+                            RationalPool& values) {
+  sort_by_target(row);
   std::size_t kept = 0;
   for (std::size_t i = 0; i < row.size();) {
     std::size_t j = i + 1;

@@ -173,6 +173,9 @@ class TransitionBuilder {
   std::vector<ValueId> probabilities_;
 };
 
+// Sorts `row` by target, stably (equal targets keep their order).
+void sort_by_target(std::span<std::pair<StateIndex, ValueId>> row);
+
 // Sorts `row` by target (stably) and merges repeated targets by adding their probabilities
 // exactly: one distribution in the form a TransitionMatrix keeps.
 void normalize_distribution(std::vector<std::pair<StateIndex, ValueId>>& row, RationalPool& values);

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <memory>
+#include <optional>
 #include <span>
 #include <string>
 #include <utility>
@@ -159,32 +160,55 @@ class Explorer {
     return index;
   }
 
-  // Each state's transitions are worked out first and its successors looked up after, all
-  // together: each lookup is likely a cache miss, and prefetching them at once lets those
-  // misses overlap. They are interned in the order found, so the numbering is unchanged.
+  // States are explored in batches: the transitions of a few states are worked out first and
+  // their successors looked up after, all together. A new state's slot in the store is at
+  // random in a large table, a miss to memory; prefetching the slots of a whole batch lets
+  // those misses overlap. Successors are interned in the order found, so the numbering is
+  // that of one state at a time; a batch grows only while its lookups cannot pass a limit,
+  // so that every error is reported for the state that one at a time would report.
+  static constexpr std::uint32_t kBatchStates = 8;
+
   void explore_states() {
     const auto num_actions = static_cast<std::uint32_t>(ir_.actions.size());
-    for (std::uint32_t s = 0; s < store_.size(); ++s) {
-      store_.unpack(s, valuation_);
+    for (std::uint32_t s = 0; s < store_.size();) {
       edges_.clear();
       pending_.clear();
       pending_keys_.clear();
-      for (std::size_t t = 0; t < tables_.size(); ++t) {
-        if (!tables_[t].used) continue;
-        for (std::uint32_t a = 0; a < num_actions; ++a)
-          step(t, s, a);
+      batch_ends_.clear();
+      std::uint32_t end = s;
+      do {
+        store_.unpack(end, valuation_);
+        for (std::size_t t = 0; t < tables_.size(); ++t) {
+          if (!tables_[t].used) continue;
+          for (std::uint32_t a = 0; a < num_actions; ++a)
+            step(t, end, a);
+        }
+        batch_ends_.push_back(edges_.size());
+        ++end;
+      } while (end < store_.size() && end - s < kBatchStates && lookups_cannot_fail());
+      std::size_t first = 0;
+      for (std::uint32_t b = s; b < end; ++b) {
+        add_edges(b, std::span(edges_).subspan(first, batch_ends_[b - s] - first));
+        first = batch_ends_[b - s];
+        if (options_.progress && (b & 0xFFFFU) == 0xFFFFU) options_.progress(store_.size(), b + 1);
       }
-      add_edges(s);
-      if (options_.progress && (s & 0xFFFFU) == 0xFFFFU) options_.progress(store_.size(), s + 1);
+      s = end;
     }
   }
 
-  // Each table's edges of this state go to its stream in action order, as step() found them.
-  void add_edges(StateIndex s) {
+  // Whether interning every successor still to look up keeps within the limits of
+  // intern_key(), even if each were a new state.
+  [[nodiscard]] bool lookups_cannot_fail() const {
+    const std::uint64_t most = std::uint64_t{store_.size()} + pending_.size();
+    return most <= options_.max_states && most * ir_.actions.size() < UINT32_MAX;
+  }
+
+  // Each table's edges of state s go to its stream in action order, as step() found them.
+  void add_edges(StateIndex s, std::span<Edge> edges) {
     const std::size_t words = store_.words_per_state();
     const auto num_actions = static_cast<ChoiceIndex>(ir_.actions.size());
     const Edge* previous = nullptr;
-    for (Edge& edge : edges_) {
+    for (Edge& edge : edges) {
       if (edge.pending) {
         const std::span<const std::uint64_t> key(pending_keys_.data() + edge.target * words, words);
         edge.target = intern_key(key, pending_[edge.target].cause);
@@ -236,8 +260,9 @@ class Explorer {
       missing(t, s, a);
       return;
     }
-    Rational sum = 0;  // of the state-dependent probabilities
-    bool state_dependent = false;
+    // The sum of the state-dependent probabilities, made only when there is one: a Rational
+    // costs an allocation, and most commands have constant probabilities.
+    std::optional<Rational> sum;
     const Table& table = tables_[t];
     const std::vector<ValueId>& ids = table.probability_ids[a][static_cast<std::size_t>(
         command - table.commands->by_action[a].data())];
@@ -245,8 +270,8 @@ class Explorer {
       const Outcome& outcome = command->outcomes[o];
       const ValueId p = ids[o] != kStateDependent ? ids[o] : state_probability(outcome);
       if (ids[o] == kStateDependent) {
-        state_dependent = true;
-        sum += values_[p];
+        if (!sum) sum.emplace(0);
+        *sum += values_[p];
       }
       if (p == RationalPool::kZero) continue;
       // The successor is the state's key with the updated variables changed in place.
@@ -258,7 +283,7 @@ class Explorer {
     }
     // The checker has summed the commands whose probabilities are all constant. A single
     // state-dependent one, wherever it is (not only first), leaves the sum to each state.
-    if (state_dependent) check_sum(*command, sum);
+    if (sum) check_sum(*command, *sum);
   }
 
   void missing(std::size_t t, std::uint32_t s, std::uint32_t a) {
@@ -425,7 +450,8 @@ class Explorer {
   std::vector<std::int64_t> valuation_;
   std::vector<std::uint64_t> key_;  // of the successor being built, or a state to intern
   std::vector<Table> tables_;
-  std::vector<Edge> edges_;                  // of the state being explored
+  std::vector<Edge> edges_;                  // of the states being explored (a batch)
+  std::vector<std::size_t> batch_ends_;      // where each one's edges end in edges_
   std::vector<Pending> pending_;             // its successors still to look up
   std::vector<std::uint64_t> pending_keys_;  // their packed keys, words_per_state() each
   std::vector<std::uint32_t> initial_;

@@ -23,6 +23,7 @@ StateStore::StateStore(const std::vector<DiscreteVariable>& variables) {
   }
   words_ = word + 1;
   slots_.resize(1024);
+  recent_.resize(kRecentSlots);
 }
 
 void StateStore::pack(Valuation valuation, std::span<std::uint64_t> key) const {
@@ -57,9 +58,9 @@ bool StateStore::key_equals(std::uint32_t state, std::span<const std::uint64_t> 
   return true;
 }
 
-std::size_t StateStore::find_slot(std::span<const std::uint64_t> key) const {
+std::size_t StateStore::find_slot(std::uint64_t hash, std::span<const std::uint64_t> key) const {
   const std::size_t mask = slots_.size() - 1;
-  for (std::size_t i = hash(key) & mask;; i = (i + 1) & mask) {
+  for (std::size_t i = hash & mask;; i = (i + 1) & mask) {
     const Slot& slot = slots_[i];
     if (slot.state == 0) return i;
     if (slot.first_word == key[0] && (words_ == 1 || key_equals(slot.state - 1, key))) return i;
@@ -67,11 +68,18 @@ std::size_t StateStore::find_slot(std::span<const std::uint64_t> key) const {
 }
 
 std::pair<std::uint32_t, bool> StateStore::insert(std::span<const std::uint64_t> key) {
+  const std::uint64_t h = hash(key);
+  Slot& recent = recent_[h & (kRecentSlots - 1)];
+  if (recent_match(h, key)) return {recent.state - 1, false};
   if ((std::size_t{count_} + 1) * 2 > slots_.size()) grow();  // load factor <= 1/2
-  Slot& slot = slots_[find_slot(key)];
-  if (slot.state != 0) return {slot.state - 1, false};
+  Slot& slot = slots_[find_slot(h, key)];
+  if (slot.state != 0) {
+    recent = slot;
+    return {slot.state - 1, false};
+  }
   if (count_ == UINT32_MAX - 1) throw std::length_error("more than 2^32 states");
   slot = {key[0], count_ + 1};
+  recent = slot;
   keys_.insert(keys_.end(), key.begin(), key.end());
   return {count_++, true};
 }

@@ -53,8 +53,13 @@ void TransitionStream::close_row() {
     distinct = distinct && targets[e - 1] != targets[e];
   }
   if (sorted && distinct) return;
-  if (!sorted) sort_row(row_begin_, end);
-  merge_row(row_begin_, end);
+  if (!sorted) {
+    sort_row(row_begin_, end);
+    distinct = true;
+    for (std::size_t e = row_begin_ + 1; e < end; ++e)
+      distinct = distinct && targets[e - 1] != targets[e];
+  }
+  if (!distinct) merge_row(row_begin_, end);
 }
 
 void TransitionStream::sort_row(std::size_t begin, std::size_t end) {

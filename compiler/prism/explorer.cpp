@@ -230,7 +230,11 @@ class Explorer {
       const Choice& choice = choices_[c];
       const std::uint32_t position = choice.action ? label_uses_[*choice.action]++ : unlabelled++;
       begin_distribution(s, action_id(choice.action, position));
-      for (std::size_t o = c == 0 ? 0 : choice_ends_[c - 1]; o < choice_ends_[c]; ++o)
+      // Sorted here, where the row is in the cache, the collector finds every distribution
+      // in order and builds the matrix where it lies (a repeated target is merged there).
+      const std::size_t first = c == 0 ? 0 : choice_ends_[c - 1];
+      model::sort_by_target(std::span(row_).subspan(first, choice_ends_[c] - first));
+      for (std::size_t o = first; o < choice_ends_[c]; ++o)
         collector_.add(row_[o].first, row_[o].second);
       record_action_rewards(choice.action, {});
     }
@@ -273,6 +277,7 @@ class Explorer {
                                         ? probability
                                         : values_.intern(values_[probability] * share));
     }
+    model::sort_by_target(mixture_);
     for (auto& [target, probability] : mixture_)
       collector_.add(target, probability);
     record_action_rewards(std::nullopt, share);
