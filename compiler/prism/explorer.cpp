@@ -26,7 +26,7 @@ struct ExplorationFailed {};
 constexpr std::size_t kMaxChoicesPerState = 100'000;
 // Nor more outcomes than this in one choice (the product of its commands' updates).
 constexpr std::uint64_t kMaxOutcomesPerChoice = 1'000'000;
-// Nor more than this over all of a state's choices, which are held together (all_outcomes()).
+// Nor more than this over all of a state's choices, which are held together (work_out()).
 constexpr std::size_t kMaxOutcomesPerState = 10'000'000;
 // `init ... endinit` is solved by trying every valuation; past this many it is refused.
 constexpr std::uint64_t kMaxInitCandidates = std::uint64_t{1} << 24;
@@ -55,12 +55,7 @@ class Explorer {
     try {
       prepare_probabilities();
       add_initial_states();
-      for (StateIndex s = 0; s < store_.size(); ++s) {
-        store_.unpack(s, valuation_);
-        current_ = s;
-        explore_state(s);
-        if (options_.progress && (s & 0xFFFFU) == 0xFFFFU) options_.progress(store_.size(), s + 1);
-      }
+      explore_all();
       return build_model();
     } catch (const ExplorationFailed&) {
       return std::nullopt;
@@ -94,6 +89,14 @@ class Explorer {
       }
     }
     participants_.resize(program_.modules.size());
+    for (const RewardStructure& structure : program_.rewards) {
+      const bool any = std::any_of(structure.items.begin(), structure.items.end(),
+                                   [](const RewardItem& item) {
+                                     return item.kind != RewardItem::Kind::State;
+                                   });
+      action_items_.push_back(any);
+      has_action_rewards_ = has_action_rewards_ || any;
+    }
   }
 
   void add_initial_states() {
@@ -156,11 +159,112 @@ class Explorer {
     return index;
   }
 
-  // --- One state -----------------------------------------------------------------------------
+  // --- States, in batches --------------------------------------------------------------------
 
-  void explore_state(StateIndex s) {
-    collect_choices();
-    if (choices_.empty()) {
+  // States are explored in batches: the choices and outcomes of a few states are worked out
+  // first (work_out) and their successors looked up after, all together (intern_batch). A new
+  // state's slot in the store is at random in a large table, a miss to memory; prefetching
+  // the slots of a whole batch lets those misses overlap. Successors are interned in the
+  // order found, so states are numbered as one at a time would number them, and values are
+  // interned in the same order too. A batch grows only while its lookups and distributions
+  // cannot pass a limit, so that every error is the one that one state at a time reports.
+  static constexpr std::uint32_t kBatchStates = 8;
+
+  // A state of the batch: its choices end at choices_[choices_end], its outcomes start at
+  // row_[row_begin]; its action rewards are in reward_ids_ from rewards_begin when known.
+  struct Worked {
+    StateIndex state;
+    std::uint32_t choices_end;
+    std::size_t row_begin;
+    std::size_t rewards_begin;
+    bool rewards_known;
+  };
+
+  void explore_all() {
+    for (StateIndex s = 0; s < store_.size();) {
+      start_batch();
+      StateIndex end = s;
+      bool safe = true;
+      do {
+        work_out(end);
+        safe = batch_cannot_fail();
+        // Action rewards may fail to evaluate: only where the lookups cannot fail are they
+        // evaluated before them (and interned, in the order one at a time would intern them).
+        if (safe) evaluate_action_rewards(batch_.back());
+        ++end;
+      } while (safe && end < store_.size() && end - s < kBatchStates);
+      intern_batch();
+      std::uint32_t choices_begin = 0;
+      for (const Worked& worked : batch_) {
+        emit_state(worked, choices_begin);
+        choices_begin = worked.choices_end;
+        if (options_.progress && (worked.state & 0xFFFFU) == 0xFFFFU)
+          options_.progress(store_.size(), worked.state + 1);
+      }
+      s = end;
+    }
+  }
+
+  void start_batch() {
+    batch_.clear();
+    choices_.clear();
+    choice_commands_.clear();
+    choice_ends_.clear();
+    row_.clear();
+    pending_.clear();
+    pending_keys_.clear();
+    reward_ids_.clear();
+  }
+
+  // Whether interning the batch's successors, even if each were new, and adding its
+  // distributions keep within the limits that intern_key() and begin_distribution() check.
+  [[nodiscard]] bool batch_cannot_fail() const {
+    const std::uint64_t most_states = std::uint64_t{store_.size()} + pending_.size();
+    const std::uint64_t most_edges = std::uint64_t{collector_.num_edges()} + row_.size() +
+                                     batch_.size();  // a deadlock's self-loop
+    return most_states <= options_.max_states && most_edges < UINT32_MAX - 1;
+  }
+
+  // The choices of state s and their outcomes, appended to the batch; no lookups yet.
+  void work_out(StateIndex s) {
+    store_.unpack(s, valuation_);
+    current_ = s;
+    const auto choices_begin = static_cast<std::uint32_t>(choices_.size());
+    const std::size_t row_begin = row_.size();
+    collect_choices(choices_begin);
+    for (std::uint32_t c = choices_begin; c < choices_.size(); ++c) {
+      start_outcomes(choices_[c]);
+      choice_ends_.push_back(row_.size());
+      if (row_.size() - row_begin > kMaxOutcomesPerState) {
+        diagnostics_.error(program_.range, "state " + state_text() + " has more than " +
+                                               std::to_string(kMaxOutcomesPerState) +
+                                               " outcomes over all its choices");
+        throw ExplorationFailed{};
+      }
+    }
+    const auto count = static_cast<std::uint32_t>(choices_.size()) - choices_begin;
+    // A dtmc's one distribution is the average of its enabled choices.
+    if (program_.type == ModelType::Dtmc && count > 1) {
+      const Rational share(1, static_cast<unsigned long>(count));
+      for (std::size_t o = row_begin; o < row_.size(); ++o)
+        row_[o].second = values_.intern(values_[row_[o].second] * share);
+    }
+    batch_.push_back({s, static_cast<std::uint32_t>(choices_.size()), row_begin, 0, false});
+  }
+
+  // Every successor of the batch still to look up, in the order found.
+  void intern_batch() {
+    const std::size_t words = store_.words_per_state();
+    for (std::size_t p = 0; p < pending_.size(); ++p) {
+      const std::span<const std::uint64_t> key(pending_keys_.data() + p * words, words);
+      row_[pending_[p].position].first = intern_key(key, pending_[p].cause);
+    }
+  }
+
+  // The distributions of a worked-out state whose successors are all interned.
+  void emit_state(const Worked& worked, std::uint32_t choices_begin) {
+    const StateIndex s = worked.state;
+    if (choices_begin == worked.choices_end) {
       deadlocks_.push_back(s);
       begin_distribution(s, action_id(std::nullopt, 0));
       collector_.add(s, RationalPool::kOne);
@@ -168,31 +272,49 @@ class Explorer {
       return;
     }
     if (program_.type == ModelType::Dtmc) {
-      emit_mixture(s);
-    } else {
-      emit_choices(s);
+      begin_distribution(s, action_id(std::nullopt, 0));
+      add_row(worked.row_begin, choice_ends_[worked.choices_end - 1]);
+      record_action_rewards(worked, 0, std::nullopt, choices_begin);
+      return;
+    }
+    std::uint32_t unlabelled = 0;
+    label_uses_.assign(program_.actions.size(), 0);
+    for (std::uint32_t c = choices_begin; c < worked.choices_end; ++c) {
+      const Choice& choice = choices_[c];
+      const std::uint32_t position = choice.action ? label_uses_[*choice.action]++ : unlabelled++;
+      begin_distribution(s, action_id(choice.action, position));
+      add_row(c == choices_begin ? worked.row_begin : choice_ends_[c - 1], choice_ends_[c]);
+      record_action_rewards(worked, c - choices_begin, choice.action, choices_begin);
     }
   }
 
-  // The enabled choices, unlabelled ones first, then each action's combinations.
-  void collect_choices() {
-    choices_.clear();
-    choice_commands_.clear();
+  // Outcomes [first, last) of row_ as the distribution just begun. Sorted here, where they
+  // are in the cache, the collector finds every distribution in order and builds the matrix
+  // where it lies (a repeated target is merged there).
+  void add_row(std::size_t first, std::size_t last) {
+    model::sort_by_target(std::span(row_).subspan(first, last - first));
+    for (std::size_t o = first; o < last; ++o)
+      collector_.add(row_[o].first, row_[o].second);
+  }
+
+  // The enabled choices of the state in valuation_, appended to choices_ from `first`:
+  // unlabelled ones first, then each action's combinations.
+  void collect_choices(std::uint32_t first) {
     for (const Command* command : unlabelled_) {
       if (!enabled(*command)) continue;
       choices_.push_back({std::nullopt, static_cast<std::uint32_t>(choice_commands_.size()), 1});
       choice_commands_.push_back(command);
     }
     for (std::uint32_t a = 0; a < program_.actions.size(); ++a)
-      collect_synchronised(a);
-    if (choices_.size() > kMaxChoicesPerState) {
+      collect_synchronised(a, first);
+    if (choices_.size() - first > kMaxChoicesPerState) {
       diagnostics_.error(program_.range, "state " + state_text() + " has more than " +
                                              std::to_string(kMaxChoicesPerState) + " choices");
       throw ExplorationFailed{};
     }
   }
 
-  void collect_synchronised(std::uint32_t a) {
+  void collect_synchronised(std::uint32_t a, std::uint32_t first) {
     // The enabled `a` commands of each module that has `a`; none in one of them blocks `a`.
     const auto& modules = by_action_[a];
     for (std::size_t m = 0; m < modules.size(); ++m) {
@@ -210,7 +332,7 @@ class Explorer {
           {a, static_cast<std::uint32_t>(choice_commands_.size()), static_cast<std::uint32_t>(n)});
       for (std::size_t m = 0; m < n; ++m)
         choice_commands_.push_back(participants_[m][pick_[m]]);
-      if (choices_.size() > kMaxChoicesPerState) return;  // reported by the caller
+      if (choices_.size() - first > kMaxChoicesPerState) return;  // reported by the caller
       std::size_t m = n;
       while (m > 0 && ++pick_[m - 1] == participants_[m - 1].size())
         pick_[--m] = 0;
@@ -220,67 +342,6 @@ class Explorer {
 
   bool enabled(const Command& command) {
     return evaluate([&] { return model::evaluate_bool(command.guard, valuation_); });
-  }
-
-  void emit_choices(StateIndex s) {
-    all_outcomes();
-    std::uint32_t unlabelled = 0;
-    label_uses_.assign(program_.actions.size(), 0);
-    for (std::size_t c = 0; c < choices_.size(); ++c) {
-      const Choice& choice = choices_[c];
-      const std::uint32_t position = choice.action ? label_uses_[*choice.action]++ : unlabelled++;
-      begin_distribution(s, action_id(choice.action, position));
-      // Sorted here, where the row is in the cache, the collector finds every distribution
-      // in order and builds the matrix where it lies (a repeated target is merged there).
-      const std::size_t first = c == 0 ? 0 : choice_ends_[c - 1];
-      model::sort_by_target(std::span(row_).subspan(first, choice_ends_[c] - first));
-      for (std::size_t o = first; o < choice_ends_[c]; ++o)
-        collector_.add(row_[o].first, row_[o].second);
-      record_action_rewards(choice.action, {});
-    }
-  }
-
-  // Every choice's outcomes into row_, choice c's ending at choice_ends_[c]. Successors are
-  // looked up in the store only once all are known: each lookup is likely a cache miss, and
-  // prefetching them together lets those misses overlap instead of following one another.
-  // They are interned in the order found, so states are numbered as one at a time would.
-  void all_outcomes() {
-    row_.clear();
-    pending_.clear();
-    pending_keys_.clear();
-    choice_ends_.clear();
-    for (const Choice& choice : choices_) {
-      start_outcomes(choice);
-      choice_ends_.push_back(row_.size());
-      if (row_.size() > kMaxOutcomesPerState) {
-        diagnostics_.error(program_.range, "state " + state_text() + " has more than " +
-                                               std::to_string(kMaxOutcomesPerState) +
-                                               " outcomes over all its choices");
-        throw ExplorationFailed{};
-      }
-    }
-    const std::size_t words = store_.words_per_state();
-    for (std::size_t p = 0; p < pending_.size(); ++p) {
-      const std::span<const std::uint64_t> key(pending_keys_.data() + p * words, words);
-      row_[pending_[p].position].first = intern_key(key, pending_[p].cause);
-    }
-  }
-
-  // A dtmc's one distribution: the average of its enabled choices.
-  void emit_mixture(StateIndex s) {
-    all_outcomes();
-    begin_distribution(s, action_id(std::nullopt, 0));
-    const Rational share(1, static_cast<unsigned long>(choices_.size()));
-    mixture_.clear();
-    for (auto& [target, probability] : row_) {
-      mixture_.emplace_back(target, choices_.size() == 1
-                                        ? probability
-                                        : values_.intern(values_[probability] * share));
-    }
-    model::sort_by_target(mixture_);
-    for (auto& [target, probability] : mixture_)
-      collector_.add(target, probability);
-    record_action_rewards(std::nullopt, share);
   }
 
   // The packed key of the successor under construction after i commands (stack_).
@@ -295,7 +356,7 @@ class Explorer {
   void outcomes(const Choice& choice, std::size_t i, ValueId probability) {
     if (i == choice.count) {
       // A self-loop (`true`, an update that changes nothing) needs no lookup in the store;
-      // another successor is looked up later (all_outcomes()), its slot fetched now.
+      // another successor is looked up later (intern_batch()), its slot fetched now.
       const std::span<const std::uint64_t> key = stacked_key(i);
       if (store_.is_key_of(current_, key)) {
         row_.emplace_back(current_, probability);
@@ -425,25 +486,64 @@ class Explorer {
 
   // --- Rewards -------------------------------------------------------------------------------
 
-  // The action reward of the distribution just begun, per reward structure: the items of
-  // its label whose guard holds; in a dtmc the average over the state's choices.
-  void record_action_rewards(std::optional<std::uint32_t> label, std::optional<Rational> share) {
-    for (std::size_t r = 0; r < program_.rewards.size(); ++r) {
-      const RewardStructure& structure = program_.rewards[r];
+  // The action rewards of the state just worked out (valuation_), per distribution and
+  // reward structure, into reward_ids_: the items of its label whose guard holds; in a dtmc
+  // the average over the state's choices.
+  void evaluate_action_rewards(Worked& worked) {
+    if (!has_action_rewards_) return;
+    const std::uint32_t first = batch_.size() > 1 ? batch_[batch_.size() - 2].choices_end : 0;
+    worked.rewards_begin = reward_ids_.size();
+    worked.rewards_known = true;
+    if (first == worked.choices_end) return;  // a deadlock earns nothing
+    if (program_.type == ModelType::Dtmc) {
+      append_action_rewards(std::nullopt, first, worked.choices_end);
+      return;
+    }
+    for (std::uint32_t c = first; c < worked.choices_end; ++c)
+      append_action_rewards(choices_[c].action, first, worked.choices_end);
+  }
+
+  // One distribution's action reward per structure; a dtmc's (no label) averages choices
+  // [first, last).
+  void append_action_rewards(std::optional<std::uint32_t> label, std::uint32_t first,
+                             std::uint32_t last) {
+    const bool mixture = program_.type == ModelType::Dtmc;
+    for (const RewardStructure& structure : program_.rewards) {
       Rational total = 0;
-      bool any = false;
       for (const RewardItem& item : structure.items) {
         if (item.kind == RewardItem::Kind::State) continue;
-        any = true;
-        if (share) {
-          for (const Choice& choice : choices_)
-            total += item_reward(item, choice.action) * *share;
-        } else {
+        if (!mixture) {
           total += item_reward(item, label);
+          continue;
         }
+        const Rational share(1, static_cast<unsigned long>(last - first));
+        for (std::uint32_t c = first; c < last; ++c)
+          total += item_reward(item, choices_[c].action) * share;
       }
-      if (any) action_rewards_[r].resize(collector_.size(), RationalPool::kZero);
-      if (any && total != 0) action_rewards_[r].back() = values_.intern(total);
+      reward_ids_.push_back(total != 0 ? values_.intern(total) : RationalPool::kZero);
+    }
+  }
+
+  // The action rewards of the distribution just begun, the `index`-th of its state: from
+  // reward_ids_ when evaluate_action_rewards() has found them, else evaluated now (the state
+  // is then the batch's last, still in valuation_).
+  void record_action_rewards(Worked worked, std::uint32_t index, std::optional<std::uint32_t> label,
+                             std::uint32_t choices_begin) {
+    if (!has_action_rewards_) return;
+    if (!worked.rewards_known) {
+      worked.rewards_begin = reward_ids_.size();
+      if (program_.type == ModelType::Dtmc) {
+        append_action_rewards(std::nullopt, choices_begin, worked.choices_end);
+      } else {
+        append_action_rewards(label, choices_begin, worked.choices_end);
+      }
+      index = 0;
+    }
+    const std::size_t at = worked.rewards_begin + std::size_t{index} * program_.rewards.size();
+    for (std::size_t r = 0; r < program_.rewards.size(); ++r) {
+      if (!action_items_[r]) continue;
+      action_rewards_[r].resize(collector_.size(), RationalPool::kZero);
+      action_rewards_[r].back() = reward_ids_[at + r];
     }
   }
 
@@ -586,24 +686,27 @@ class Explorer {
   std::vector<StateIndex> deadlocks_;
   formats::DistributionCollector collector_{/*keep_locations=*/false};
   std::vector<std::vector<ValueId>> action_rewards_;  // per structure, per distribution
+  std::vector<bool> action_items_;   // per structure: whether it has items on actions
+  bool has_action_rewards_ = false;  // some structure has
   std::vector<std::string> action_names_;
   std::vector<model::ActionIndex> unlabelled_ids_;
   std::vector<std::vector<model::ActionIndex>> labelled_ids_;  // per action label
   std::vector<std::uint32_t> label_uses_;
-  // Per state scratch.
-  std::vector<Choice> choices_;
+  // Per batch scratch (explore_all()).
+  std::vector<Choice> choices_;  // of every state of the batch, in order
   std::vector<const Command*> choice_commands_;
   std::vector<std::vector<const Command*>> participants_;
   std::vector<std::size_t> pick_;
   std::vector<std::pair<StateIndex, ValueId>> row_;  // the outcomes of every choice
-  std::vector<std::size_t> choice_ends_;
+  std::vector<std::size_t> choice_ends_;             // per choice: where its outcomes end
   struct Pending {
     std::size_t position;  // in row_
     SourceRange cause;     // the command, should the state limit be passed
   };
   std::vector<Pending> pending_;             // successors still to look up
   std::vector<std::uint64_t> pending_keys_;  // their packed keys, words_per_state() each
-  std::vector<std::pair<StateIndex, ValueId>> mixture_;
+  std::vector<Worked> batch_;        // the states of the batch, in order
+  std::vector<ValueId> reward_ids_;  // their action rewards: per distribution, per structure
 };
 
 }  // namespace
