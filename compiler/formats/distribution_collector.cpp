@@ -26,9 +26,9 @@ void DistributionCollector::begin(model::StateIndex source, model::ActionIndex a
 }
 
 void DistributionCollector::begin(model::StateIndex source, model::ActionIndex action) {
-  sources_.push_back(source);
-  actions_.push_back(action);
-  edge_begin_.push_back(static_cast<model::EdgeIndex>(targets_.size()));
+  push_back_huge(sources_, source);
+  push_back_huge(actions_, action);
+  push_back_huge(edge_begin_, static_cast<model::EdgeIndex>(targets_.size()));
 }
 
 std::optional<model::TransitionMatrix> DistributionCollector::finish(
@@ -40,6 +40,7 @@ std::optional<model::TransitionMatrix> DistributionCollector::finish(
   matrix.num_actions = num_actions;
   // First the distribution of each choice, in the array that becomes choice_begin.
   std::vector<model::EdgeIndex>& owner = matrix.choice_begin;
+  reserve_huge(owner, num_choices + 1);
   owner.assign(num_choices + 1, kNone);
   bool in_order = true;  // distributions in choice order
   std::size_t previous = 0;

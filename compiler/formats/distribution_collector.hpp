@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "model/explicit_model.hpp"
+#include "support/huge_page_growth.hpp"
 #include "support/source_manager.hpp"
 
 namespace oasis::formats {
@@ -47,8 +48,8 @@ class DistributionCollector {
   void add(model::StateIndex target, ValueId probability) {
     // Within one distribution targets should strictly increase; otherwise finish() sorts.
     if (targets_.size() > edge_begin_.back() && targets_.back() >= target) sorted_ = false;
-    targets_.push_back(target);
-    probabilities_.push_back(probability);
+    push_back_huge(targets_, target);
+    push_back_huge(probabilities_, probability);
   }
   [[nodiscard]] std::size_t size() const { return sources_.size(); }
   [[nodiscard]] std::size_t num_edges() const { return targets_.size(); }

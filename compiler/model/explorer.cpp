@@ -12,6 +12,7 @@
 #include "model/transition_stream.hpp"
 #include "model/valuation_text.hpp"
 #include "support/double_range.hpp"
+#include "support/huge_page_growth.hpp"
 #include "support/text.hpp"
 
 namespace oasis::model {
@@ -409,6 +410,7 @@ class Explorer {
     }
     for (const DiscreteVariable& var : ir_.variables)
       space.variables.push_back(var.name);
+    reserve_huge(space.valuations, std::size_t{store_.size()} * ir_.variables.size());
     space.valuations.resize(std::size_t{store_.size()} * ir_.variables.size());
     for (std::uint32_t s = 0; s < store_.size(); ++s) {
       store_.unpack(s, std::span(space.valuations)

@@ -1,9 +1,11 @@
 #include "model/state_store.hpp"
 
+#include <algorithm>
 #include <bit>
 #include <stdexcept>
 
 #include "support/hash.hpp"
+#include "support/huge_page_growth.hpp"
 
 namespace oasis::model {
 
@@ -80,6 +82,8 @@ std::pair<std::uint32_t, bool> StateStore::insert(std::span<const std::uint64_t>
   if (count_ == UINT32_MAX - 1) throw std::length_error("more than 2^32 states");
   slot = {key[0], count_ + 1};
   recent = slot;
+  if (keys_.size() + words_ > keys_.capacity())
+    reserve_huge(keys_, std::max(keys_.capacity() * 2, keys_.size() + words_));
   keys_.insert(keys_.end(), key.begin(), key.end());
   return {count_++, true};
 }

@@ -22,6 +22,8 @@ void TransitionStream::begin(ChoiceIndex choice) {
   std::vector<EdgeIndex>& begins = matrix_.choice_begin;
   if (choice < begins.size()) throw std::logic_error("TransitionStream: choices out of order");
   // Choices skipped since the last one have no edges: they begin (and end) here.
+  if (choice >= begins.capacity())
+    reserve_huge(begins, std::max<std::size_t>(begins.capacity() * 2, std::size_t{choice} + 1));
   begins.resize(std::size_t{choice} + 1, static_cast<EdgeIndex>(matrix_.edge_target.size()));
   row_begin_ = matrix_.edge_target.size();
 }
@@ -34,6 +36,7 @@ TransitionMatrix TransitionStream::finish(std::uint32_t num_states, RationalPool
   }
   matrix_.num_states = num_states;
   matrix_.num_actions = num_actions_;
+  reserve_huge(matrix_.choice_begin, num_choices + 1);
   matrix_.choice_begin.resize(num_choices + 1, static_cast<EdgeIndex>(matrix_.edge_target.size()));
   for (const Merge& merge : merges_)
     matrix_.edge_probability[merge.edge] = values.intern(merge.sum);

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "model/explicit_model.hpp"
+#include "support/huge_page_growth.hpp"
 #include "support/rational.hpp"
 
 namespace oasis::model {
@@ -28,8 +29,8 @@ class TransitionStream {
   void begin(ChoiceIndex choice);
   void add(StateIndex target, ValueId probability) {
     if (matrix_.edge_target.size() >= UINT32_MAX) throw_too_many_edges();
-    matrix_.edge_target.push_back(target);
-    matrix_.edge_probability.push_back(probability);
+    push_back_huge(matrix_.edge_target, target);
+    push_back_huge(matrix_.edge_probability, probability);
   }
 
   // The matrix over `num_states` states; the stream is empty afterwards.

@@ -11,6 +11,7 @@
 #include "model/state_store.hpp"
 #include "model/valuation_text.hpp"
 #include "support/double_range.hpp"
+#include "support/huge_page_growth.hpp"
 #include "support/text.hpp"
 
 namespace oasis::prism {
@@ -599,6 +600,7 @@ class Explorer {
     const std::size_t width = program_.variables.size();
     for (const model::DiscreteVariable& var : program_.variables)
       space.variables.push_back(var.name);
+    reserve_huge(space.valuations, std::size_t{space.size} * width);
     space.valuations.resize(std::size_t{space.size} * width);
     for (StateIndex s = 0; s < space.size; ++s)
       store_.unpack(s, std::span(space.valuations).subspan(std::size_t{s} * width, width));
