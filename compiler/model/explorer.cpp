@@ -390,8 +390,8 @@ class Explorer {
         matrices.push_back(nullptr);
         continue;
       }
-      matrices.push_back(std::make_shared<const TransitionMatrix>(
-          table.stream->finish(store_.size(), values_)));
+      matrices.push_back(
+          std::make_shared<const TransitionMatrix>(table.stream->finish(store_.size(), values_)));
       table.stream.reset();
     }
     for (const ContextIR& context : ir_.contexts) {

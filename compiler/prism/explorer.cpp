@@ -91,10 +91,9 @@ class Explorer {
     }
     participants_.resize(program_.modules.size());
     for (const RewardStructure& structure : program_.rewards) {
-      const bool any = std::any_of(structure.items.begin(), structure.items.end(),
-                                   [](const RewardItem& item) {
-                                     return item.kind != RewardItem::Kind::State;
-                                   });
+      const bool any =
+          std::any_of(structure.items.begin(), structure.items.end(),
+                      [](const RewardItem& item) { return item.kind != RewardItem::Kind::State; });
       action_items_.push_back(any);
       has_action_rewards_ = has_action_rewards_ || any;
     }
@@ -677,7 +676,7 @@ class Explorer {
   std::vector<std::int64_t> valuation_;  // of the state being explored, current_
   StateIndex current_ = 0;
   std::vector<std::uint64_t> stack_;  // keys of successors under construction (outcomes())
-  std::vector<Rational> sums_;                    // per command of a choice (outcomes())
+  std::vector<Rational> sums_;        // per command of a choice (outcomes())
   std::vector<std::uint64_t> key_;
   static constexpr ValueId kStateDependent = UINT32_MAX;
   std::vector<const Command*> unlabelled_;
@@ -707,7 +706,7 @@ class Explorer {
   };
   std::vector<Pending> pending_;             // successors still to look up
   std::vector<std::uint64_t> pending_keys_;  // their packed keys, words_per_state() each
-  std::vector<Worked> batch_;        // the states of the batch, in order
+  std::vector<Worked> batch_;                // the states of the batch, in order
   std::vector<ValueId> reward_ids_;  // their action rewards: per distribution, per structure
 };
 
