@@ -80,7 +80,7 @@ void BM_ExplorePrism(benchmark::State& state) {
 }
 
 // 10^4, 10^5, 10^6 and 10^7 states (3163^2 = 10,004,569, the size explore_benchmark.py --large
-// explores); the last takes a few seconds and about 1.5 GiB per iteration.
+// explores); the last takes a few seconds and about 2 GiB per iteration.
 BENCHMARK(BM_ExploreSpec)->Arg(100)->Arg(316)->Arg(1000)->Arg(3163)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_ExplorePrism)->Arg(100)->Arg(316)->Arg(1000)->Arg(3163)->Unit(benchmark::kMillisecond);
 
