@@ -2,7 +2,8 @@
 // file, and prints the number of blocks its coarsest bisimulation has.
 //
 // Construction. A small random "quotient" MDP over K blocks: for each block and action, a
-// reward in {0, 1} and a distribution over 3 distinct blocks with dyadic probabilities.
+// reward in {0, 1} and a distribution over 3 distinct blocks with dyadic probabilities (or,
+// with --targets MIN-MAX, over MIN to MAX blocks, the count drawn per block and action).
 // Every concrete state belongs to a block (state mod K); its distribution for an action is
 // the block's, with each target block replaced by a random member of that block. So the
 // partition by block is a bisimulation of the concrete model. It is the coarsest one when
@@ -11,6 +12,7 @@
 // probabilities are multiples of 1/8) and prints that block count: the known answer.
 //
 //   oasis-planted --transitions 10000000 --blocks 1000 --seed 1 -o model.aut
+//   oasis-planted --transitions 10000000 --blocks 250000 --targets 2-4 --seed 1 -o many.aut
 
 #include <algorithm>
 #include <array>
@@ -26,27 +28,38 @@
 namespace {
 
 constexpr int kActions = 4;
-constexpr int kTargets = 3;
-constexpr std::array<std::array<int, kTargets>, 4> kEighths = {
-    {{4, 2, 2}, {2, 2, 4}, {1, 3, 4}, {6, 1, 1}}};
+constexpr int kMinTargets = 2;
+constexpr int kMaxTargets = 4;
+// Four probability patterns (in eighths, summing to 8) per number of targets. The patterns
+// for 3 targets are the generator's original ones: the default files have not changed.
+constexpr std::array<std::array<std::array<int, kMaxTargets>, 4>, kMaxTargets + 1> kEighths = {{
+    {},
+    {},
+    {{{4, 4}, {6, 2}, {5, 3}, {1, 7}}},
+    {{{4, 2, 2}, {2, 2, 4}, {1, 3, 4}, {6, 1, 1}}},
+    {{{2, 2, 2, 2}, {4, 2, 1, 1}, {1, 3, 2, 2}, {1, 1, 1, 5}}},
+}};
 
 struct Options {
   std::uint64_t transitions = 1'000'000;  // action transitions: states * 4
   std::uint32_t blocks = 1000;
+  int min_targets = 3;
+  int max_targets = 3;
   std::uint64_t seed = 1;
   std::string output;
 };
 
 struct BlockChoice {
   int reward;
-  std::array<std::uint32_t, kTargets> target;
-  std::array<int, kTargets> eighths;
+  int targets;
+  std::array<std::uint32_t, kMaxTargets> target;
+  std::array<int, kMaxTargets> eighths;
 };
 
 [[noreturn]] void usage(const char* message) {
   std::fprintf(stderr,
-               "oasis-planted: %s\nusage: oasis-planted [--transitions N] [--blocks K] [--seed S] "
-               "-o FILE.aut\n",
+               "oasis-planted: %s\nusage: oasis-planted [--transitions N] [--blocks K] "
+               "[--targets MIN-MAX] [--seed S] -o FILE.aut\n",
                message);
   std::exit(2);
 }
@@ -61,6 +74,12 @@ Options parse(int argc, char** argv) {
       options.transitions = std::strtoull(value, nullptr, 10);
     } else if (flag == "--blocks") {
       options.blocks = static_cast<std::uint32_t>(std::strtoul(value, nullptr, 10));
+    } else if (flag == "--targets") {
+      // "3" or "2-4"
+      char* rest = nullptr;
+      options.min_targets = static_cast<int>(std::strtol(value, &rest, 10));
+      options.max_targets =
+          *rest == '-' ? static_cast<int>(std::strtol(rest + 1, nullptr, 10)) : options.min_targets;
     } else if (flag == "--seed") {
       options.seed = std::strtoull(value, nullptr, 10);
     } else if (flag == "-o") {
@@ -70,18 +89,27 @@ Options parse(int argc, char** argv) {
     }
   }
   if (options.output.empty()) usage("give an output file with -o");
-  if (options.blocks < kTargets) usage("--blocks must be at least 3");
+  if (options.min_targets < kMinTargets || options.max_targets > kMaxTargets ||
+      options.min_targets > options.max_targets)
+    usage("--targets must be MIN-MAX with 2 <= MIN <= MAX <= 4");
+  if (options.blocks < static_cast<std::uint32_t>(options.max_targets))
+    usage("--blocks must be at least the largest number of targets");
   if (options.transitions / kActions < options.blocks) usage("fewer states than blocks");
   return options;
 }
 
-std::vector<BlockChoice> random_quotient(std::uint32_t blocks, std::mt19937_64& rng) {
+std::vector<BlockChoice> random_quotient(const Options& options, std::mt19937_64& rng) {
+  const std::uint32_t blocks = options.blocks;
   std::vector<BlockChoice> quotient(std::size_t{blocks} * kActions);
   std::uniform_int_distribution<std::uint32_t> any_block(0, blocks - 1);
+  const auto spread = static_cast<std::uint64_t>(options.max_targets - options.min_targets + 1);
   for (BlockChoice& choice : quotient) {
     choice.reward = static_cast<int>(rng() % 2);
-    choice.eighths = kEighths[rng() % kEighths.size()];
-    for (int k = 0; k < kTargets; ++k) {
+    // A fixed count draws nothing, so that the default files stay as they were.
+    choice.targets = options.min_targets + (spread > 1 ? static_cast<int>(rng() % spread) : 0);
+    const auto& patterns = kEighths[static_cast<std::size_t>(choice.targets)];
+    choice.eighths = patterns[rng() % patterns.size()];
+    for (int k = 0; k < choice.targets; ++k) {
       do {
         choice.target[k] = any_block(rng);
       } while (std::find(choice.target.begin(), choice.target.begin() + k, choice.target[k]) !=
@@ -104,7 +132,7 @@ std::uint32_t minimal_blocks(const std::vector<BlockChoice>& quotient, std::uint
       for (int a = 0; a < kActions; ++a) {
         const BlockChoice& choice = quotient[std::size_t{z} * kActions + a];
         std::map<std::uint32_t, int> mass;
-        for (int k = 0; k < kTargets; ++k)
+        for (int k = 0; k < choice.targets; ++k)
           mass[label[choice.target[k]]] += choice.eighths[k];
         signature.push_back(-1 - choice.reward);
         for (const auto& [target, eighths] : mass) {
@@ -169,7 +197,7 @@ int main(int argc, char** argv) {
   std::mt19937_64 rng(options.seed);
   const std::uint64_t states = options.transitions / kActions;
   const std::uint32_t k = options.blocks;
-  const std::vector<BlockChoice> quotient = random_quotient(k, rng);
+  const std::vector<BlockChoice> quotient = random_quotient(options, rng);
   const std::uint64_t members_per_block = states / k;  // states s with s mod k == z, below `states`
   auto random_member = [&](std::uint32_t block) {
     const std::uint64_t count = members_per_block + (block < states % k ? 1 : 0);
@@ -190,9 +218,9 @@ int main(int argc, char** argv) {
       out.text(",");
       out.text(kLabels[choice.reward][a]);
       out.text(",");
-      for (int t = 0; t < kTargets; ++t) {
+      for (int t = 0; t < choice.targets; ++t) {
         out.number(random_member(choice.target[t]));
-        if (t + 1 < kTargets) {
+        if (t + 1 < choice.targets) {
           out.text(" ");
           out.text(kFractions[choice.eighths[t]]);
           out.text(" ");
