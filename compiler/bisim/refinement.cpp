@@ -31,12 +31,14 @@
 //
 // Cost. A state enters the queue in a part at most half the size of the part it entered
 // before, so it is in a processed splitter O(log n) times and each edge is walked O(log n)
-// times: O(m log n) edge visits. Grouping reads each touched state's |A| choice records and
+// times: O(m log n) edge visits. Grouping reads each touched state's |A| weights and
 // hashes its signature: O(|A|) per touched state, charged to the edge that touched it, so
 // O(|A| m log n) in all (|A| is a small constant for the models this tool is for).
 // Memory: compact arrays only, 32-bit indices. Beyond the model, 4 bytes per edge (the
-// reverse edges, packed: incoming_edges.hpp; 8 when a record does not fit in 32 bits), 8 per
-// choice (choice_weight_) and 20 per state; docs/PERFORMANCE.md has the budget.
+// reverse edges, packed: incoming_edges.hpp; 8 when a record does not fit in 32 bits) and 16
+// per state (block, position, mark, elements); per block 20 bytes. Scratch is sized by what one
+// splitter touches, or by one block in a batch pass: never by the choices, nor by all blocks'
+// groups at once. docs/PERFORMANCE.md has the budget.
 
 #include "bisim/refinement.hpp"
 
@@ -45,6 +47,7 @@
 #include <chrono>
 #include <limits>
 #include <optional>
+#include <span>
 #include <stdexcept>
 
 #include "bisim/incoming_edges.hpp"
@@ -97,7 +100,7 @@ class Refiner {
     statistics_.setup_seconds = clock.lap();
     initial_partition();
     statistics_.initial_seconds = clock.lap();
-    allocate_scratch();
+    mark_.assign(num_states_, kNone);
     while (!queue_.empty()) {
       if (batch_pays_off()) {
         split_by_whole_queue();
@@ -115,10 +118,7 @@ class Refiner {
     }
     statistics_.splitting_seconds = clock.lap();
     if (statistics != nullptr) *statistics = statistics_;
-    std::vector<BlockIndex> block_of(num_states_);
-    for (StateIndex s = 0; s < num_states_; ++s)
-      block_of[s] = state_scratch_[s].block;
-    return model::canonical_partition(block_of);
+    return canonical_blocks();
   }
 
  private:
@@ -129,15 +129,16 @@ class Refiner {
     [[nodiscard]] std::uint32_t size() const { return end - begin; }
   };
 
-  // A set of touched states of one block with the same signature.
+  // A set of touched states of one block with the same signature. Its states are
+  // members_[member_begin, member_begin + size) once grouping is done.
   struct Group {
-    StateIndex representative;
+    std::uint64_t hash;
     BlockIndex block;
     std::uint32_t size;
-    StateIndex first_state;       // list through StateScratch::next_in_group
+    std::uint32_t member_begin;
     std::uint32_t next_in_block;  // list of the block's groups
     std::uint32_t next_same_hash;
-    std::uint32_t signature_begin;  // the representative's signature in group_signatures_
+    std::uint32_t signature_begin;  // its signature in group_signatures_
     std::uint32_t signature_end;
   };
 
@@ -150,28 +151,17 @@ class Refiner {
     double real = 0;  // batch passes in Rounded mode: the unrounded sum
   };
 
-  // Per state: its block and position (kept), whether the splitter touched it and its next
-  // state in its group (scratch). One record, so that a state costs one cache miss.
-  struct StateScratch {
-    BlockIndex block = 0;
-    std::uint32_t position = 0;
-    std::uint32_t touched = 0;
-    StateIndex next_in_group = kNone;
-  };
-
   // ---- set-up -----------------------------------------------------------------------------
 
   void build_reverse_edges() { incoming_.emplace(matrix_); }
 
   void initial_partition() {
-    const InitialBlocks initial =
+    InitialBlocks initial =
         blocks_by_rewards(model_, context_, options_.rounding_step, options_.label_class);
-    state_scratch_.resize(num_states_);
+    block_ = std::move(initial.block_of);
     std::vector<std::uint32_t> sizes(initial.count, 0);
-    for (StateIndex s = 0; s < num_states_; ++s) {
-      state_scratch_[s].block = initial.block_of[s];
-      ++sizes[initial.block_of[s]];
-    }
+    for (StateIndex s = 0; s < num_states_; ++s)
+      ++sizes[block_[s]];
     place_initial_blocks(sizes);
     statistics_.initial_blocks = static_cast<std::uint32_t>(blocks_.size());
   }
@@ -180,15 +170,15 @@ class Refiner {
     std::uint32_t begin = 0;
     BlockIndex largest = 0;
     for (BlockIndex b = 0; b < sizes.size(); ++b) {
-      blocks_.push_back({begin, begin, false});
+      add_block(begin, begin, kNone);
       begin += sizes[b];
       if (sizes[b] > sizes[largest]) largest = b;
     }
     elements_.resize(num_states_);
+    position_.resize(num_states_);
     for (StateIndex s = 0; s < num_states_; ++s) {
-      StateScratch& state = state_scratch_[s];
-      Block& block = blocks_[state.block];
-      state.position = block.end;
+      Block& block = blocks_[block_[s]];
+      position_[s] = block.end;
       elements_[block.end++] = s;
     }
     for (BlockIndex b = 0; b < blocks_.size(); ++b) {
@@ -196,10 +186,14 @@ class Refiner {
     }
   }
 
-  void allocate_scratch() {
-    const std::size_t num_choices = std::size_t{num_states_} * num_actions_;
-    choice_weight_.assign(num_choices, 0);
-    block_first_group_.assign(num_states_, kNone);
+  // Every per-block array grows with blocks_, so that none is sized by the states.
+  // `batch_slot` is the new block's splitter slot in a running batch pass (kNone outside).
+  BlockIndex add_block(std::uint32_t begin, std::uint32_t end, std::uint32_t batch_slot) {
+    const auto block = static_cast<BlockIndex>(blocks_.size());
+    blocks_.push_back({begin, end, false});
+    block_first_group_.push_back(kNone);
+    batch_slot_.push_back(batch_slot);
+    return block;
   }
 
   void enqueue(BlockIndex block, bool count_edges = true) {
@@ -224,17 +218,43 @@ class Refiner {
     return count;
   }
 
+  // The result: blocks numbered in order of their smallest state (model::Partition). Refinement's
+  // arrays are released first, so the partition is built beside the model alone.
+  Partition canonical_blocks() {
+    incoming_.reset();
+    std::vector<std::uint32_t>().swap(mark_);
+    std::vector<std::uint32_t>().swap(position_);
+    std::vector<StateIndex>().swap(elements_);
+    std::vector<std::uint64_t>().swap(touched_weights_);
+    std::vector<BlockIndex> number(blocks_.size(), kNone);
+    Partition partition;
+    for (StateIndex s = 0; s < num_states_; ++s) {
+      BlockIndex& renumbered = number[block_[s]];
+      if (renumbered == kNone) renumbered = partition.num_blocks++;
+      block_[s] = renumbered;
+    }
+    partition.block_of = std::move(block_);
+    return partition;
+  }
+
   // ---- the whole queue at once ------------------------------------------------------------
   //
   // When the queued splitters together receive a large share of the edges, walking their
   // incoming edges one splitter at a time scatters reads and writes over the whole model.
-  // Then one forward pass over every choice, in memory order, computes each state's weight
-  // to every queued splitter at once; blocks split by the joint signature. This is the same
-  // refinement as taking the splitters one by one (a state's weights to several splitters
-  // separate it exactly when the weights to some one of them do), the queue rule for the
-  // parts is unchanged, and the pass costs O(m + n |A|), charged to the >= m / 4 edge
-  // visits it replaces, so the O(m log n) bound stands. Exact rational sums are left to the
-  // one-splitter path.
+  // Then one forward pass over every choice computes each state's weight to every queued
+  // splitter at once; blocks split by the joint signature. This is the same refinement as
+  // taking the splitters one by one (a state's weights to several splitters separate it
+  // exactly when the weights to some one of them do), the queue rule for the parts is
+  // unchanged, and the pass costs O(m + n |A|), charged to the >= m / 4 edge visits it
+  // replaces, so the O(m log n) bound stands. Exact rational sums are left to the one-splitter
+  // path.
+  //
+  // The pass goes block by block, and each block is split as soon as its states are grouped:
+  // the groups and their signatures are those of one block, never of the whole model (with
+  // 250,000 blocks they were the refinement's largest structure). Splitting a block while the
+  // pass runs changes no weight that the pass has still to compute, because a part of a queued
+  // splitter takes the splitter's slot (add_block): a weight is always to the splitter as the
+  // pass found it.
 
   [[nodiscard]] bool batch_pays_off() const {
     return weights_.mode != WeightMode::Rational && queued_edges_ * 4 >= incoming_->size() &&
@@ -242,47 +262,66 @@ class Refiner {
   }
 
   void split_by_whole_queue() {
-    if (batch_slot_.size() < blocks_.size()) batch_slot_.resize(blocks_.size(), kNone);
     for (std::size_t i = 0; i < queue_.size(); ++i) {
       batch_slot_[queue_[i]] = static_cast<std::uint32_t>(i);
       blocks_[queue_[i]].queued = false;
     }
-    const std::vector<BlockIndex> batch = std::move(queue_);
+    statistics_.splitters += queue_.size();
     queue_.clear();
     queued_edges_ = 0;
-    statistics_.splitters += batch.size();
     statistics_.edge_visits += incoming_->size();
     ++statistics_.batch_passes;
 
-    groups_.clear();
-    group_signatures_.clear();
-    std::size_t table_size = 16;
-    while (table_size < 2 * std::size_t{num_states_})
-      table_size *= 2;
-    group_table_.assign(table_size, kNone);
-    for (StateIndex s = 0; s < num_states_; ++s) {
-      batch_signature(s, signature_);
-      if (!signature_.empty()) add_to_group(s, signature_);
+    const auto blocks_before = static_cast<BlockIndex>(blocks_.size());
+    for (BlockIndex b = 0; b < blocks_before; ++b) {
+      group_block_by_batch_signature(b);
+      if (touched_states_.empty()) continue;
+      place_members();
+      split_touched_blocks();
+      reset_scratch();
     }
-    for (BlockIndex b : batch)
-      batch_slot_[b] = kNone;
-    split_touched_blocks();
-    reset_scratch();
+    std::fill(batch_slot_.begin(), batch_slot_.end(), kNone);
+  }
+
+  // Groups the states of `block` that some queued splitter's edges reach by their weights to
+  // the splitters. The states are visited in the block's order, not in memory order, so the
+  // reads of their choices are prefetched a few states ahead: first the choice offsets, then
+  // the edges, then the blocks of the targets.
+  void group_block_by_batch_signature(BlockIndex block) {
+    start_grouping();
+    const std::uint32_t begin = blocks_[block].begin;
+    const std::uint32_t end = blocks_[block].end;
+    const std::uint32_t k = num_actions_;
+    for (std::uint32_t i = begin; i < end; ++i) {
+      if (i + 16 < end)
+        __builtin_prefetch(&matrix_.choice_begin[std::size_t{elements_[i + 16]} * k]);
+      if (i + 8 < end) {
+        const EdgeIndex first = matrix_.choice_begin[std::size_t{elements_[i + 8]} * k];
+        __builtin_prefetch(&matrix_.edge_target[first]);
+        __builtin_prefetch(&matrix_.edge_probability[first]);
+      }
+      if (i + 4 < end) {
+        const ChoiceIndex c = elements_[i + 4] * k;
+        for (EdgeIndex e = matrix_.choice_begin[c]; e < matrix_.choice_begin[c + k]; ++e)
+          __builtin_prefetch(&block_[matrix_.edge_target[e]]);
+      }
+      const StateIndex s = elements_[i];
+      batch_signature(s, signature_);
+      if (signature_.empty()) continue;
+      touched_states_.push_back(s);
+      add_to_group(s, block, signature_);
+    }
   }
 
   // For each enabled action of `s`, the weight to each queued splitter its edges reach, in
   // (action, splitter) order. Empty when no edge reaches a splitter.
   void batch_signature(StateIndex s, std::vector<SignatureEntry>& out) {
     out.clear();
-    constexpr std::uint32_t kAhead = 16;
     for (ActionIndex a = 0; a < num_actions_; ++a) {
       const ChoiceIndex c = s * num_actions_ + a;
       const std::size_t first = out.size();
       for (EdgeIndex e = matrix_.choice_begin[c]; e < matrix_.choice_begin[c + 1]; ++e) {
-        if (e + kAhead < matrix_.edge_target.size()) {
-          __builtin_prefetch(&state_scratch_[matrix_.edge_target[e + kAhead]]);
-        }
-        const std::uint32_t slot = batch_slot_[state_scratch_[matrix_.edge_target[e]].block];
+        const std::uint32_t slot = batch_slot_[block_[matrix_.edge_target[e]]];
         if (slot == kNone) continue;
         add_batch_weight(out, first, a, slot, matrix_.edge_probability[e]);
       }
@@ -304,7 +343,7 @@ class Refiner {
     add_to_key(out.back(), probability);
   }
 
-  // Rounded keys are summed as doubles in `real` and rounded by finish_batch_key().
+  // Rounded keys are summed as doubles in `real` and rounded on every addition.
   void add_to_key(SignatureEntry& entry, ValueId probability) const {
     if (weights_.mode == WeightMode::Integer) {
       entry.key += weights_.integer[probability];
@@ -319,12 +358,13 @@ class Refiner {
   void split_by(BlockIndex splitter) {
     accumulate_weights(splitter);
     group_touched_states();
+    place_members();
     split_touched_blocks();
     reset_scratch();
   }
 
-  // Random access into the per-choice and per-state records dominates on large models, so
-  // the records of edges a few steps ahead are prefetched.
+  // Random access into the per-state marks dominates on large models, so the marks of the
+  // sources of edges a few steps ahead are prefetched.
   void accumulate_weights(BlockIndex splitter) {
     constexpr std::uint32_t kAhead = 16;
     const Block block = blocks_[splitter];
@@ -334,28 +374,30 @@ class Refiner {
       const EdgeIndex end = incoming_->end(t);
       statistics_.edge_visits += end - incoming_->begin(t);
       for (EdgeIndex e = incoming_->begin(t); e < end; ++e) {
-        if (e + kAhead < incoming_->size()) {
-          const ChoiceIndex ahead = incoming_->choice(e + kAhead);
-          __builtin_prefetch(&choice_weight_[ahead], 1);
-          __builtin_prefetch(&state_scratch_[ahead / num_actions_], 1);
-        }
+        if (e + kAhead < incoming_->size())
+          __builtin_prefetch(&mark_[incoming_->choice(e + kAhead) / num_actions_], 1);
         add_weight(incoming_->choice(e), incoming_->probability(e));
       }
     }
   }
 
+  // A state's first touch gives it the next slot of touched_weights_, |A| words that hold the
+  // weights of its choices; its mark is that slot until it is grouped.
   void add_weight(ChoiceIndex c, ValueId probability) {
-    std::uint64_t& weight = choice_weight_[c];
-    if (weight == 0) {
-      const StateIndex s = c / num_actions_;
-      std::uint32_t& state_touched = state_scratch_[s].touched;
-      if (state_touched == 0) touched_states_.push_back(s);
-      state_touched = 1;
-      if (weights_.mode == WeightMode::Rational) {
-        if (rational_sum_.size() == rational_sums_used_) rational_sum_.emplace_back();
-        rational_sum_[rational_sums_used_] = 0;
-        weight = ++rational_sums_used_;
-      }
+    const StateIndex s = c / num_actions_;
+    const ActionIndex a = c - s * num_actions_;
+    std::uint32_t& slot = mark_[s];
+    if (slot == kNone) {
+      slot = static_cast<std::uint32_t>(touched_states_.size());
+      touched_states_.push_back(s);
+      const std::size_t needed = touched_states_.size() * num_actions_;
+      if (touched_weights_.size() < needed) touched_weights_.resize(needed, 0);
+    }
+    std::uint64_t& weight = touched_weights_[std::size_t{slot} * num_actions_ + a];
+    if (weight == 0 && weights_.mode == WeightMode::Rational) {
+      if (rational_sum_.size() == rational_sums_used_) rational_sum_.emplace_back();
+      rational_sum_[rational_sums_used_] = 0;
+      weight = ++rational_sums_used_;
     }
     switch (weights_.mode) {
       case WeightMode::Integer:
@@ -372,14 +414,14 @@ class Refiner {
     }
   }
 
-  // The touched choices of `s` in action order, with their weights: its signature. The
-  // choice records are cleared on the way, while their cache line is at hand. Costs O(|A|)
-  // per touched state: one cache line for the small action sets of robot models.
-  void collect_signature(StateIndex s, std::vector<SignatureEntry>& out) {
+  // The touched choices of the state in `slot`, in action order, with their weights: its
+  // signature. The weights are cleared on the way, so that touched_weights_ is all zero
+  // again for the next splitter.
+  void collect_signature(std::uint32_t slot, std::vector<SignatureEntry>& out) {
     out.clear();
-    const ChoiceIndex first = s * num_actions_;
+    const std::size_t first = std::size_t{slot} * num_actions_;
     for (ActionIndex a = 0; a < num_actions_; ++a) {
-      std::uint64_t& weight = choice_weight_[first + a];
+      std::uint64_t& weight = touched_weights_[first + a];
       if (weight == 0) continue;
       switch (weights_.mode) {
         case WeightMode::Integer:
@@ -397,6 +439,21 @@ class Refiner {
       weight = 0;
     }
   }
+
+  void group_touched_states() {
+    start_grouping();
+    for (std::uint32_t slot = 0; slot < touched_states_.size(); ++slot) {
+      const StateIndex s = touched_states_[slot];
+      collect_signature(slot, signature_);
+      add_to_group(s, block_[s], signature_);
+    }
+  }
+
+  // ---- grouping ---------------------------------------------------------------------------
+  //
+  // Groups are found through an open-addressing table of chains, grown with the groups, so
+  // that it costs what this splitter (or this block of a batch pass) made, not the largest
+  // seen so far. Each slot heads a chain of groups whose signature hashes collide there.
 
   [[nodiscard]] std::uint64_t entry_hash(const SignatureEntry& entry) const {
     if (weights_.mode == WeightMode::Rational) return hash_value(rational_sum_[entry.key]);
@@ -428,53 +485,65 @@ class Refiner {
     return true;
   }
 
-  // Groups are found through an open-addressing table sized for this splitter's touched
-  // states, so that clearing it costs what the splitter touched, not the largest splitter
-  // seen so far. Each slot heads a chain of groups whose signature hashes collide there.
-  void group_touched_states() {
+  void start_grouping() {
     groups_.clear();
     group_signatures_.clear();
-    std::size_t table_size = 16;
-    while (table_size < 2 * touched_states_.size())
-      table_size *= 2;
-    group_table_.assign(table_size, kNone);
-    constexpr std::size_t kAhead = 8;
-    for (std::size_t i = 0; i < touched_states_.size(); ++i) {
-      if (i + kAhead < touched_states_.size()) {
-        const StateIndex ahead = touched_states_[i + kAhead];
-        __builtin_prefetch(&state_scratch_[ahead]);
-        __builtin_prefetch(&choice_weight_[std::size_t{ahead} * num_actions_]);
-      }
-      const StateIndex s = touched_states_[i];
-      collect_signature(s, signature_);
-      add_to_group(s, signature_);
-    }
+    group_table_.assign(kInitialTableSize, kNone);
   }
 
-  // Puts `s` into the group of its block with the same signature, making one if needed.
-  void add_to_group(StateIndex s, const std::vector<SignatureEntry>& signature) {
-    const BlockIndex block = state_scratch_[s].block;
+  // Puts `s` (already in touched_states_) into the group of its block with the same
+  // signature, making one if needed; its mark becomes the group.
+  void add_to_group(StateIndex s, BlockIndex block, const std::vector<SignatureEntry>& signature) {
     const std::uint64_t hash = signature_hash(block, signature);
     std::uint32_t& head = group_table_[hash & (group_table_.size() - 1)];
     std::uint32_t group = head;
     for (; group != kNone; group = groups_[group].next_same_hash) {
-      if (groups_[group].block == block && same_signature(signature, groups_[group])) break;
+      const Group& candidate = groups_[group];
+      if (candidate.hash == hash && candidate.block == block &&
+          same_signature(signature, candidate))
+        break;
     }
     if (group == kNone) {
       group = static_cast<std::uint32_t>(groups_.size());
       const auto begin = static_cast<std::uint32_t>(group_signatures_.size());
       group_signatures_.insert(group_signatures_.end(), signature.begin(), signature.end());
-      groups_.push_back({s, block, 0, kNone, block_first_group_[block], head, begin,
+      groups_.push_back({hash, block, 0, 0, block_first_group_[block], head, begin,
                          static_cast<std::uint32_t>(group_signatures_.size())});
       head = group;
       if (block_first_group_[block] == kNone) touched_blocks_.push_back(block);
       block_first_group_[block] = group;
+      if (groups_.size() * 2 > group_table_.size()) grow_group_table();
     }
-    state_scratch_[s].next_in_group = groups_[group].first_state;
-    state_scratch_[s].touched = 1;
-    groups_[group].first_state = s;
+    mark_[s] = group;
     ++groups_[group].size;
   }
+
+  // Twice the slots, every group chained again by its hash (the table stays at most half full).
+  void grow_group_table() {
+    group_table_.assign(group_table_.size() * 2, kNone);
+    const std::size_t mask = group_table_.size() - 1;
+    for (std::uint32_t g = 0; g < groups_.size(); ++g) {
+      std::uint32_t& head = group_table_[groups_[g].hash & mask];
+      groups_[g].next_same_hash = head;
+      head = g;
+    }
+  }
+
+  // Lists the touched states group by group in members_ (a counting sort by their marks).
+  void place_members() {
+    std::uint32_t next = 0;
+    for (Group& group : groups_) {
+      group.member_begin = next;
+      next += group.size;
+    }
+    members_.resize(next);
+    for (StateIndex s : touched_states_)
+      members_[groups_[mark_[s]].member_begin++] = s;
+    for (Group& group : groups_)
+      group.member_begin -= group.size;
+  }
+
+  // ---- splitting --------------------------------------------------------------------------
 
   void split_touched_blocks() {
     for (BlockIndex block : touched_blocks_)
@@ -483,7 +552,7 @@ class Refiner {
 
   // Rearranges the block's range as [untouched | group 1 | group 2 | ...] and makes every
   // group a block of its own (the first group keeps the block's index when nothing is
-  // untouched).
+  // untouched). Clears the marks of the block's touched states.
   void split_block(BlockIndex block) {
     const std::uint32_t first_group = block_first_group_[block];
     Block& range = blocks_[block];
@@ -492,15 +561,15 @@ class Refiner {
       touched += groups_[g].size;
     const std::uint32_t untouched = range.size() - touched;
     if (untouched == 0 && groups_[first_group].next_in_block == kNone) {  // one group: no split
-      for (StateIndex s = groups_[first_group].first_state; s != kNone;)
-        s = clear_state(s);
+      for (StateIndex s : group_members(groups_[first_group]))
+        mark_[s] = kNone;
       return;
     }
 
     // Move the touched states to the tail of the range, then lay them out group by group.
     std::uint32_t tail = range.end;
     for (std::uint32_t g = first_group; g != kNone; g = groups_[g].next_in_block) {
-      for (StateIndex s = groups_[g].first_state; s != kNone; s = state_scratch_[s].next_in_group)
+      for (StateIndex s : group_members(groups_[g]))
         swap_to(s, --tail);
     }
     std::uint32_t cursor = range.begin + untouched;
@@ -513,23 +582,26 @@ class Refiner {
     }
     for (std::uint32_t g = first_group; g != kNone; g = groups_[g].next_in_block) {
       const std::uint32_t begin = cursor;
-      for (StateIndex s = groups_[g].first_state; s != kNone;) {
+      for (StateIndex s : group_members(groups_[g])) {
         swap_to(s, cursor++);
-        s = clear_state(s);
+        mark_[s] = kNone;
       }
       BlockIndex part = block;
       if (parts.empty()) {
         blocks_[block].begin = begin;
         blocks_[block].end = cursor;
       } else {
-        part = static_cast<BlockIndex>(blocks_.size());
-        blocks_.push_back({begin, cursor, false});
+        part = add_block(begin, cursor, batch_slot_[block]);
         for (std::uint32_t i = begin; i < cursor; ++i)
-          state_scratch_[elements_[i]].block = part;
+          block_[elements_[i]] = part;
       }
       parts.push_back(part);
     }
     queue_parts(parts, was_queued);
+  }
+
+  [[nodiscard]] std::span<const StateIndex> group_members(const Group& group) const {
+    return {members_.data() + group.member_begin, group.size};
   }
 
   void queue_parts(const std::vector<BlockIndex>& parts, bool was_queued) {
@@ -550,24 +622,15 @@ class Refiner {
 
   void swap_to(StateIndex s, std::uint32_t target) {
     const StateIndex other = elements_[target];
-    const std::uint32_t from = state_scratch_[s].position;
+    const std::uint32_t from = position_[s];
     elements_[target] = s;
-    state_scratch_[s].position = target;
+    position_[s] = target;
     elements_[from] = other;
-    state_scratch_[other].position = from;
+    position_[other] = from;
   }
 
-  // Clears a touched state's scratch and returns the next state of its group.
-  StateIndex clear_state(StateIndex s) {
-    StateScratch& state = state_scratch_[s];
-    const StateIndex next = state.next_in_group;
-    state.touched = 0;
-    state.next_in_group = kNone;
-    return next;
-  }
-
-  // Choice and state records were cleared while grouping and splitting; what is left is
-  // the bookkeeping of this splitter.
+  // Marks and weights were cleared while grouping and splitting; what is left is the
+  // bookkeeping of this splitter.
   void reset_scratch() {
     for (BlockIndex b : touched_blocks_)
       block_first_group_[b] = kNone;
@@ -575,6 +638,8 @@ class Refiner {
     touched_states_.clear();
     touched_blocks_.clear();
   }
+
+  static constexpr std::size_t kInitialTableSize = 16;  // a power of two
 
   const model::ExplicitModel& model_;
   const model::TransitionMatrix& matrix_;
@@ -587,35 +652,44 @@ class Refiner {
 
   std::optional<IncomingEdges> incoming_;  // built by build_reverse_edges()
 
-  std::vector<StateIndex> elements_;
-  std::vector<StateScratch> state_scratch_;
+  // Per state, in separate arrays: each loop reads only the one it needs, and an array of
+  // 4 bytes per state stays in the last-level cache longer than a record of several.
+  std::vector<BlockIndex> block_;
+  std::vector<std::uint32_t> position_;  // in elements_
+  // During one splitter (or one block of a batch pass): kNone for a state not touched, else
+  // its slot in touched_states_ while weights are summed, then its group.
+  std::vector<std::uint32_t> mark_;
+  std::vector<StateIndex> elements_;  // the blocks' states, each block a range
+
+  // Per block, all grown together by add_block().
   std::vector<Block> blocks_;
+  std::vector<std::uint32_t> block_first_group_;  // kNone outside grouping
+  std::vector<std::uint32_t> batch_slot_;         // the block's index in a batch, or kNone
+
   std::vector<BlockIndex> queue_;
   std::uint64_t queued_edges_ = 0;  // edges into the queued blocks
   std::uint64_t steps_ = 0;
-  std::vector<std::uint32_t> batch_slot_;  // per block: its index in the batch, or kNone
 
   // Scratch for one splitter, reset after it.
-  // Per choice, the weight an edge into the current splitter gave it, in 64 bits whose 0
-  // means "no edge reached the choice". The choices of a state are adjacent (s * |A| + a),
-  // so a state's signature is one short scan, usually within one cache line. By mode:
+  // The weights of the touched states' choices, |A| words per touched state, in the order the
+  // states were touched; 0 means "no edge reached the choice". By mode:
   //   Integer:  the integer sum; every probability is at least 1 / D, so a reached choice
   //             sums to at least 1.
   //   Rounded:  the bits of the double sum; a reached choice whose sum is 0 (a weight too
   //             small for a double) holds kReachedZero, the bits of -0.0, so it reads as 0.
   //   Rational: one more than the index of its exact sum in rational_sum_.
-  // 8 bytes per choice in every mode: one array, instead of a flag beside each sum.
-  std::vector<std::uint64_t> choice_weight_;
+  // Sized by the largest splitter's touched states, not by the choices of the model.
+  std::vector<std::uint64_t> touched_weights_;
   static constexpr std::uint64_t kReachedZero = std::uint64_t{1} << 63U;
   std::vector<Rational> rational_sum_;
   std::size_t rational_sums_used_ = 0;  // for the current splitter
   std::vector<StateIndex> touched_states_;
-  std::vector<std::uint32_t> block_first_group_;  // indexed by block; blocks never exceed states
   std::vector<BlockIndex> touched_blocks_;
   std::vector<Group> groups_;
   std::vector<std::uint32_t> group_table_;
   std::vector<SignatureEntry> signature_;
   std::vector<SignatureEntry> group_signatures_;
+  std::vector<StateIndex> members_;  // the touched states, group by group
   std::vector<BlockIndex> parts_;
 };
 

@@ -4,6 +4,7 @@
 #include <cstring>
 #include <deque>
 #include <filesystem>
+#include <ostream>
 #include <string>
 #include <unordered_map>
 #include <vector>
@@ -43,6 +44,16 @@ std::string state_range_message(std::uint64_t state, std::string_view digits,
          (num_states == 1 ? " state" : " states");
 }
 
+// What a second, quiet reading of the body looks for: the offsets of the labels of some
+// collected distributions (the first reading keeps no offsets: 8 bytes a line, needed only to
+// point at a duplicate). The second reading checks every line as the first did, so it collects
+// the same lines in the same order and can count them.
+struct Locating {
+  std::vector<std::uint32_t> wanted;  // distribution indices, ascending
+  std::unordered_map<std::uint32_t, SourceOffset> found;
+  std::uint32_t collected = 0;
+};
+
 // Which part of the body a distributed reader reads, and where its lines go.
 struct PartReading {
   std::uint32_t index = 0;
@@ -66,10 +77,20 @@ class AutReader {
   std::optional<model::ExplicitModel> read() {
     if (!read_header()) return std::nullopt;
     read_transitions();
+    source_.release_pages_before(scan_.offset());
     check_transition_count();
     if (diagnostics_.should_stop() || !assemble_model()) return std::nullopt;
     if (diagnostics_.error_count() != errors_before_) return std::nullopt;
     return std::move(model_);
+  }
+
+  // The second reading (Locating): `diagnostics_` is a quiet engine without an error limit.
+  std::unordered_map<std::uint32_t, SourceOffset> locate(std::vector<std::uint32_t> wanted) {
+    locating_.emplace();
+    std::sort(wanted.begin(), wanted.end());
+    locating_->wanted = std::move(wanted);
+    if (read_header()) read_transitions();
+    return std::move(locating_->found);
   }
 
   std::optional<AutPart> read_part(bool& header_read) {
@@ -230,7 +251,7 @@ class AutReader {
 
   // --- transitions: (FROM, LABEL, TARGETS) ---------------------------------------------
   void read_transitions() {
-    if (!part_) {
+    if (!part_ && !locating_) {
       const std::size_t expected =
           std::min<std::uint64_t>(declared_transitions_, source_.text().size() / 8);
       collector_.reserve(expected, std::min<std::size_t>(expected, kSampleTransitions * 16));
@@ -243,7 +264,8 @@ class AutReader {
       ++transitions_seen_;
       read_transition();  // reports its own errors; the next line is read either way
       scan_.skip_line();
-      if (!part_ && transitions_seen_ == kSampleTransitions) reserve_edges_for_the_rest();
+      if (!part_ && !locating_ && transitions_seen_ == kSampleTransitions)
+        reserve_edges_for_the_rest();
       if (diagnostics_.should_stop()) return;
       release_read_pages();
       if (collector_.full()) {
@@ -322,12 +344,22 @@ class AutReader {
       hand_over(static_cast<StateIndex>(source.value), *label, scan_.offset_of(label_token));
       return true;
     }
+    if (locating_) {
+      note_location(scan_.offset_of(label_token));
+      return true;
+    }
     collector_.begin(static_cast<StateIndex>(source.value), label->action,
                      scan_.offset_of(label_token), label->reward);
     for (const Target& target : targets_) {
       collector_.add(static_cast<StateIndex>(target.state), target.probability);
     }
     return true;
+  }
+
+  void note_location(SourceOffset offset) {
+    const std::uint32_t d = locating_->collected++;
+    if (std::binary_search(locating_->wanted.begin(), locating_->wanted.end(), d))
+      locating_->found.emplace(d, offset);
   }
 
   void hand_over(StateIndex source, const LabelInfo& label, SourceOffset offset) {
@@ -516,10 +548,7 @@ class AutReader {
     std::vector<DistributionCollector::Duplicate> duplicates;
     std::optional<model::TransitionMatrix> matrix =
         collector_.finish(num_states_, k, model_.values, duplicates);
-    for (const DistributionCollector::Duplicate& duplicate : duplicates) {
-      if (diagnostics_.should_stop()) break;
-      report_duplicate(duplicate);
-    }
+    report_duplicates(duplicates);
     if (!matrix) return false;
     model_.name = std::filesystem::path(source_.path()).stem().string();
     model_.states.size = num_states_;
@@ -533,16 +562,41 @@ class AutReader {
             collector_.payload(d);
       }
     }
+    collector_.release();
     context.transitions = std::make_shared<const model::TransitionMatrix>(std::move(*matrix));
     model_.contexts.push_back(std::move(context));
     return true;
   }
 
-  void report_duplicate(const DistributionCollector::Duplicate& duplicate) {
+  // Reported up to the error limit. Where they are is found by reading the file again, a
+  // chunk of duplicates per reading: one reading under the default limit.
+  void report_duplicates(const std::vector<DistributionCollector::Duplicate>& duplicates) {
+    constexpr std::size_t kChunk = 256;
+    for (std::size_t begin = 0; begin < duplicates.size(); begin += kChunk) {
+      if (diagnostics_.should_stop()) return;
+      const std::size_t end = std::min(duplicates.size(), begin + kChunk);
+      std::vector<std::uint32_t> wanted;
+      for (std::size_t i = begin; i < end; ++i) {
+        wanted.push_back(duplicates[i].first);
+        wanted.push_back(duplicates[i].second);
+      }
+      std::ostream discarded(nullptr);
+      DiagnosticEngine quiet(diagnostics_.sources(), discarded, SIZE_MAX);
+      const std::unordered_map<std::uint32_t, SourceOffset> offsets =
+          AutReader(file_, quiet, options_).locate(std::move(wanted));
+      for (std::size_t i = begin; i < end; ++i) {
+        if (diagnostics_.should_stop()) return;
+        report_duplicate(duplicates[i], offsets);
+      }
+    }
+  }
+
+  void report_duplicate(const DistributionCollector::Duplicate& duplicate,
+                        const std::unordered_map<std::uint32_t, SourceOffset>& offsets) {
     const StateIndex state = collector_.source(duplicate.first);
     const std::string& action = model_.actions[collector_.action(duplicate.first)];
-    const SourceLocation first{file_, collector_.offset(duplicate.first)};
-    const SourceLocation second{file_, collector_.offset(duplicate.second)};
+    const SourceLocation first{file_, offsets.at(duplicate.first)};
+    const SourceLocation second{file_, offsets.at(duplicate.second)};
     diagnostics_.error(
         second, "state " + std::to_string(state) + " already has a distribution for action '" +
                     action + "' (line " + std::to_string(source_.line_column(first.offset).line) +
@@ -552,6 +606,7 @@ class AutReader {
   }
 
   std::optional<PartReading> part_;
+  std::optional<Locating> locating_;
   const char* part_end_ = nullptr;
   std::vector<std::pair<StateIndex, ValueId>> row_;  // the line handed to a part's sink
   FileId file_;
@@ -562,7 +617,7 @@ class AutReader {
   model::ExplicitModel model_;
   ValueCache cache_;
   ExactSum sum_;
-  DistributionCollector collector_;
+  DistributionCollector collector_{DistributionCollector::Kept::Payloads};
   std::vector<Target> targets_;
   std::size_t errors_before_;
 

@@ -7,10 +7,8 @@ namespace oasis::formats {
 void DistributionCollector::reserve(std::size_t distributions, std::size_t edges) {
   sources_.reserve(distributions);
   actions_.reserve(distributions);
-  if (keep_locations_) {
-    offsets_.reserve(distributions);
-    payloads_.reserve(distributions);
-  }
+  if (kept_ == Kept::OffsetsAndPayloads) offsets_.reserve(distributions);
+  if (kept_ != Kept::Nothing) payloads_.reserve(distributions);
   edge_begin_.reserve(distributions);
   targets_.reserve(edges);
   probabilities_.reserve(edges);
@@ -19,10 +17,8 @@ void DistributionCollector::reserve(std::size_t distributions, std::size_t edges
 void DistributionCollector::begin(model::StateIndex source, model::ActionIndex action,
                                   SourceOffset offset, std::uint32_t payload) {
   begin(source, action);
-  if (keep_locations_) {
-    offsets_.push_back(offset);
-    payloads_.push_back(payload);
-  }
+  if (kept_ == Kept::OffsetsAndPayloads) offsets_.push_back(offset);
+  if (kept_ != Kept::Nothing) payloads_.push_back(payload);
 }
 
 void DistributionCollector::begin(model::StateIndex source, model::ActionIndex action) {
@@ -61,7 +57,17 @@ std::optional<model::TransitionMatrix> DistributionCollector::finish(
   } else {
     build_copying(matrix, values);
   }
+  // The edges' starts are in choice_begin now: freed before the caller builds more beside it.
+  std::vector<model::EdgeIndex>().swap(edge_begin_);
   return matrix;
+}
+
+void DistributionCollector::release() {
+  std::vector<model::StateIndex>().swap(sources_);
+  std::vector<model::ActionIndex>().swap(actions_);
+  std::vector<SourceOffset>().swap(offsets_);
+  std::vector<std::uint32_t>().swap(payloads_);
+  std::vector<model::EdgeIndex>().swap(edge_begin_);
 }
 
 // Distributions already in choice order with sorted targets: the collected edge arrays are

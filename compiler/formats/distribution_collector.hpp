@@ -27,10 +27,14 @@ class DistributionCollector {
     std::uint32_t second;  // a later one for the same (source, action)
   };
 
+  // What is kept of each distribution besides its source and action: its offset in its file
+  // (8 bytes, for diagnostics) and the reader's payload (4 bytes). A reader that can find a
+  // place again by reading its file once more keeps payloads only; an explorer, whose
+  // distributions come from no file, keeps neither.
+  enum class Kept { OffsetsAndPayloads, Payloads, Nothing };
+
   DistributionCollector() = default;
-  // A caller that never reads offset() or payload() (an explorer, whose distributions come
-  // from no file) passes false and saves their 8 bytes per distribution.
-  explicit DistributionCollector(bool keep_locations) : keep_locations_(keep_locations) {}
+  explicit DistributionCollector(Kept kept) : kept_(kept) {}
 
   void reserve(std::size_t distributions, std::size_t edges);
   // Room for `edges` edges in all, for a reader that learns their number while reading.
@@ -40,10 +44,10 @@ class DistributionCollector {
   }
 
   // Starts distribution number size(). `offset` locates it in its file for diagnostics;
-  // `payload` is the reader's (a reward id, a choice index).
+  // `payload` is the reader's (a reward id, a choice index). Each is dropped when not kept.
   void begin(model::StateIndex source, model::ActionIndex action, SourceOffset offset,
              std::uint32_t payload);
-  // The same, for a collector that keeps no locations.
+  // The same, for a collector that keeps neither.
   void begin(model::StateIndex source, model::ActionIndex action);
   void add(model::StateIndex target, ValueId probability) {
     // Within one distribution targets should strictly increase; otherwise finish() sorts.
@@ -57,17 +61,19 @@ class DistributionCollector {
   [[nodiscard]] bool full() const { return targets_.size() >= UINT32_MAX - 1; }
   [[nodiscard]] model::StateIndex source(std::uint32_t d) const { return sources_[d]; }
   [[nodiscard]] model::ActionIndex action(std::uint32_t d) const { return actions_[d]; }
-  // Only where locations are kept (the default).
+  // Only where they are kept (both by default).
   [[nodiscard]] SourceOffset offset(std::uint32_t d) const { return offsets_.at(d); }
   [[nodiscard]] std::uint32_t payload(std::uint32_t d) const { return payloads_.at(d); }
 
   // Builds the matrix; `num_states * num_actions` must be below 2^32. Repeated
   // (source, action) pairs are listed in `duplicates` in file order and yield nullopt.
   // Probabilities of a target repeated within one distribution are added. The collected
-  // edges are consumed; the per-distribution accessors stay valid.
+  // edges are consumed; the per-distribution accessors stay valid until release().
   std::optional<model::TransitionMatrix> finish(std::uint32_t num_states, std::uint32_t num_actions,
                                                 RationalPool& values,
                                                 std::vector<Duplicate>& duplicates);
+  // Frees what is left once the caller has read the per-distribution accessors.
+  void release();
 
  private:
   static constexpr std::uint32_t kNone = UINT32_MAX;
@@ -80,7 +86,7 @@ class DistributionCollector {
                          std::vector<std::pair<model::StateIndex, ValueId>>& row) const;
   void build_in_place(model::TransitionMatrix& matrix);
 
-  bool keep_locations_ = true;
+  Kept kept_ = Kept::OffsetsAndPayloads;
   std::vector<model::StateIndex> sources_;
   std::vector<model::ActionIndex> actions_;
   std::vector<SourceOffset> offsets_;

@@ -685,7 +685,7 @@ class Explorer {
   std::vector<ValueId> probability_ids_;     // per update; kStateDependent when not constant
   std::vector<StateIndex> initial_;
   std::vector<StateIndex> deadlocks_;
-  formats::DistributionCollector collector_{/*keep_locations=*/false};
+  formats::DistributionCollector collector_{formats::DistributionCollector::Kept::Nothing};
   std::vector<std::vector<ValueId>> action_rewards_;  // per structure, per distribution
   std::vector<bool> action_items_;   // per structure: whether it has items on actions
   bool has_action_rewards_ = false;  // some structure has
