@@ -9,14 +9,29 @@ using model::ChoiceIndex;
 using model::EdgeIndex;
 using model::StateIndex;
 
-IncomingEdges::IncomingEdges(const model::TransitionMatrix& matrix, bool allow_packed)
-    : size_(matrix.num_edges()) {
+IncomingEdges::IncomingEdges(const model::TransitionMatrix& matrix, bool allow_packed) {
+  count(matrix);
+  build_records(matrix, allow_packed);
+}
+
+IncomingEdges IncomingEdges::offsets_only(const model::TransitionMatrix& matrix) {
+  IncomingEdges incoming;
+  incoming.count(matrix);
+  return incoming;
+}
+
+void IncomingEdges::count(const model::TransitionMatrix& matrix) {
+  size_ = matrix.num_edges();
   begin_.assign(std::size_t{matrix.num_states} + 1, 0);
   for (StateIndex t : matrix.edge_target)
     ++begin_[t + 1];
   for (std::size_t t = 0; t < matrix.num_states; ++t)
     begin_[t + 1] += begin_[t];
+}
 
+void IncomingEdges::build_records(const model::TransitionMatrix& matrix, bool allow_packed) {
+  if (has_records_) return;
+  has_records_ = true;
   const std::size_t num_choices = std::size_t{matrix.num_states} * matrix.num_actions;
   const ValueId largest_value =
       matrix.edge_probability.empty()

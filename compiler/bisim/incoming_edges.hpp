@@ -18,8 +18,15 @@ namespace oasis::bisim {
 
 class IncomingEdges {
  public:
-  // `allow_packed` false keeps 64-bit records even where 32 would do (for tests).
+  // The offsets and the records. `allow_packed` false keeps 64-bit records even where 32
+  // would do (for tests).
   explicit IncomingEdges(const model::TransitionMatrix& matrix, bool allow_packed = true);
+  // The offsets alone (begin, end, size): the records are the larger part by far, and a
+  // refinement done wholly by forward passes never reads them. build_records() adds them.
+  static IncomingEdges offsets_only(const model::TransitionMatrix& matrix);
+  // For a `matrix` these offsets were built from; once (later calls do nothing).
+  void build_records(const model::TransitionMatrix& matrix, bool allow_packed = true);
+  [[nodiscard]] bool has_records() const { return has_records_; }
 
   // The edges into t are [begin(t), end(t)).
   [[nodiscard]] model::EdgeIndex begin(model::StateIndex t) const { return begin_[t]; }
@@ -42,6 +49,8 @@ class IncomingEdges {
     ValueId probability;
   };
 
+  IncomingEdges() = default;
+  void count(const model::TransitionMatrix& matrix);
   template <typename Store>
   void fill(const model::TransitionMatrix& matrix, Store store);
 
@@ -52,6 +61,7 @@ class IncomingEdges {
 
   HugeArray<model::EdgeIndex> begin_;  // num_states + 1 offsets
   std::size_t size_ = 0;
+  bool has_records_ = false;
   bool packed_ = false;
   std::uint32_t value_bits_ = 0;
   std::uint32_t value_mask_ = 0;

@@ -35,10 +35,11 @@
 // hashes its signature: O(|A|) per touched state, charged to the edge that touched it, so
 // O(|A| m log n) in all (|A| is a small constant for the models this tool is for).
 // Memory: compact arrays only, 32-bit indices. Beyond the model, 4 bytes per edge (the
-// reverse edges, packed: incoming_edges.hpp; 8 when a record does not fit in 32 bits) and 16
-// per state (block, position, mark, elements); per block 20 bytes. Scratch is sized by what one
-// splitter touches, or by one block in a batch pass: never by the choices, nor by all blocks'
-// groups at once. docs/PERFORMANCE.md has the budget.
+// reverse edges, packed: incoming_edges.hpp; 8 when a record does not fit in 32 bits; built
+// only once a splitter is walked alone) and 20 per state (block, position, mark, elements,
+// reverse-edge offsets); per block 20 bytes. Scratch is sized by what one splitter touches, or
+// by one block in a batch pass: never by the choices, nor by all blocks' groups at once.
+// docs/PERFORMANCE.md has the budget.
 
 #include "bisim/refinement.hpp"
 
@@ -143,17 +144,18 @@ class Refiner {
   };
 
   // One (action, weight) pair of a signature. `key` is the integer sum (Integer mode), the
-  // rounded sum (Rounded) or the slot of the exact sum in rational_sum_ (Rational).
+  // rounded sum (Rounded; while a batch pass sums, the bits of the double sum) or the slot of
+  // the exact sum in rational_sum_ (Rational).
   struct SignatureEntry {
     ActionIndex action;
     std::uint32_t splitter;  // batch passes: which queued splitter; 0 otherwise
     std::uint64_t key;
-    double real = 0;  // batch passes in Rounded mode: the unrounded sum
   };
 
   // ---- set-up -----------------------------------------------------------------------------
 
-  void build_reverse_edges() { incoming_.emplace(matrix_); }
+  // Their offsets now; their records when the first splitter is walked alone (split_by).
+  void build_reverse_edges() { incoming_.emplace(IncomingEdges::offsets_only(matrix_)); }
 
   void initial_partition() {
     InitialBlocks initial =
@@ -272,6 +274,10 @@ class Refiner {
     statistics_.edge_visits += incoming_->size();
     ++statistics_.batch_passes;
 
+    // Each state's slot, so that an edge costs one lookup, not two; parts inherit their
+    // block's slot, so these stay right while blocks split.
+    for (StateIndex t = 0; t < num_states_; ++t)
+      mark_[t] = batch_slot_[block_[t]];
     const auto blocks_before = static_cast<BlockIndex>(blocks_.size());
     for (BlockIndex b = 0; b < blocks_before; ++b) {
       group_block_by_batch_signature(b);
@@ -281,6 +287,7 @@ class Refiner {
       reset_scratch();
     }
     std::fill(batch_slot_.begin(), batch_slot_.end(), kNone);
+    std::fill(mark_.begin(), mark_.end(), kNone);
   }
 
   // Groups the states of `block` that some queued splitter's edges reach by their weights to
@@ -303,63 +310,73 @@ class Refiner {
       if (i + 4 < end) {
         const ChoiceIndex c = elements_[i + 4] * k;
         for (EdgeIndex e = matrix_.choice_begin[c]; e < matrix_.choice_begin[c + k]; ++e)
-          __builtin_prefetch(&block_[matrix_.edge_target[e]]);
+          __builtin_prefetch(&mark_[matrix_.edge_target[e]]);
       }
       const StateIndex s = elements_[i];
       batch_signature(s, signature_);
       if (signature_.empty()) continue;
       touched_states_.push_back(s);
-      add_to_group(s, block, signature_);
+      touched_group_.push_back(add_to_group(block, signature_));
     }
   }
 
   // For each enabled action of `s`, the weight to each queued splitter its edges reach, in
-  // (action, splitter) order. Empty when no edge reaches a splitter.
-  void batch_signature(StateIndex s, std::vector<SignatureEntry>& out) {
-    out.clear();
+  // (action, splitter) order. Empty when no edge reaches a splitter. `out` is sized for one
+  // entry per edge first, so that adding one is a store, not a push_back.
+  void batch_signature(StateIndex s, std::vector<SignatureEntry>& out) const {
+    const ChoiceIndex choices = s * num_actions_;
+    out.resize(matrix_.choice_begin[choices + num_actions_] - matrix_.choice_begin[choices]);
+    std::size_t size = 0;
     for (ActionIndex a = 0; a < num_actions_; ++a) {
-      const ChoiceIndex c = s * num_actions_ + a;
-      const std::size_t first = out.size();
+      const ChoiceIndex c = choices + a;
+      const std::size_t first = size;
       for (EdgeIndex e = matrix_.choice_begin[c]; e < matrix_.choice_begin[c + 1]; ++e) {
-        const std::uint32_t slot = batch_slot_[block_[matrix_.edge_target[e]]];
+        const std::uint32_t slot = mark_[matrix_.edge_target[e]];
         if (slot == kNone) continue;
-        add_batch_weight(out, first, a, slot, matrix_.edge_probability[e]);
+        std::size_t i = first;
+        while (i < size && out[i].splitter != slot)
+          ++i;
+        if (i == size) out[size++] = {a, slot, 0};
+        add_to_key(out[i], matrix_.edge_probability[e]);
       }
-      std::sort(
-          out.begin() + static_cast<std::ptrdiff_t>(first), out.end(),
-          [](const SignatureEntry& x, const SignatureEntry& y) { return x.splitter < y.splitter; });
+      // By splitter: an insertion sort, as an action reaches few splitters.
+      for (std::size_t i = first + 1; i < size; ++i) {
+        const SignatureEntry entry = out[i];
+        std::size_t j = i;
+        for (; j > first && entry.splitter < out[j - 1].splitter; --j)
+          out[j] = out[j - 1];
+        out[j] = entry;
+      }
+    }
+    out.resize(size);
+    if (weights_.mode == WeightMode::Rounded) {
+      for (SignatureEntry& entry : out)
+        entry.key =
+            static_cast<std::uint64_t>(weights_.rounded_key(std::bit_cast<double>(entry.key)));
     }
   }
 
-  void add_batch_weight(std::vector<SignatureEntry>& out, std::size_t first, ActionIndex a,
-                        std::uint32_t slot, ValueId probability) const {
-    for (std::size_t i = first; i < out.size(); ++i) {
-      if (out[i].splitter == slot) {
-        add_to_key(out[i], probability);
-        return;
-      }
-    }
-    out.push_back({a, slot, 0});
-    add_to_key(out.back(), probability);
-  }
-
-  // Rounded keys are summed as doubles in `real` and rounded on every addition.
+  // Rounded keys are summed as doubles in the key's bits (0 is +0.0) and rounded at the end
+  // of the state (batch_signature).
   void add_to_key(SignatureEntry& entry, ValueId probability) const {
     if (weights_.mode == WeightMode::Integer) {
       entry.key += weights_.integer[probability];
     } else {
-      entry.real += weights_.real[probability];
-      entry.key = static_cast<std::uint64_t>(weights_.rounded_key(entry.real));
+      entry.key = std::bit_cast<std::uint64_t>(std::bit_cast<double>(entry.key) +
+                                               weights_.real[probability]);
     }
   }
 
   // ---- one splitter -----------------------------------------------------------------------
 
   void split_by(BlockIndex splitter) {
+    incoming_->build_records(matrix_);
     accumulate_weights(splitter);
     group_touched_states();
     place_members();
     split_touched_blocks();
+    for (StateIndex s : touched_states_)
+      mark_[s] = kNone;
     reset_scratch();
   }
 
@@ -443,9 +460,8 @@ class Refiner {
   void group_touched_states() {
     start_grouping();
     for (std::uint32_t slot = 0; slot < touched_states_.size(); ++slot) {
-      const StateIndex s = touched_states_[slot];
       collect_signature(slot, signature_);
-      add_to_group(s, block_[s], signature_);
+      touched_group_.push_back(add_to_group(block_[touched_states_[slot]], signature_));
     }
   }
 
@@ -466,14 +482,16 @@ class Refiner {
     return a.key == b.key;
   }
 
+  // One mix per entry: equal hashes are compared entry by entry anyway.
   [[nodiscard]] std::uint64_t signature_hash(BlockIndex block,
                                              const std::vector<SignatureEntry>& signature) const {
-    std::uint64_t hash = mix_bits(block + 0x9e3779b97f4a7c15ULL);
+    constexpr std::uint64_t kOdd = 0x9e3779b97f4a7c15ULL;
+    std::uint64_t hash = block;
     for (const SignatureEntry& entry : signature) {
-      hash = mix_bits(hash ^ entry.action ^ (std::uint64_t{entry.splitter} << 32U)) ^
-             mix_bits(entry_hash(entry));
+      const std::uint64_t where = (std::uint64_t{entry.splitter} << 32U) | entry.action;
+      hash = mix_bits(hash + where * kOdd + entry_hash(entry));
     }
-    return hash;
+    return mix_bits(hash);
   }
 
   [[nodiscard]] bool same_signature(const std::vector<SignatureEntry>& a,
@@ -491,9 +509,9 @@ class Refiner {
     group_table_.assign(kInitialTableSize, kNone);
   }
 
-  // Puts `s` (already in touched_states_) into the group of its block with the same
-  // signature, making one if needed; its mark becomes the group.
-  void add_to_group(StateIndex s, BlockIndex block, const std::vector<SignatureEntry>& signature) {
+  // Counts a state into the group of its block with the same signature, making one if needed;
+  // returns the group.
+  std::uint32_t add_to_group(BlockIndex block, const std::vector<SignatureEntry>& signature) {
     const std::uint64_t hash = signature_hash(block, signature);
     std::uint32_t& head = group_table_[hash & (group_table_.size() - 1)];
     std::uint32_t group = head;
@@ -514,8 +532,8 @@ class Refiner {
       block_first_group_[block] = group;
       if (groups_.size() * 2 > group_table_.size()) grow_group_table();
     }
-    mark_[s] = group;
     ++groups_[group].size;
+    return group;
   }
 
   // Twice the slots, every group chained again by its hash (the table stays at most half full).
@@ -537,8 +555,8 @@ class Refiner {
       next += group.size;
     }
     members_.resize(next);
-    for (StateIndex s : touched_states_)
-      members_[groups_[mark_[s]].member_begin++] = s;
+    for (std::size_t i = 0; i < touched_states_.size(); ++i)
+      members_[groups_[touched_group_[i]].member_begin++] = touched_states_[i];
     for (Group& group : groups_)
       group.member_begin -= group.size;
   }
@@ -552,7 +570,7 @@ class Refiner {
 
   // Rearranges the block's range as [untouched | group 1 | group 2 | ...] and makes every
   // group a block of its own (the first group keeps the block's index when nothing is
-  // untouched). Clears the marks of the block's touched states.
+  // untouched).
   void split_block(BlockIndex block) {
     const std::uint32_t first_group = block_first_group_[block];
     Block& range = blocks_[block];
@@ -560,11 +578,7 @@ class Refiner {
     for (std::uint32_t g = first_group; g != kNone; g = groups_[g].next_in_block)
       touched += groups_[g].size;
     const std::uint32_t untouched = range.size() - touched;
-    if (untouched == 0 && groups_[first_group].next_in_block == kNone) {  // one group: no split
-      for (StateIndex s : group_members(groups_[first_group]))
-        mark_[s] = kNone;
-      return;
-    }
+    if (untouched == 0 && groups_[first_group].next_in_block == kNone) return;  // one group
 
     // Move the touched states to the tail of the range, then lay them out group by group.
     std::uint32_t tail = range.end;
@@ -582,10 +596,8 @@ class Refiner {
     }
     for (std::uint32_t g = first_group; g != kNone; g = groups_[g].next_in_block) {
       const std::uint32_t begin = cursor;
-      for (StateIndex s : group_members(groups_[g])) {
+      for (StateIndex s : group_members(groups_[g]))
         swap_to(s, cursor++);
-        mark_[s] = kNone;
-      }
       BlockIndex part = block;
       if (parts.empty()) {
         blocks_[block].begin = begin;
@@ -629,13 +641,13 @@ class Refiner {
     position_[other] = from;
   }
 
-  // Marks and weights were cleared while grouping and splitting; what is left is the
-  // bookkeeping of this splitter.
+  // Weights were cleared while grouping; what is left is the bookkeeping of this splitter.
   void reset_scratch() {
     for (BlockIndex b : touched_blocks_)
       block_first_group_[b] = kNone;
     rational_sums_used_ = 0;
     touched_states_.clear();
+    touched_group_.clear();
     touched_blocks_.clear();
   }
 
@@ -650,14 +662,15 @@ class Refiner {
   WeightTable weights_;
   RefinementStatistics statistics_;
 
-  std::optional<IncomingEdges> incoming_;  // built by build_reverse_edges()
+  std::optional<IncomingEdges>
+      incoming_;  // offsets by build_reverse_edges(), records by split_by()
 
   // Per state, in separate arrays: each loop reads only the one it needs, and an array of
   // 4 bytes per state stays in the last-level cache longer than a record of several.
   std::vector<BlockIndex> block_;
   std::vector<std::uint32_t> position_;  // in elements_
-  // During one splitter (or one block of a batch pass): kNone for a state not touched, else
-  // its slot in touched_states_ while weights are summed, then its group.
+  // During one splitter: kNone for a state not touched, else its slot in touched_states_ (and
+  // touched_weights_). During a batch pass: the splitter slot of its block, or kNone.
   std::vector<std::uint32_t> mark_;
   std::vector<StateIndex> elements_;  // the blocks' states, each block a range
 
@@ -684,6 +697,7 @@ class Refiner {
   std::vector<Rational> rational_sum_;
   std::size_t rational_sums_used_ = 0;  // for the current splitter
   std::vector<StateIndex> touched_states_;
+  std::vector<std::uint32_t> touched_group_;  // the group of each of touched_states_
   std::vector<BlockIndex> touched_blocks_;
   std::vector<Group> groups_;
   std::vector<std::uint32_t> group_table_;

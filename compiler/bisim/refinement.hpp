@@ -50,7 +50,9 @@ struct RefinementStatistics {
   std::uint64_t batch_passes = 0;    // forward passes that took the whole queue at once
   std::uint32_t initial_blocks = 0;  // blocks of the reward/enabled-action signature
   bool exact_integer_sums = false;   // sums were exact integers over a common denominator
-  // Wall-clock seconds of the phases: reverse edges, initial partition, splitting.
+  // Wall-clock seconds of the phases: reverse edges (their offsets: the records are built
+  // when a splitter is first walked alone, and counted in splitting), initial partition,
+  // splitting.
   double setup_seconds = 0;
   double initial_seconds = 0;
   double splitting_seconds = 0;

@@ -116,7 +116,18 @@ void sort_by_target(std::span<std::pair<StateIndex, ValueId>> row) {
     return;
   }
   const auto by_target = [](const auto& x, const auto& y) { return x.first < y.first; };
-  if (!std::is_sorted(row.begin(), row.end(), by_target)) {
+  constexpr std::size_t kShortRow = 16;
+  if (row.size() <= kShortRow) {
+    // Rows are mostly a few targets: an insertion sort (stable) allocates nothing, where
+    // std::stable_sort asks for a buffer every time.
+    for (std::size_t i = 1; i < row.size(); ++i) {
+      const std::pair<StateIndex, ValueId> edge = row[i];
+      std::size_t j = i;
+      for (; j > 0 && edge.first < row[j - 1].first; --j)
+        row[j] = row[j - 1];
+      row[j] = edge;
+    }
+  } else if (!std::is_sorted(row.begin(), row.end(), by_target)) {
     std::stable_sort(row.begin(), row.end(), by_target);
   }
 }

@@ -1,9 +1,12 @@
 #!/usr/bin/env python3
 """Bisimulation benchmark at 10^4, 10^5, 10^6 and 10^7 action transitions, single core, each
-run end to end with `oasisc quotient ... -j 1`. Three families, each with a known answer:
+run end to end with `oasisc quotient ... -j 1`. Four families, each with a known answer:
 
   planted  random .aut models from oasis-planted (4 actions, 3 probabilistic edges each) whose
            coarsest bisimulation the generator computes independently; read, refine, write.
+           1000 planted blocks (--blocks).
+  many     the same generator with many blocks: one per 10 states (250,000 at 10^7) and 2 to
+           4 probabilistic edges per action, so that what grows with the block count shows.
   grid     a factored N x N slippery grid (4 actions) rewarded on its last column: y is
            irrelevant, so the answer is N blocks (attention: forget y). Explore and refine.
   queue    two symmetric bounded queues (1 action, 4 outcomes), reward q1 + q2: mirrored
@@ -68,21 +71,25 @@ def report(family, transitions, states, edges, expected, blocks, prepare, second
         raise SystemExit(f"{family}: block count {blocks} differs from the known {expected}")
 
 
-def run_planted(args, oasisc, planted, directory, exponent):
+def run_planted(args, oasisc, planted, directory, exponent, many_blocks):
     transitions = 10 ** exponent
-    source = os.path.join(directory, f"planted_{exponent}.aut")
+    family = "many" if many_blocks else "planted"
+    source = os.path.join(directory, f"{family}_{exponent}.aut")
     target = os.path.join(directory, f"quotient_{exponent}.aut")
+    if many_blocks:
+        shape = ["--blocks", str(max(4, transitions // 40)), "--targets", "2-4"]
+    else:
+        shape = ["--blocks", str(min(args.blocks, transitions // 8))]
     started = time.perf_counter()
-    generated = subprocess.run([planted, "--transitions", str(transitions), "--blocks",
-                                str(min(args.blocks, transitions // 8)), "--seed",
-                                str(args.seed), "-o", source],
+    generated = subprocess.run([planted, "--transitions", str(transitions)] + shape +
+                               ["--seed", str(args.seed), "-o", source],
                                capture_output=True, text=True, check=True)
     prepare = time.perf_counter() - started
     seconds, peak, output = run_timed([oasisc, "quotient", source, "--format", "aut", "-o",
                                        target, "-j", "1", "--progress", "never",
                                        "--max-states", "100000000"])
     states, edges, blocks = summary_figures(output)
-    report("planted", transitions, states, edges, int(generated.stdout.strip()), blocks, prepare,
+    report(family, transitions, states, edges, int(generated.stdout.strip()), blocks, prepare,
            seconds, peak)
     os.remove(source)
     os.remove(target)
@@ -109,23 +116,24 @@ def run_factored(family, oasisc, directory, exponent):
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--build", default="build/default")
-    parser.add_argument("--family", default="all", choices=["all", "planted", "grid", "queue"])
+    parser.add_argument("--family", default="all",
+                        choices=["all", "planted", "many", "grid", "queue"])
     parser.add_argument("--sizes", default="4,5,6,7", help="exponents of 10 (action transitions)")
     parser.add_argument("--blocks", type=int, default=1000, help="planted blocks")
     parser.add_argument("--seed", type=int, default=1)
     args = parser.parse_args()
     oasisc = os.path.join(args.build, "compiler", "oasisc")
     planted = os.path.join(args.build, "tests", "oasis-planted")
-    families = ["planted", "grid", "queue"] if args.family == "all" else [args.family]
+    families = ["planted", "many", "grid", "queue"] if args.family == "all" else [args.family]
     print(f"# quotient benchmark, {os.cpu_count()} cores, {time.strftime('%Y-%m-%d')}, -j 1, "
-          f"planted: {args.blocks} blocks")
+          f"planted: {args.blocks} blocks, many: one block per 10 states")
     print(f"{'family':>8} {'transitions':>12} {'states':>10} {'edges':>10} {'known':>8} "
           f"{'blocks':>8} {'prep s':>7} {'total s':>8} {'peak MiB':>9} {'ns/(m log n)':>13}")
     with tempfile.TemporaryDirectory() as directory:
         for family in families:
             for exponent in (int(e) for e in args.sizes.split(",")):
-                if family == "planted":
-                    run_planted(args, oasisc, planted, directory, exponent)
+                if family in ("planted", "many"):
+                    run_planted(args, oasisc, planted, directory, exponent, family == "many")
                 else:
                     run_factored(family, oasisc, directory, exponent)
     return 0
