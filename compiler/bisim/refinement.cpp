@@ -278,36 +278,48 @@ class Refiner {
     // block's slot, so these stay right while blocks split.
     for (StateIndex t = 0; t < num_states_; ++t)
       mark_[t] = batch_slot_[block_[t]];
-    const auto blocks_before = static_cast<BlockIndex>(blocks_.size());
-    for (BlockIndex b = 0; b < blocks_before; ++b) {
-      group_block_by_batch_signature(b);
-      if (touched_states_.empty()) continue;
-      place_members();
-      split_touched_blocks();
-      reset_scratch();
+    // The blocks' ranges tile elements_: taken in that order, the states ahead are known
+    // across the end of a block, for prefetching. A split keeps its parts inside the block's
+    // range, so the next range starts where the block ended.
+    for (std::uint32_t begin = 0; begin < num_states_;) {
+      const BlockIndex block = block_[elements_[begin]];
+      const std::uint32_t end = blocks_[block].end;
+      group_block_by_batch_signature(block);
+      if (!touched_states_.empty()) {
+        place_members();
+        split_touched_blocks();
+        reset_scratch();
+      }
+      begin = end;
     }
     std::fill(batch_slot_.begin(), batch_slot_.end(), kNone);
     std::fill(mark_.begin(), mark_.end(), kNone);
   }
 
   // Groups the states of `block` that some queued splitter's edges reach by their weights to
-  // the splitters. The states are visited in the block's order, not in memory order, so the
-  // reads of their choices are prefetched a few states ahead: first the choice offsets, then
-  // the edges, then the blocks of the targets.
+  // the splitters. The states are visited in the blocks' order, not in memory order, so the
+  // reads of their choices are prefetched a few states ahead (in elements_, past the block's
+  // end): first the choice offsets, then both ends of the edges, then the slots of the targets.
   void group_block_by_batch_signature(BlockIndex block) {
     start_grouping();
     const std::uint32_t begin = blocks_[block].begin;
     const std::uint32_t end = blocks_[block].end;
     const std::uint32_t k = num_actions_;
     for (std::uint32_t i = begin; i < end; ++i) {
-      if (i + 16 < end)
+      if (i + 16 < num_states_)
         __builtin_prefetch(&matrix_.choice_begin[std::size_t{elements_[i + 16]} * k]);
-      if (i + 8 < end) {
-        const EdgeIndex first = matrix_.choice_begin[std::size_t{elements_[i + 8]} * k];
-        __builtin_prefetch(&matrix_.edge_target[first]);
-        __builtin_prefetch(&matrix_.edge_probability[first]);
+      if (i + 8 < num_states_) {
+        const ChoiceIndex c = elements_[i + 8] * k;
+        const EdgeIndex first = matrix_.choice_begin[c];
+        const EdgeIndex past = matrix_.choice_begin[c + k];
+        if (first < past) {
+          __builtin_prefetch(&matrix_.edge_target[first]);
+          __builtin_prefetch(&matrix_.edge_probability[first]);
+          __builtin_prefetch(&matrix_.edge_target[past - 1]);
+          __builtin_prefetch(&matrix_.edge_probability[past - 1]);
+        }
       }
-      if (i + 4 < end) {
+      if (i + 4 < num_states_) {
         const ChoiceIndex c = elements_[i + 4] * k;
         for (EdgeIndex e = matrix_.choice_begin[c]; e < matrix_.choice_begin[c + k]; ++e)
           __builtin_prefetch(&mark_[matrix_.edge_target[e]]);
