@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "geom/bsp_box_split.hpp"
 #include "geom/polytope_error_bound.hpp"
 
 namespace oasis::geom {
@@ -47,6 +48,25 @@ Rational box_share(const Polytope& cell, const AffineStep& step, const Point& me
   return clipped.volume() / box_volume;
 }
 
+// The pieces of the box B in one walk of the tree (geom/bsp_box_split.hpp) when B has one
+// or two disturbed axes; nullopt otherwise. Their measures are vol(B ∩ Q) exactly, as
+// box_share's, so the rows do not depend on the path taken.
+std::optional<std::vector<CellMeasure>> pieces_of_box(const BspTree& tree,
+                                                      const AffineStep& step, const Point& mean) {
+  std::vector<std::optional<Rational>> fixed(mean.size());
+  Point low;
+  Point high;
+  for (std::size_t i = 0; i < mean.size(); ++i) {
+    if (step.disturbance[i]) {
+      low.push_back(mean[i] + step.disturbance[i]->low);
+      high.push_back(mean[i] + step.disturbance[i]->high);
+    } else {
+      fixed[i] = mean[i];
+    }
+  }
+  return box_cell_measures(tree, fixed, low, high);
+}
+
 }  // namespace
 
 std::vector<std::pair<std::size_t, Rational>> successor_row(const PolytopeGeometry& geometry,
@@ -80,6 +100,15 @@ std::vector<std::pair<std::size_t, Rational>> successor_row(const PolytopeGeomet
     return r;
   };
   Rational inside = 0;
+  if (auto pieces = pieces_of_box(tree, step, mean)) {
+    for (auto& [cell, measure] : *pieces) {
+      measure /= box_volume;
+      inside += measure;
+      row.emplace_back(cell, std::move(measure));
+    }
+    if (inside < 1) row.emplace_back(outside, 1 - inside);
+    return row;
+  }
   for (const std::uint32_t cell : tree.cells_meeting(range)) {
     const Rational p = box_share(tree.cells()[cell].polytope, step, mean, box_volume);
     if (sgn(p) <= 0) continue;
