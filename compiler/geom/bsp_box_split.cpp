@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <utility>
 
 namespace oasis::geom {
@@ -14,9 +15,49 @@ class Slice {
   explicit Slice(const std::vector<std::optional<Rational>>& fixed) : fixed_(fixed) {
     for (std::size_t j = 0; j < fixed.size(); ++j)
       if (!fixed[j]) free_.push_back(j);
+    near_fixed_.resize(fixed.size());
+    for (std::size_t j = 0; j < fixed.size(); ++j)
+      if (fixed[j]) near_fixed_[j] = fixed[j]->get_d();
   }
 
   [[nodiscard]] const std::vector<std::size_t>& free_axes() const { return free_; }
+
+  // The filter: -1 when every vertex of the polygon is surely strictly below the node's
+  // hyperplane, +1 when every one is surely strictly above, 0 when the doubles cannot tell
+  // (then exact arithmetic decides). Each a·v - c is computed in doubles from rounded
+  // inputs; its error is far below 2^-40 times the sum of the magnitudes of its terms (a
+  // few roundings of 2^-53 each), plus a tiny absolute term for underflow. Infinite or NaN
+  // values fail every comparison and so leave the decision to the exact path.
+  template <typename Polygon>
+  [[nodiscard]] int side_of(const RoundedBspNode& node, const Polygon& polygon) const {
+    double c = node.bound;
+    double scale = std::abs(c);
+    for (std::size_t j = 0; j < fixed_.size(); ++j) {
+      if (!fixed_[j]) continue;
+      const double term = node.normal[j] * near_fixed_[j];
+      c -= term;
+      scale += std::abs(term);
+    }
+    const double a0 = node.normal[free_[0]];
+    const double a1 = node.normal[free_[1]];
+    int below = 0;
+    int above = 0;
+    for (const auto& v : polygon) {
+      const double x = a0 * v.near_x;
+      const double y = a1 * v.near_y;
+      const double margin = (scale + std::abs(x) + std::abs(y)) * 0x1p-40 + 0x1p-1000;
+      const double value = x + y - c;
+      if (value < -margin) {
+        ++below;
+      } else if (value > margin) {
+        ++above;
+      } else {
+        return 0;
+      }
+    }
+    if (below == 0) return 1;
+    return above == 0 ? -1 : 0;
+  }
 
   // Writes the restricted coefficients into `a` (one per free axis) and the bound into `c`.
   void restrict(const HalfSpace& h, std::array<Rational, 2>& a, Rational& c) const {
@@ -34,12 +75,38 @@ class Slice {
  private:
   const std::vector<std::optional<Rational>>& fixed_;
   std::vector<std::size_t> free_;
+  std::vector<double> near_fixed_;
 };
 
+// The line a0 x + a1 y = c.
+struct Line {
+  Rational a0;
+  Rational a1;
+  Rational c;
+};
+
+// A polygon's vertex and the line its outgoing edge lies on (an index into the walk's lines).
+// Crossings are computed from two lines, never from earlier crossings, so their numbers
+// stay as short as the lines' coefficients however deep the walk goes.
 struct Vertex {
   Rational x;
   Rational y;
+  std::uint32_t edge = 0;
+  double near_x = 0;  // x and y rounded, for the filter
+  double near_y = 0;
 };
+
+Vertex vertex(Rational x, Rational y, std::uint32_t edge) {
+  const double near_x = x.get_d();
+  const double near_y = y.get_d();
+  return {std::move(x), std::move(y), edge, near_x, near_y};
+}
+
+// The common point of two lines that are not parallel (Cramer's rule).
+Vertex crossing(const Line& l, const Line& m, std::uint32_t edge) {
+  const Rational det = l.a0 * m.a1 - m.a0 * l.a1;
+  return vertex((l.c * m.a1 - m.c * l.a1) / det, (l.a0 * m.c - m.a0 * l.c) / det, edge);
+}
 using Polygon = std::vector<Vertex>;
 
 // Twice the signed area (shoelace); pieces keep the box's counter-clockwise orientation.
@@ -56,28 +123,36 @@ Rational twice_area(const Polygon& polygon, Rational& term) {
   return sum;
 }
 
-// Sutherland–Hodgman against one line, keeping both sides: `side[i]` is a·v_i - c. A vertex
-// on the line goes to both pieces; an edge whose ends lie strictly on opposite sides adds
-// its crossing point to both.
-void clip(const Polygon& polygon, const std::vector<Rational>& side, Polygon& below,
-          Polygon& above) {
+// Sutherland–Hodgman against the line `cut` (index into `lines`), keeping both sides:
+// `side[i]` is a·v_i - c. A vertex on the line goes to both pieces; an edge whose ends lie
+// strictly on opposite sides adds its crossing point to both. In each piece the edge from
+// where it leaves the other side to where it comes back lies on the cut.
+void clip(const Polygon& polygon, const std::vector<Rational>& side, const std::vector<Line>& lines,
+          std::uint32_t cut, Polygon& below, Polygon& above) {
   for (std::size_t i = 0; i < polygon.size(); ++i) {
     const std::size_t j = (i + 1) % polygon.size();
     const int si = sgn(side[i]);
     const int sj = sgn(side[j]);
-    if (si <= 0) below.push_back(polygon[i]);
-    if (si >= 0) above.push_back(polygon[i]);
+    const Vertex& v = polygon[i];
+    if (si <= 0) {
+      below.push_back(v);
+      if (si == 0 && sj > 0) below.back().edge = cut;
+    }
+    if (si >= 0) {
+      above.push_back(v);
+      if (si == 0 && sj < 0) above.back().edge = cut;
+    }
     if (si * sj >= 0) continue;
-    const Rational t = side[i] / (side[i] - side[j]);
-    Vertex crossing{polygon[i].x + t * (polygon[j].x - polygon[i].x),
-                    polygon[i].y + t * (polygon[j].y - polygon[i].y)};
-    below.push_back(crossing);
-    above.push_back(std::move(crossing));
+    Vertex point = crossing(lines[v.edge], lines[cut], v.edge);
+    (si < 0 ? above : below).push_back(point);  // entering that piece: on along the edge
+    point.edge = cut;                           // leaving this one: along the cut
+    (si < 0 ? below : above).push_back(std::move(point));
   }
 }
 
-std::vector<CellMeasure> polygon_pieces(const BspTree& tree, const Slice& slice,
-                                        Polygon box) {
+std::vector<CellMeasure> polygon_pieces(const BspTree& tree,
+                                        std::span<const RoundedBspNode> rounded, const Slice& slice,
+                                        Polygon box, std::vector<Line> lines) {
   std::vector<CellMeasure> found;
   std::vector<std::pair<std::uint32_t, Polygon>> pending;
   pending.emplace_back(0, std::move(box));
@@ -93,6 +168,13 @@ std::vector<CellMeasure> polygon_pieces(const BspTree& tree, const Slice& slice,
       Rational area = abs(twice_area(polygon, term)) / 2;
       if (sgn(area) > 0) found.push_back({node.cell, std::move(area)});
       continue;
+    }
+    if (!rounded.empty()) {
+      const int side_in_doubles = slice.side_of(rounded[index], polygon);
+      if (side_in_doubles != 0) {
+        pending.emplace_back(side_in_doubles < 0 ? node.below : node.above, std::move(polygon));
+        continue;
+      }
     }
     slice.restrict(node.split, a, c);
     side.resize(polygon.size());
@@ -113,7 +195,10 @@ std::vector<CellMeasure> polygon_pieces(const BspTree& tree, const Slice& slice,
     } else {
       Polygon below;
       Polygon above;
-      clip(polygon, side, below, above);
+      below.reserve(polygon.size() + 1);
+      above.reserve(polygon.size() + 1);
+      lines.push_back({a[0], a[1], c});
+      clip(polygon, side, lines, static_cast<std::uint32_t>(lines.size() - 1), below, above);
       pending.emplace_back(node.below, std::move(below));
       pending.emplace_back(node.above, std::move(above));
     }
@@ -164,7 +249,7 @@ std::vector<CellMeasure> interval_pieces(const BspTree& tree, const Slice& slice
 
 std::optional<std::vector<CellMeasure>> box_cell_measures(
     const BspTree& tree, const std::vector<std::optional<Rational>>& fixed, const Point& low,
-    const Point& high) {
+    const Point& high, std::span<const RoundedBspNode> rounded) {
   const Slice slice(fixed);
   const std::vector<std::size_t>& axes = slice.free_axes();
   if (axes.empty() || axes.size() > 2) return std::nullopt;
@@ -180,12 +265,13 @@ std::optional<std::vector<CellMeasure>> box_cell_measures(
   if (axes.size() == 1) {
     found = interval_pieces(tree, slice, from[0], to[0]);
   } else {
-    Polygon box(4);  // counter-clockwise
-    box[0] = {from[0], from[1]};
-    box[1] = {to[0], from[1]};
-    box[2] = {to[0], to[1]};
-    box[3] = {from[0], to[1]};
-    found = polygon_pieces(tree, slice, std::move(box));
+    Polygon box(4);                        // counter-clockwise
+    box[0] = vertex(from[0], from[1], 0);  // edges on y = from1, x = to0, y = to1, x = from0
+    box[1] = vertex(to[0], from[1], 1);
+    box[2] = vertex(to[0], to[1], 2);
+    box[3] = vertex(from[0], to[1], 3);
+    std::vector<Line> lines{{0, 1, from[1]}, {1, 0, to[0]}, {0, 1, to[1]}, {1, 0, from[0]}};
+    found = polygon_pieces(tree, rounded, slice, std::move(box), std::move(lines));
   }
   std::sort(found.begin(), found.end(),
             [](const CellMeasure& p, const CellMeasure& q) { return p.cell < q.cell; });

@@ -11,6 +11,7 @@
 
 #include <cstdint>
 #include <optional>
+#include <span>
 #include <vector>
 
 #include "geom/bsp_tree.hpp"
@@ -26,8 +27,10 @@ struct CellMeasure {
 // order), on the slice through the `fixed` values of the other axes: every cell whose piece
 // of it has positive measure, with that measure, sorted by cell. The fixed values must lie in
 // the domain. nullopt when there are not one or two free axes (the general path applies).
+// `rounded`, when given, is tree.rounded_nodes(): a filter in doubles then decides the side
+// of most nodes without exact arithmetic (the result is the same).
 std::optional<std::vector<CellMeasure>> box_cell_measures(
     const BspTree& tree, const std::vector<std::optional<Rational>>& fixed, const Point& low,
-    const Point& high);
+    const Point& high, std::span<const RoundedBspNode> rounded = {});
 
 }  // namespace oasis::geom

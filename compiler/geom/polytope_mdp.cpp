@@ -52,6 +52,7 @@ Rational box_share(const Polytope& cell, const AffineStep& step, const Point& me
 // or two disturbed axes; nullopt otherwise. Their measures are vol(B ∩ Q) exactly, as
 // box_share's, so the rows do not depend on the path taken.
 std::optional<std::vector<CellMeasure>> pieces_of_box(const BspTree& tree,
+                                                      std::span<const RoundedBspNode> rounded,
                                                       const AffineStep& step, const Point& mean) {
   std::vector<std::optional<Rational>> fixed(mean.size());
   Point low;
@@ -64,15 +65,14 @@ std::optional<std::vector<CellMeasure>> pieces_of_box(const BspTree& tree,
       fixed[i] = mean[i];
     }
   }
-  return box_cell_measures(tree, fixed, low, high);
+  return box_cell_measures(tree, fixed, low, high, rounded);
 }
 
 }  // namespace
 
-std::vector<std::pair<std::size_t, Rational>> successor_row(const PolytopeGeometry& geometry,
-                                                            const BspTree& tree,
-                                                            const AffineStep& step,
-                                                            const Point& from) {
+std::vector<std::pair<std::size_t, Rational>> successor_row(
+    const PolytopeGeometry& geometry, const BspTree& tree, const AffineStep& step,
+    const Point& from, std::span<const RoundedBspNode> rounded) {
   Point mean = step.offset;
   for (std::size_t i = 0; i < mean.size(); ++i)
     mean[i] += dot(step.matrix[i], from);
@@ -100,7 +100,7 @@ std::vector<std::pair<std::size_t, Rational>> successor_row(const PolytopeGeomet
     return r;
   };
   Rational inside = 0;
-  if (auto pieces = pieces_of_box(tree, step, mean)) {
+  if (auto pieces = pieces_of_box(tree, rounded, step, mean)) {
     for (auto& [cell, measure] : *pieces) {
       measure /= box_volume;
       inside += measure;
@@ -131,6 +131,7 @@ PolytopeMdp polytope_finite_mdp(const PolytopeGeometry& geometry,
   const BspTree& tree = partition.tree;
   const auto num_states = static_cast<std::uint32_t>(tree.num_cells() + 1);
   mdp.states.size = num_states;
+  const std::vector<RoundedBspNode> rounded = tree.rounded_nodes();  // for the rows' filter
   const auto num_actions = static_cast<model::ActionIndex>(action_names.size());
   model::TransitionBuilder transitions(num_states, num_actions);
   model::RewardTable rewards;
@@ -138,8 +139,8 @@ PolytopeMdp polytope_finite_mdp(const PolytopeGeometry& geometry,
   for (std::size_t cell = 0; cell < tree.num_cells(); ++cell) {
     rewards.state[cell] = mdp.values.intern(partition.cell_reward[cell]);
     for (model::ActionIndex a = 0; a < num_actions; ++a) {
-      for (const auto& [target, p] :
-           successor_row(geometry, tree, geometry.actions[a], tree.cells()[cell].representative))
+      for (const auto& [target, p] : successor_row(geometry, tree, geometry.actions[a],
+                                                   tree.cells()[cell].representative, rounded))
         transitions.add(static_cast<model::StateIndex>(cell), a,
                         static_cast<model::StateIndex>(target), mdp.values.intern(p));
     }

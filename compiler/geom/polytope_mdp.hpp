@@ -10,6 +10,7 @@
 // slice through the fixed undisturbed ones, exact. The mass outside the domain goes to
 // `outside`. Candidate targets come from walking the BSP tree with B.
 
+#include <span>
 #include <string>
 #include <vector>
 
@@ -32,10 +33,10 @@ PolytopeMdp polytope_finite_mdp(const PolytopeGeometry& geometry,
 
 // One row alone, exact: (cell, probability) pairs for the cells of `tree` with a positive
 // probability, in increasing cell order, and the probability of `outside` last with index
-// tree.num_cells() when positive. For checks and for the integrator.
-std::vector<std::pair<std::size_t, Rational>> successor_row(const PolytopeGeometry& geometry,
-                                                            const BspTree& tree,
-                                                            const AffineStep& step,
-                                                            const Point& from);
+// tree.num_cells() when positive. For checks and for the integrator. `rounded`, when given,
+// is tree.rounded_nodes() (made once per tree): it speeds up the walk, not the result.
+std::vector<std::pair<std::size_t, Rational>> successor_row(
+    const PolytopeGeometry& geometry, const BspTree& tree, const AffineStep& step,
+    const Point& from, std::span<const RoundedBspNode> rounded = {});
 
 }  // namespace oasis::geom
