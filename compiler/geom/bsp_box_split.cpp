@@ -109,16 +109,15 @@ Vertex crossing(const Line& l, const Line& m, std::uint32_t edge) {
 }
 using Polygon = std::vector<Vertex>;
 
-// Twice the signed area (shoelace); pieces keep the box's counter-clockwise orientation.
+// Twice the signed area, Σ x_i (y_{i+1} - y_{i-1}) (the shoelace sum regrouped: n products
+// of long rationals instead of 2n); pieces keep the box's counter-clockwise orientation.
 Rational twice_area(const Polygon& polygon, Rational& term) {
   Rational sum = 0;
-  for (std::size_t i = 0; i < polygon.size(); ++i) {
-    const Vertex& p = polygon[i];
-    const Vertex& q = polygon[(i + 1) % polygon.size()];
-    term = p.x * q.y;
+  const std::size_t n = polygon.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    term = polygon[(i + 1) % n].y - polygon[(i + n - 1) % n].y;
+    term *= polygon[i].x;
     sum += term;
-    term = q.x * p.y;
-    sum -= term;
   }
   return sum;
 }
