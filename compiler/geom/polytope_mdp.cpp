@@ -17,22 +17,34 @@ bool inside_undisturbed_domain(const PolytopeGeometry& geometry, const AffineSte
   return true;
 }
 
+// The disturbance box around `mean`: its corners on the disturbed axes, and the mean's value on
+// each undisturbed one (where the box is a slice).
+struct DisturbedBox {
+  std::vector<std::optional<Rational>> fixed;
+  Point low;
+  Point high;
+};
+
+DisturbedBox disturbed_box(const AffineStep& step, const Point& mean) {
+  DisturbedBox box;
+  box.fixed.resize(mean.size());
+  for (std::size_t i = 0; i < mean.size(); ++i) {
+    if (step.disturbance[i]) {
+      box.low.push_back(mean[i] + step.disturbance[i]->low);
+      box.high.push_back(mean[i] + step.disturbance[i]->high);
+    } else {
+      box.fixed[i] = mean[i];
+    }
+  }
+  return box;
+}
+
 // vol(B ∩ Q) / vol(B) in the disturbed coordinates, on the slice at the mean's undisturbed
 // coordinates. Only the constraints of Q that cut the box are kept, so that a box well
 // inside one cell costs nothing and the vertex enumeration stays small.
 Rational box_share(const Polytope& cell, const AffineStep& step, const Point& mean,
                    const Rational& box_volume) {
-  std::vector<std::optional<Rational>> fixed(mean.size());
-  Point low;
-  Point high;
-  for (std::size_t i = 0; i < mean.size(); ++i) {
-    if (step.disturbance[i]) {
-      low.push_back(mean[i] + step.disturbance[i]->low);
-      high.push_back(mean[i] + step.disturbance[i]->high);
-    } else {
-      fixed[i] = mean[i];
-    }
-  }
+  const auto [fixed, low, high] = disturbed_box(step, mean);
   Polytope clipped = Polytope::box(low, high);
   const Polytope slice = cell.slice(fixed);
   for (const HalfSpace& h : slice.constraints()) {
@@ -54,17 +66,7 @@ Rational box_share(const Polytope& cell, const AffineStep& step, const Point& me
 std::optional<std::vector<CellMeasure>> pieces_of_box(const BspTree& tree,
                                                       std::span<const RoundedBspNode> rounded,
                                                       const AffineStep& step, const Point& mean) {
-  std::vector<std::optional<Rational>> fixed(mean.size());
-  Point low;
-  Point high;
-  for (std::size_t i = 0; i < mean.size(); ++i) {
-    if (step.disturbance[i]) {
-      low.push_back(mean[i] + step.disturbance[i]->low);
-      high.push_back(mean[i] + step.disturbance[i]->high);
-    } else {
-      fixed[i] = mean[i];
-    }
-  }
+  const auto [fixed, low, high] = disturbed_box(step, mean);
   return box_cell_measures(tree, fixed, low, high, rounded);
 }
 
