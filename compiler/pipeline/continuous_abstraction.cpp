@@ -14,19 +14,13 @@
 #include "geom/relevance.hpp"
 #include "oasis/rt/bsp_locator.hpp"
 #include "pipeline/product_form.hpp"
+#include "pipeline/stage_clock.hpp"
 #include "policy/value_iteration.hpp"
 
 namespace oasis::pipeline {
 namespace {
 
-using Clock = std::chrono::steady_clock;
-
-double seconds_since(Clock::time_point& start) {
-  const Clock::time_point now = Clock::now();
-  const double seconds = std::chrono::duration<double>(now - start).count();
-  start = now;
-  return seconds;
-}
+using Clock = StageClock;
 
 std::string describe_partition(const ContinuousAbstraction& abstraction) {
   char text[96];

@@ -1,29 +1,22 @@
 #include "pipeline/product_form.hpp"
 
-#include <chrono>
 #include <memory>
 #include <numeric>
 
 #include "bisim/discrete_proof.hpp"
 #include "bisim/quotient.hpp"
 #include "geom/grid_mdp.hpp"
+#include "pipeline/stage_clock.hpp"
 #include "policy/discounted_iteration.hpp"
 
 namespace oasis::pipeline {
 namespace {
 
-using Clock = std::chrono::steady_clock;
+using Clock = StageClock;
 
 // Sweeps of the greedy policy alone between two full backups: each costs a sixth of a backup
 // on the Go1 (one action of six), and 16 of them cut the backups from 370 to a few dozen.
 constexpr std::uint32_t kEvaluationSweeps = 16;
-
-double seconds_since(Clock::time_point& start) {
-  const Clock::time_point now = Clock::now();
-  const double seconds = std::chrono::duration<double>(now - start).count();
-  start = now;
-  return seconds;
-}
 
 // The product rows as a context of policy/discounted_iteration.hpp: every action enabled,
 // R(s, a) = R(s).
