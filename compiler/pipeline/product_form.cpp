@@ -95,8 +95,9 @@ model::ExplicitModel discrete_quotient(const geom::GridGeometry& geometry,
 
 bool wants_product_form(const geom::ProductRows& rows, const model::ModelIR& ir,
                         const ContinuousOptions& options) {
+  if (options.grid_rows == GridRows::kMaterialised) return false;
   // Backward induction over a horizon stays with the materialised solver.
-  if (options.policy.horizon || (!options.policy.discount && ir.objective.horizon)) return false;
+  if (policy::resolve_objective(ir.objective, options.policy).horizon) return false;
   switch (options.grid_rows) {
     case GridRows::kMaterialised:
       return false;

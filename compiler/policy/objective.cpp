@@ -7,15 +7,19 @@ namespace oasis::policy {
 
 ResolvedObjective resolve_objective(const model::ExplicitModel& model,
                                     const PolicyOptions& options) {
+  return resolve_objective(model.objective, options);
+}
+
+ResolvedObjective resolve_objective(const model::Objective& stated, const PolicyOptions& options) {
   if (!(options.tolerance > 0)) throw std::invalid_argument("the tolerance must be positive");
   ResolvedObjective objective;
   if (options.discount || options.horizon) {
     objective.horizon = options.horizon;
     // A finite horizon without a discount sums the rewards of its steps undiscounted.
     objective.discount = options.discount.value_or(options.horizon ? 1.0 : kDefaultDiscount);
-  } else if (model.objective.discount || model.objective.horizon) {
-    objective.horizon = model.objective.horizon;
-    objective.discount = model.objective.discount ? to_double(*model.objective.discount) : 1.0;
+  } else if (stated.discount || stated.horizon) {
+    objective.horizon = stated.horizon;
+    objective.discount = stated.discount ? to_double(*stated.discount) : 1.0;
   } else {
     objective.default_discount = true;
   }

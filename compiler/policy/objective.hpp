@@ -35,6 +35,8 @@ struct ResolvedObjective {
 // tolerance that is not positive.
 ResolvedObjective resolve_objective(const model::ExplicitModel& model,
                                     const PolicyOptions& options);
+// The same from the model's objective alone (a spec's, before any model is built).
+ResolvedObjective resolve_objective(const model::Objective& stated, const PolicyOptions& options);
 
 // The stopping threshold is never below this many units of double rounding of max|V|
 // (value_iteration.cpp): a smaller tolerance cannot be told apart from rounding noise.
