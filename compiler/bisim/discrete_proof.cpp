@@ -109,6 +109,7 @@ DiscreteProof prove_discrete(const InvariantModel& model, const DiscreteProofOpt
   while (!groups.all_single() && proof.rounds < options.max_rounds &&
          stalled < options.max_stalled_rounds) {
     if (smallest_positive(h) * model.smallest_term * least_weight < kSmallestSafe) break;
+    if (model.prepare) model.prepare(h.data());
     for (std::uint32_t s = 0; s < n; ++s) {
       double mixed = 0;
       for (std::uint32_t a = 0; a < model.num_actions; ++a)

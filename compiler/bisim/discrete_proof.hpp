@@ -26,6 +26,8 @@ struct InvariantModel {
   std::uint32_t num_states = 0;
   std::uint32_t num_actions = 0;
   std::vector<double> reward;  // [state] R(s), rounded the same way for equal rewards
+  // Optional: called with x before the expectations of a round over x.
+  std::function<void(const double* x)> prepare;
   // Σ_t P(s, a, t) x[t] for non-negative x, with at most `rounding_depth` roundings along
   // any term's path, no term smaller than `smallest_term` times its x, and exact zeros kept.
   std::function<double(std::uint32_t s, std::uint32_t a, const double* x)> expectation;

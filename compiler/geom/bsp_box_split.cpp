@@ -149,10 +149,8 @@ void clip(const Polygon& polygon, const std::vector<Rational>& side, const std::
   }
 }
 
-std::vector<CellMeasure> polygon_pieces(const BspTree& tree,
-                                        std::span<const RoundedBspNode> rounded, const Slice& slice,
-                                        Polygon box, std::vector<Line> lines) {
-  std::vector<CellMeasure> found;
+void polygon_pieces(const BspTree& tree, std::span<const RoundedBspNode> rounded,
+                    const Slice& slice, Polygon box, std::vector<Line> lines, BoxPieces& found) {
   std::vector<std::pair<std::uint32_t, Polygon>> pending;
   pending.emplace_back(0, std::move(box));
   std::array<Rational, 2> a;
@@ -165,7 +163,7 @@ std::vector<CellMeasure> polygon_pieces(const BspTree& tree,
     const BspNode& node = tree.nodes()[index];
     if (node.is_leaf()) {
       Rational area = abs(twice_area(polygon, term)) / 2;
-      if (sgn(area) > 0) found.push_back({node.cell, std::move(area)});
+      if (sgn(area) > 0) found.cut.push_back({node.cell, std::move(area)});
       continue;
     }
     if (!rounded.empty()) {
@@ -202,13 +200,11 @@ std::vector<CellMeasure> polygon_pieces(const BspTree& tree,
       pending.emplace_back(node.above, std::move(above));
     }
   }
-  return found;
 }
 
 // The same walk for an interval [low, high] on the one free axis.
-std::vector<CellMeasure> interval_pieces(const BspTree& tree, const Slice& slice,
-                                         const Rational& low, const Rational& high) {
-  std::vector<CellMeasure> found;
+void interval_pieces(const BspTree& tree, const Slice& slice, const Rational& low,
+                     const Rational& high, BoxPieces& found) {
   std::vector<std::pair<std::uint32_t, std::pair<Rational, Rational>>> pending;
   pending.push_back({0, {low, high}});
   std::array<Rational, 2> a;
@@ -220,7 +216,7 @@ std::vector<CellMeasure> interval_pieces(const BspTree& tree, const Slice& slice
     const BspNode& node = tree.nodes()[index];
     if (node.is_leaf()) {
       Rational length = to - from;
-      if (sgn(length) > 0) found.push_back({node.cell, std::move(length)});
+      if (sgn(length) > 0) found.cut.push_back({node.cell, std::move(length)});
       continue;
     }
     slice.restrict(node.split, a, c);
@@ -241,14 +237,90 @@ std::vector<CellMeasure> interval_pieces(const BspTree& tree, const Slice& slice
       pending.push_back({right, {cut, to}});
     }
   }
-  return found;
+}
+
+// The piece of `box` (with its lines) inside a convex cell: the box clipped by each of the
+// cell's constraints in turn. Its area, 0 when they do not meet in an open set.
+Rational clipped_area(Polygon box, std::vector<Line> lines, const Polytope& cell) {
+  std::vector<Rational> side;
+  Rational term;
+  for (const HalfSpace& h : cell.constraints()) {
+    side.resize(box.size());
+    bool any_above = false;
+    bool any_below = false;
+    for (std::size_t i = 0; i < box.size(); ++i) {
+      side[i] = h.normal[0] * box[i].x;
+      term = h.normal[1] * box[i].y;
+      side[i] += term;
+      side[i] -= h.bound;
+      any_above = any_above || sgn(side[i]) > 0;
+      any_below = any_below || sgn(side[i]) < 0;
+    }
+    if (!any_above) continue;
+    if (!any_below) return 0;
+    Polygon below;
+    Polygon above;
+    lines.push_back({h.normal[0], h.normal[1], h.bound});
+    clip(box, side, lines, static_cast<std::uint32_t>(lines.size() - 1), below, above);
+    box = std::move(below);
+  }
+  return abs(twice_area(box, term)) / 2;
+}
+
+// The walk by the subtrees' boxes when no axis is fixed: a node whose box misses the open box
+// [from, to] has no piece of it, one whose box lies inside it is whole, a leaf whose cell is
+// a box gets the product of the overlaps, and only the other leaves, few, are clipped. No
+// polygon is carried down the tree.
+void box_walk(const BspTree& tree, const BspSubtrees& subtrees, const Point& from, const Point& to,
+              BoxPieces& found) {
+  const std::size_t d = from.size();
+  std::vector<std::uint32_t> pending{0};
+  while (!pending.empty()) {
+    const std::uint32_t index = pending.back();
+    pending.pop_back();
+    const BoundingBox& box = subtrees.box(index);
+    bool inside = true;
+    bool misses = false;
+    for (std::size_t k = 0; k < d && !misses; ++k) {
+      misses = box.high[k] <= from[k] || box.low[k] >= to[k];
+      inside = inside && from[k] <= box.low[k] && box.high[k] <= to[k];
+    }
+    if (misses) continue;
+    if (inside) {
+      found.whole_subtrees.push_back(index);
+      continue;
+    }
+    const BspNode& node = tree.nodes()[index];
+    if (!node.is_leaf()) {
+      pending.push_back(node.above);
+      pending.push_back(node.below);
+      continue;
+    }
+    Rational measure = 1;
+    if (subtrees.is_box(index)) {
+      for (std::size_t k = 0; k < d; ++k)
+        measure *= std::min(box.high[k], to[k]) - std::max(box.low[k], from[k]);
+    } else {  // two axes: a one-axis cell is an interval, always a box
+      Polygon corners(4);
+      corners[0] = vertex(from[0], from[1], 0);
+      corners[1] = vertex(to[0], from[1], 1);
+      corners[2] = vertex(to[0], to[1], 2);
+      corners[3] = vertex(from[0], to[1], 3);
+      std::vector<Line> lines{{0, 1, from[1]}, {1, 0, to[0]}, {0, 1, to[1]}, {1, 0, from[0]}};
+      measure =
+          clipped_area(std::move(corners), std::move(lines), tree.cells()[node.cell].polytope);
+    }
+    if (sgn(measure) > 0) found.cut.push_back({node.cell, std::move(measure)});
+  }
 }
 
 }  // namespace
 
-std::optional<std::vector<CellMeasure>> box_cell_measures(
-    const BspTree& tree, const std::vector<std::optional<Rational>>& fixed, const Point& low,
-    const Point& high, std::span<const RoundedBspNode> rounded) {
+std::optional<BoxPieces> split_box(const BspTree& tree,
+                                   const std::vector<std::optional<Rational>>& fixed,
+                                   const Point& low, const Point& high,
+                                   std::span<const RoundedBspNode> rounded,
+                                   const BspSubtrees* subtrees) {
   const Slice slice(fixed);
   const std::vector<std::size_t>& axes = slice.free_axes();
   if (axes.empty() || axes.size() > 2) return std::nullopt;
@@ -258,11 +330,19 @@ std::optional<std::vector<CellMeasure>> box_cell_measures(
   for (std::size_t k = 0; k < axes.size(); ++k) {
     from[k] = std::max(low[k], tree.domain_low()[axes[k]]);
     to[k] = std::min(high[k], tree.domain_high()[axes[k]]);
-    if (from[k] >= to[k]) return std::vector<CellMeasure>{};
+    if (from[k] >= to[k]) return BoxPieces{};
   }
-  std::vector<CellMeasure> found;
+  BoxPieces found;
+  found.inside = 1;
+  for (std::size_t k = 0; k < axes.size(); ++k)
+    found.inside *= to[k] - from[k];
+  // A subtree's box is over every axis, so it says nothing of a slice.
+  if (subtrees != nullptr && axes.size() == tree.dimension()) {
+    box_walk(tree, *subtrees, from, to, found);
+    return found;
+  }
   if (axes.size() == 1) {
-    found = interval_pieces(tree, slice, from[0], to[0]);
+    interval_pieces(tree, slice, from[0], to[0], found);
   } else {
     Polygon box(4);                        // counter-clockwise
     box[0] = vertex(from[0], from[1], 0);  // edges on y = from1, x = to0, y = to1, x = from0
@@ -270,8 +350,20 @@ std::optional<std::vector<CellMeasure>> box_cell_measures(
     box[2] = vertex(to[0], to[1], 2);
     box[3] = vertex(from[0], to[1], 3);
     std::vector<Line> lines{{0, 1, from[1]}, {1, 0, to[0]}, {0, 1, to[1]}, {1, 0, from[0]}};
-    found = polygon_pieces(tree, rounded, slice, std::move(box), std::move(lines));
+    polygon_pieces(tree, rounded, slice, std::move(box), std::move(lines), found);
   }
+  return found;
+}
+
+std::optional<std::vector<CellMeasure>> box_cell_measures(
+    const BspTree& tree, const std::vector<std::optional<Rational>>& fixed, const Point& low,
+    const Point& high, std::span<const RoundedBspNode> rounded, const BspSubtrees* subtrees) {
+  auto pieces = split_box(tree, fixed, low, high, rounded, subtrees);
+  if (!pieces) return std::nullopt;
+  std::vector<CellMeasure> found = std::move(pieces->cut);
+  for (const std::uint32_t node : pieces->whole_subtrees)
+    for (const std::uint32_t cell : subtrees->cells(node))
+      found.push_back({cell, tree.cells()[cell].volume});
   std::sort(found.begin(), found.end(),
             [](const CellMeasure& p, const CellMeasure& q) { return p.cell < q.cell; });
   return found;

@@ -14,6 +14,7 @@
 #include <span>
 #include <vector>
 
+#include "geom/bsp_subtrees.hpp"
 #include "geom/bsp_tree.hpp"
 
 namespace oasis::geom {
@@ -23,14 +24,33 @@ struct CellMeasure {
   Rational measure;  // length or area of the piece, > 0
 };
 
+// The box's pieces as the walk finds them.
+struct BoxPieces {
+  std::vector<CellMeasure> cut;  // cells the box's boundary crosses, with their piece
+  // Nodes whose region is inside the box: each of their cells (BspSubtrees::cells) is a
+  // piece whole.
+  std::vector<std::uint32_t> whole_subtrees;
+  Rational inside;  // the measure of the box's part inside the domain: Σ pieces
+};
+
 // The box Π [low_k, high_k] over the free axes (those with no `fixed` value, in increasing
-// order), on the slice through the `fixed` values of the other axes: every cell whose piece
-// of it has positive measure, with that measure, sorted by cell. The fixed values must lie in
-// the domain. nullopt when there are not one or two free axes (the general path applies).
+// order), on the slice through the `fixed` values of the other axes, split down the tree:
+// every cell whose piece of it has positive measure, once. The fixed values must lie in the
+// domain. nullopt when there are not one or two free axes (the general path applies).
 // `rounded`, when given, is tree.rounded_nodes(): a filter in doubles then decides the side
-// of most nodes without exact arithmetic (the result is the same).
+// of most nodes without exact arithmetic. `subtrees`, when given and no axis is fixed, lets
+// the walk stop at a subtree inside the box and name it in `whole_subtrees` (otherwise every
+// cell is in `cut`). Neither changes which cells are found or their measures.
+std::optional<BoxPieces> split_box(const BspTree& tree,
+                                   const std::vector<std::optional<Rational>>& fixed,
+                                   const Point& low, const Point& high,
+                                   std::span<const RoundedBspNode> rounded = {},
+                                   const BspSubtrees* subtrees = nullptr);
+
+// The same pieces as one list sorted by cell, a whole cell's measure being its volume.
 std::optional<std::vector<CellMeasure>> box_cell_measures(
     const BspTree& tree, const std::vector<std::optional<Rational>>& fixed, const Point& low,
-    const Point& high, std::span<const RoundedBspNode> rounded = {});
+    const Point& high, std::span<const RoundedBspNode> rounded = {},
+    const BspSubtrees* subtrees = nullptr);
 
 }  // namespace oasis::geom

@@ -30,6 +30,26 @@ ValueRange range_over(const std::vector<Rational>& normal, std::span<const Point
   return range;
 }
 
+// The nearest multiple of 2^-k to `value`, for the smallest k >= 0 that brings it within
+// `tolerance` (> 0): a point with short numbers. Every later computation from it (the rows'
+// boxes, the cuts through it and, through them, the next cells and their points) is
+// exact, so its length compounds down the tree; a centre found by LP carries the
+// bounding box's widths in its denominators, and cuts through such centres made the
+// numbers of deep cells hundreds of digits long.
+Rational shortest_dyadic_near(const Rational& value, const Rational& tolerance) {
+  mpz_class scale = 1;  // 2^k
+  for (;;) {
+    const Rational scaled = value * scale;
+    mpz_class nearest = scaled.get_num() * 2 + scaled.get_den();  // floor(scaled + 1/2) ...
+    mpz_class twice_den = scaled.get_den() * 2;
+    mpz_fdiv_q(nearest.get_mpz_t(), nearest.get_mpz_t(), twice_den.get_mpz_t());  // ... exact
+    Rational candidate(nearest, scale);
+    candidate.canonicalize();
+    if (abs(candidate - value) <= tolerance) return candidate;
+    scale *= 2;
+  }
+}
+
 }  // namespace
 
 Point representative_point(const Polytope& polytope, std::span<const Point> vertices) {
@@ -40,7 +60,14 @@ Point representative_point(const Polytope& polytope, std::span<const Point> vert
     half_widths[j] = (box->high[j] - box->low[j]) / 2;
   const auto centre = polytope.chebyshev_centre(half_widths);
   assert(centre && sgn(centre->radius) > 0);
-  return centre->centre;
+  // The box of half-widths radius * half_widths about the centre lies in the polytope, so a
+  // point within a sixteenth of it on every axis is interior and still central. The cells
+  // of repeated halving keep their exact centres: each is already the shortest number that
+  // near.
+  Point point(polytope.dimension());
+  for (std::size_t j = 0; j < point.size(); ++j)
+    point[j] = shortest_dyadic_near(centre->centre[j], centre->radius * half_widths[j] / 16);
+  return point;
 }
 
 BspTree::BspTree(const Point& low, const Point& high) : low_(low), high_(high) {

@@ -100,8 +100,10 @@ class BspTree {
 
 // The representative point of a cell: the centre of the largest copy of its bounding box,
 // scaled about its centre, inside the cell (exact LP; geom/polytope.hpp chebyshev_centre
-// with the box's half-widths as the shape). For a box cell this is its centre, as in the
-// grid path; it is always an interior point.
+// with the box's half-widths as the shape), moved to the shortest dyadic point within a
+// sixteenth of that copy on every axis, so that numbers stay short down the tree. For the
+// box cells of repeated halving this is their centre, as in the grid path; it is always an
+// interior point.
 Point representative_point(const Polytope& polytope, std::span<const Point> vertices);
 
 // locate() in doubles over rounded_nodes(): nullopt outside [low, high].

@@ -9,10 +9,12 @@
 #include "geom/grid_mdp.hpp"
 #include "geom/grid_product_rows.hpp"
 #include "geom/grid_refinement.hpp"
-#include "geom/polytope_mdp.hpp"
+#include "geom/polytope_error_bound.hpp"
 #include "geom/polytope_partition.hpp"
+#include "geom/polytope_walk_rows.hpp"
 #include "geom/relevance.hpp"
 #include "oasis/rt/bsp_locator.hpp"
+#include "pipeline/compact_row_forms.hpp"
 #include "pipeline/product_form.hpp"
 #include "pipeline/stage_clock.hpp"
 #include "policy/value_iteration.hpp"
@@ -122,7 +124,7 @@ bool partition_by_grid(const geom::GridGeometry& geometry, const model::ModelIR&
   // The rows are worked out once, in product form; they are materialised from it when needed.
   const geom::ProductRows rows(geometry, partition->grid,
                                static_cast<std::uint32_t>(ir.actions.size()));
-  if (wants_product_form(rows, ir, options)) {
+  if (wants_product_form(rows.num_edges(), ir, options)) {
     result.finite_edges = rows.num_edges();
     result.seconds.finite_mdp = seconds_since(start);
     if (options.progress) {
@@ -132,7 +134,8 @@ bool partition_by_grid(const geom::GridGeometry& geometry, const model::ModelIR&
                            std::to_string(rows.num_edges()) + " edges",
                        result.seconds.finite_mdp);
     }
-    switch (solve_in_product_form(geometry, rows, ir, options, result, error)) {
+    switch (
+        solve_in_product_form(GridCompactRows(rows), "product rows", ir, options, result, error)) {
       case ProductOutcome::kSolved:
         return true;
       case ProductOutcome::kFailed:
@@ -146,7 +149,9 @@ bool partition_by_grid(const geom::GridGeometry& geometry, const model::ModelIR&
 }
 
 // The polytope path (CGAL): any linear reward regions and affine dynamics. The abstraction's
-// grid is then the domain box, a single cell refined by the BSP.
+// grid is then the domain box, a single cell refined by the BSP. As for the grid, `result` is
+// complete and `mdp` empty when the rows stay compact (here: as walks of the tree) and the
+// proof goes through; otherwise `mdp` is the materialised finite MDP.
 bool partition_by_polytopes(const geom::PolytopeGeometry& geometry, const model::ModelIR& ir,
                             const ContinuousOptions& options, ContinuousAbstraction& result,
                             Clock::time_point& start, std::optional<model::ExplicitModel>& mdp,
@@ -189,15 +194,36 @@ bool partition_by_polytopes(const geom::PolytopeGeometry& geometry, const model:
     box.push_back({geometry.domain_low[i], geometry.domain_high[i]});
   const geom::Grid domain(std::move(box));
   result.seconds.grid = seconds_since(start);
-  geom::PolytopeMdp finite =
-      geom::polytope_finite_mdp(geometry, *partition, ir.actions, ir.objective);
-  result.epsilon = finite.epsilon;
-  result.met = finite.epsilon <= refinement.epsilon;
-  mdp = std::move(finite.mdp);
+  result.epsilon = geom::partition_error_bound(geometry, partition->tree);
+  result.met = result.epsilon <= refinement.epsilon;
   result.cells = polytope_cells(domain, partition->tree);
   if (!result.met && options.warn)
     options.warn(result.context,
                  above_target(result, refinement.max_cells, options.target.epsilon));
+  // The rows are found once, as walks of the tree; they are materialised from them when
+  // needed.
+  const geom::PolytopeWalkRows rows(geometry, *partition);
+  if (wants_product_form(rows.num_edges(), ir, options)) {
+    result.finite_edges = rows.num_edges();
+    result.seconds.finite_mdp = seconds_since(start);
+    if (options.progress) {
+      options.progress(result.context, describe_partition(result), result.seconds.grid);
+      options.progress(result.context,
+                       "rows as tree walks, " + std::to_string(rows.num_entries()) +
+                           " entries for " + std::to_string(rows.num_edges()) + " edges",
+                       result.seconds.finite_mdp);
+    }
+    switch (solve_in_product_form(PolytopeCompactRows(rows), "tree walks", ir, options, result,
+                                  error)) {
+      case ProductOutcome::kSolved:
+        return true;
+      case ProductOutcome::kFailed:
+        return false;
+      case ProductOutcome::kNotDiscrete:
+        break;
+    }
+  }
+  mdp = rows.materialise(geometry.context, ir.actions, ir.objective);
   return true;
 }
 
@@ -231,6 +257,7 @@ std::optional<ContinuousAbstraction> abstract_context(const model::ModelIR& ir, 
     }
     if (!partition_by_polytopes(*polytopes, ir, options, result, start, mdp, error))
       return std::nullopt;
+    if (!mdp) return result;  // solved on the rows as tree walks
   }
   result.finite_edges = mdp->contexts[0].transitions->num_edges();
   result.seconds.finite_mdp = seconds_since(start);

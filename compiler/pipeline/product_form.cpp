@@ -5,7 +5,6 @@
 
 #include "bisim/discrete_proof.hpp"
 #include "bisim/quotient.hpp"
-#include "geom/grid_mdp.hpp"
 #include "pipeline/stage_clock.hpp"
 #include "policy/discounted_iteration.hpp"
 
@@ -18,11 +17,11 @@ using Clock = StageClock;
 // on the Go1 (one action of six), and 16 of them cut the backups from 370 to a few dozen.
 constexpr std::uint32_t kEvaluationSweeps = 16;
 
-// The product rows as a context of policy/discounted_iteration.hpp: every action enabled,
+// The compact rows as a context of policy/discounted_iteration.hpp: every action enabled,
 // R(s, a) = R(s).
 class ProductContext {
  public:
-  explicit ProductContext(const geom::ProductRows& rows) : rows_(rows) {
+  explicit ProductContext(const CompactRows& rows) : rows_(rows) {
     reward_.resize(rows.num_states());
     for (std::uint32_t s = 0; s < rows.num_states(); ++s)
       reward_[s] = to_double(rows.values()[rows.state_reward(s)]);
@@ -36,22 +35,23 @@ class ProductContext {
   [[nodiscard]] bool dead_end(model::StateIndex /*s*/) const { return false; }
   [[nodiscard]] double state_reward(model::StateIndex s) const { return reward_[s]; }
   [[nodiscard]] const std::vector<double>& rewards() const { return reward_; }
+  void begin_sweep(const std::vector<double>& values) const { rows_.prepare(values.data()); }
   [[nodiscard]] double q_value(const std::vector<double>& values, model::StateIndex s,
                                model::ActionIndex a, double discount) const {
     return reward_[s] + discount * rows_.expectation(s, a, values.data());
   }
 
  private:
-  const geom::ProductRows& rows_;
+  const CompactRows& rows_;
   std::vector<double> reward_;
 };
 
-bisim::InvariantModel invariant_model(const geom::ProductRows& rows,
-                                      const std::vector<double>& reward) {
+bisim::InvariantModel invariant_model(const CompactRows& rows, const std::vector<double>& reward) {
   bisim::InvariantModel model;
   model.num_states = rows.num_states();
   model.num_actions = rows.num_actions();
   model.reward = reward;
+  model.prepare = [&rows](const double* x) { rows.prepare(x); };
   model.expectation = [&rows](std::uint32_t s, std::uint32_t a, const double* x) {
     return rows.expectation(s, a, x);
   };
@@ -63,12 +63,10 @@ bisim::InvariantModel invariant_model(const geom::ProductRows& rows,
 // The quotient when every state is its own block: the finite MDP's rewards, and its rows
 // only when asked for (then materialised, and quotiented the usual way so that they read as
 // any quotient's).
-model::ExplicitModel discrete_quotient(const geom::GridGeometry& geometry,
-                                       const geom::ProductRows& rows, const model::ModelIR& ir,
-                                       bool keep_rows) {
+model::ExplicitModel discrete_quotient(const std::string& context, const CompactRows& rows,
+                                       const model::ModelIR& ir, bool keep_rows) {
   if (keep_rows) {
-    const model::ExplicitModel mdp =
-        geom::grid_finite_mdp(rows, geometry.context, ir.actions, ir.objective);
+    const model::ExplicitModel mdp = rows.materialise(context, ir.actions, ir.objective);
     model::Partition identity;
     identity.block_of.resize(mdp.num_states());
     std::iota(identity.block_of.begin(), identity.block_of.end(), 0U);
@@ -76,7 +74,7 @@ model::ExplicitModel discrete_quotient(const geom::GridGeometry& geometry,
     return bisim::build_quotient(mdp, 0, identity);
   }
   model::ExplicitModel quotient;
-  quotient.name = geometry.context;
+  quotient.name = context;
   quotient.actions = ir.actions;
   quotient.objective = ir.objective;
   quotient.states.size = rows.num_states();
@@ -87,13 +85,13 @@ model::ExplicitModel discrete_quotient(const geom::GridGeometry& geometry,
     rewards.state[s] = rows.state_reward(s);
   model::TransitionBuilder no_rows(rows.num_states(), rows.num_actions());
   auto matrix = std::make_shared<const model::TransitionMatrix>(no_rows.finish(quotient.values));
-  quotient.contexts.push_back({geometry.context, std::move(matrix), std::move(rewards)});
+  quotient.contexts.push_back({context, std::move(matrix), std::move(rewards)});
   return quotient;
 }
 
 }  // namespace
 
-bool wants_product_form(const geom::ProductRows& rows, const model::ModelIR& ir,
+bool wants_product_form(std::size_t edges, const model::ModelIR& ir,
                         const ContinuousOptions& options) {
   if (options.grid_rows == GridRows::kMaterialised) return false;
   // Backward induction over a horizon stays with the materialised solver.
@@ -104,14 +102,13 @@ bool wants_product_form(const geom::ProductRows& rows, const model::ModelIR& ir,
     case GridRows::kProduct:
       return true;
     case GridRows::kAutomatic:
-      return rows.num_edges() > kProductRowsAbove;
+      return edges > kProductRowsAbove;
   }
   return false;
 }
 
-ProductOutcome solve_in_product_form(const geom::GridGeometry& geometry,
-                                     const geom::ProductRows& rows, const model::ModelIR& ir,
-                                     const ContinuousOptions& options,
+ProductOutcome solve_in_product_form(const CompactRows& rows, const std::string& form,
+                                     const model::ModelIR& ir, const ContinuousOptions& options,
                                      ContinuousAbstraction& result, std::string& error) {
   const auto report = [&](const std::string& done, double seconds) {
     if (options.progress) options.progress(result.context, done, seconds);
@@ -127,12 +124,12 @@ ProductOutcome solve_in_product_form(const geom::GridGeometry& geometry,
            seconds_since(start));
     return ProductOutcome::kNotDiscrete;
   }
-  const std::uint32_t cells = rows.num_cells();
+  const std::uint32_t cells = rows.num_states() - 1;
   result.cell_block.resize(cells);
   std::iota(result.cell_block.begin(), result.cell_block.end(), 0U);
   result.outside_block = cells;
   result.num_blocks = rows.num_states();
-  result.quotient = discrete_quotient(geometry, rows, ir, options.keep_rows);
+  result.quotient = discrete_quotient(result.context, rows, ir, options.keep_rows);
   result.seconds.bisimulation = seconds_since(start);
   report("quotient, " + std::to_string(result.num_blocks) + " blocks (no two cells bisimilar: " +
              std::to_string(proof.rounds) + " rounds of invariants)",
@@ -153,7 +150,7 @@ ProductOutcome solve_in_product_form(const geom::GridGeometry& geometry,
   result.policy = policy::greedy_actions(context, result.value, objective.discount);
   result.seconds.policy = seconds_since(start);
   report("policy, " + std::to_string(sweeps) + " rounds of modified policy iteration (" +
-             std::to_string(kEvaluationSweeps) + " evaluation sweeps each) on the product rows",
+             std::to_string(kEvaluationSweeps) + " evaluation sweeps each) on the " + form,
          result.seconds.policy);
   return ProductOutcome::kSolved;
 }

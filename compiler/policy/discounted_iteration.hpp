@@ -3,8 +3,10 @@
 // context's rows: a NumericContext (the materialised CSR rows) or rows kept in another form
 // (geom/grid_product_rows.hpp through pipeline/). A context offers num_states(),
 // num_actions(), enabled(s, a), dead_end(s), state_reward(s) and
-// q_value(values, s, a, discount) = R(s, a) + discount * Σ P(s, a, t) values[t]. The sweeps,
-// the stopping rule and the tie rule are the same whatever the form (docs/policies.md).
+// q_value(values, s, a, discount) = R(s, a) + discount * Σ P(s, a, t) values[t]. A context
+// whose q-values read sums made ahead from the values (geom/polytope_walk_rows.hpp) also
+// offers begin_sweep(values), called before every sweep. The sweeps, the stopping rule and
+// the tie rule are the same whatever the form (docs/policies.md).
 
 #include <algorithm>
 #include <cmath>
@@ -16,6 +18,12 @@
 #include "policy/objective.hpp"
 
 namespace oasis::policy {
+
+// Tells a context that offers it that a sweep over `values` begins.
+template <class Context>
+void begin_sweep(const Context& context, const std::vector<double>& values) {
+  if constexpr (requires { context.begin_sweep(values); }) context.begin_sweep(values);
+}
 
 // The best enabled action of a live state for `values` (the tie rule of numeric_context.hpp).
 template <class Context>
@@ -55,6 +63,7 @@ inline double resolution_floor(const std::vector<double>& value) {
 template <class Context>
 double full_backup(const Context& context, double gamma, const std::vector<double>& value,
                    std::vector<double>& next, std::vector<model::ActionIndex>& chosen) {
+  begin_sweep(context, value);
   double change = 0;
   for (model::StateIndex s = 0; s < context.num_states(); ++s) {
     if (context.dead_end(s)) continue;
@@ -128,6 +137,9 @@ bool modified_policy_iteration(const Context& context, double gamma, double thre
     ++rounds;
     if (residual <= std::max(threshold, resolution_floor(value))) return true;
     for (std::uint32_t sweep = 0; sweep < evaluations; ++sweep) {
+      // In place: a context with sums made ahead reads them as of the sweep's start, and
+      // any values W keep the bound (above), so that is only a matter of speed.
+      begin_sweep(context, value);
       for (model::StateIndex s = 0; s < context.num_states(); ++s) {
         if (!context.dead_end(s)) value[s] = context.q_value(value, s, chosen[s], gamma);
       }
@@ -141,6 +153,7 @@ template <class Context>
 std::vector<model::ActionIndex> greedy_actions(const Context& context,
                                                const std::vector<double>& value, double gamma) {
   std::vector<model::ActionIndex> action(context.num_states(), kNoAction);
+  begin_sweep(context, value);
   for (model::StateIndex s = 0; s < context.num_states(); ++s) {
     if (!context.dead_end(s)) action[s] = greedy_action(context, value, s, gamma).action;
   }
