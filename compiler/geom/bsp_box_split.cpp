@@ -239,6 +239,15 @@ void interval_pieces(const BspTree& tree, const Slice& slice, const Rational& lo
   }
 }
 
+// a <= b, from a and b and their truncations to doubles (each within one ulp): the doubles
+// decide unless they are within a few ulps of each other, then the exact numbers do.
+bool at_most(double near_a, const Rational& a, double near_b, const Rational& b) {
+  const double margin = (std::abs(near_a) + std::abs(near_b)) * 0x1p-50 + 0x1p-1000;
+  if (near_a < near_b - margin) return true;
+  if (near_a > near_b + margin) return false;
+  return a <= b;
+}
+
 // The piece of `box` (with its lines) inside a convex cell: the box clipped by each of the
 // cell's constraints in turn. Its area, 0 when they do not meet in an open set.
 Rational clipped_area(Polygon box, std::vector<Line> lines, const Polytope& cell) {
@@ -274,16 +283,26 @@ Rational clipped_area(Polygon box, std::vector<Line> lines, const Polytope& cell
 void box_walk(const BspTree& tree, const BspSubtrees& subtrees, const Point& from, const Point& to,
               BoxPieces& found) {
   const std::size_t d = from.size();
+  std::vector<double> near_from(d);
+  std::vector<double> near_to(d);
+  for (std::size_t k = 0; k < d; ++k) {
+    near_from[k] = from[k].get_d();
+    near_to[k] = to[k].get_d();
+  }
   std::vector<std::uint32_t> pending{0};
   while (!pending.empty()) {
     const std::uint32_t index = pending.back();
     pending.pop_back();
     const BoundingBox& box = subtrees.box(index);
+    const auto low = subtrees.near_low(index);
+    const auto high = subtrees.near_high(index);
     bool inside = true;
     bool misses = false;
     for (std::size_t k = 0; k < d && !misses; ++k) {
-      misses = box.high[k] <= from[k] || box.low[k] >= to[k];
-      inside = inside && from[k] <= box.low[k] && box.high[k] <= to[k];
+      misses = at_most(high[k], box.high[k], near_from[k], from[k]) ||
+               at_most(near_to[k], to[k], low[k], box.low[k]);
+      inside = inside && at_most(near_from[k], from[k], low[k], box.low[k]) &&
+               at_most(high[k], box.high[k], near_to[k], to[k]);
     }
     if (misses) continue;
     if (inside) {

@@ -52,6 +52,14 @@ BspSubtrees::BspSubtrees(const BspTree& tree)
       if (above.high[j] > box.high[j]) box.high[j] = above.high[j];
     }
   }
+  dimension_ = tree.dimension();
+  near_corners_.reserve(2 * nodes.size() * dimension_);
+  for (const BoundingBox& box : boxes_) {
+    for (const Rational& v : box.low)
+      near_corners_.push_back(v.get_d());
+    for (const Rational& v : box.high)
+      near_corners_.push_back(v.get_d());
+  }
 }
 
 }  // namespace oasis::geom

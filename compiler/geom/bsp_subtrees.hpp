@@ -19,6 +19,13 @@ class BspSubtrees {
 
   // The smallest box holding the node's region (the union of its cells).
   [[nodiscard]] const BoundingBox& box(std::uint32_t node) const { return boxes_[node]; }
+  // box(node)'s corners in doubles, each within one ulp of the exact (for a filter).
+  [[nodiscard]] std::span<const double> near_low(std::uint32_t node) const {
+    return std::span(near_corners_).subspan(2 * node * dimension_, dimension_);
+  }
+  [[nodiscard]] std::span<const double> near_high(std::uint32_t node) const {
+    return std::span(near_corners_).subspan((2 * node + 1) * dimension_, dimension_);
+  }
   // True for a leaf whose cell is its bounding box (a box's piece of it is a box too).
   [[nodiscard]] bool is_box(std::uint32_t node) const { return is_box_[node]; }
   // The node's cells, in depth-first order (below before above).
@@ -32,6 +39,8 @@ class BspSubtrees {
   std::vector<std::uint32_t> end_;
   std::vector<std::uint32_t> order_;  // the cells, depth first
   std::vector<bool> is_box_;
+  std::size_t dimension_ = 0;
+  std::vector<double> near_corners_;  // per node: low, then high
 };
 
 }  // namespace oasis::geom

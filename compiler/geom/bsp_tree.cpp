@@ -58,7 +58,23 @@ Point representative_point(const Polytope& polytope, std::span<const Point> vert
   std::vector<Rational> half_widths(polytope.dimension());
   for (std::size_t j = 0; j < half_widths.size(); ++j)
     half_widths[j] = (box->high[j] - box->low[j]) / 2;
-  const auto centre = polytope.chebyshev_centre(half_widths);
+  // A polytope whose every constraint reads one axis is its bounding box: the largest copy
+  // of the box inside it is the box itself, about its centre, with no LP to solve.
+  const bool is_box = std::all_of(polytope.constraints().begin(), polytope.constraints().end(),
+                                  [](const HalfSpace& h) {
+                                    return std::count_if(h.normal.begin(), h.normal.end(),
+                                                         [](const Rational& a) {
+                                                           return sgn(a) != 0;
+                                                         }) == 1;
+                                  });
+  std::optional<InscribedBox> centre;
+  if (is_box) {
+    centre = InscribedBox{Point(polytope.dimension()), 1};
+    for (std::size_t j = 0; j < half_widths.size(); ++j)
+      centre->centre[j] = box->low[j] + half_widths[j];
+  } else {
+    centre = polytope.chebyshev_centre(half_widths);
+  }
   assert(centre && sgn(centre->radius) > 0);
   // The box of half-widths radius * half_widths about the centre lies in the polytope, so a
   // point within a sixteenth of it on every axis is interior and still central. The cells

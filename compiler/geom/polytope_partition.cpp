@@ -1,6 +1,7 @@
 #include "geom/polytope_partition.hpp"
 
 #include <algorithm>
+#include <set>
 
 #include "geom/polytope_error_bound.hpp"
 #include "support/text.hpp"
@@ -24,6 +25,20 @@ std::size_t insert_region(BspTree& tree, const Polytope& region) {
   }
   return splits;
 }
+
+struct CellBound {
+  Rational bound;
+  std::size_t cell = 0;
+};
+
+// The largest bound first, then the lowest cell.
+struct WorseFirst {
+  bool operator()(const CellBound& p, const CellBound& q) const {
+    const int order = cmp(p.bound, q.bound);
+    return order != 0 ? order > 0 : p.cell < q.cell;
+  }
+};
+using CellsByBound = std::set<CellBound, WorseFirst>;
 
 class Refiner {
  public:
@@ -55,26 +70,28 @@ class Refiner {
     result_.stable = true;
   }
 
-  // Step 3: the worst cell first.
+  // Step 3: the worst cell first (of equal bounds, the lowest index), kept in order so that
+  // finding it does not cost a pass over every cell.
   void error_driven() {
-    std::vector<Rational> worst(tree().num_cells());
-    for (std::size_t cell = 0; cell < worst.size(); ++cell)
-      worst[cell] = cell_bound(cell);
+    CellsByBound worst;
+    for (std::size_t cell = 0; cell < tree().num_cells(); ++cell)
+      worst.insert({cell_bound(cell), cell});
     for (;;) {
-      const auto top = std::max_element(worst.begin(), worst.end());
-      result_.epsilon = *top;
-      if (*top <= options_.epsilon || budget_spent()) return;
-      const auto cell = static_cast<std::size_t>(top - worst.begin());
+      const auto top = worst.begin();
+      result_.epsilon = top->bound;
+      if (top->bound <= options_.epsilon || budget_spent()) return;
+      const std::size_t cell = top->cell;
       if (!split_worst(cell)) return;  // cannot happen for a full-dimensional cell
       ++result_.error_splits;
       report(to_double(result_.epsilon));
       if (deterministic_actions_.empty()) {  // only the two halves changed
-        worst[cell] = cell_bound(cell);
-        worst.push_back(cell_bound(tree().num_cells() - 1));
+        worst.erase(top);
+        worst.insert({cell_bound(cell), cell});
+        worst.insert({cell_bound(tree().num_cells() - 1), tree().num_cells() - 1});
       } else {  // new hyperplanes may cut the images of other cells
-        worst.resize(tree().num_cells());
-        for (std::size_t c = 0; c < worst.size(); ++c)
-          worst[c] = cell_bound(c);
+        worst.clear();
+        for (std::size_t c = 0; c < tree().num_cells(); ++c)
+          worst.insert({cell_bound(c), c});
       }
     }
   }
