@@ -387,10 +387,11 @@ CommandRunner add_compile_command(CLI::App& app) {
                     "Continuous: also write the quotient's transition rows (large)");
   command
       ->add_option("--grid-rows", options->grid_rows,
-                   "Continuous, grid path: 'product' keeps each row as per-axis rows, proves "
-                   "by invariants that no two cells are bisimilar and solves on that form "
-                   "(memory grows with the axes' rows, not their product); 'materialised' "
-                   "writes every row out for the exact refinement; 'auto' takes product form "
+                   "Continuous: 'product' keeps each row compact (the grid path: per-axis "
+                   "rows; the polytope path: the subtrees and cut cells of its tree walk), "
+                   "proves by invariants that no two cells are bisimilar and solves on that "
+                   "form (memory grows with the compact rows, not the edges); 'materialised' "
+                   "writes every row out for the exact refinement; 'auto' keeps rows compact "
                    "above " +
                        std::to_string(pipeline::kProductRowsAbove) +
                        " edges per context (docs/geometry.md)")

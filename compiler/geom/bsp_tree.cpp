@@ -60,13 +60,11 @@ Point representative_point(const Polytope& polytope, std::span<const Point> vert
     half_widths[j] = (box->high[j] - box->low[j]) / 2;
   // A polytope whose every constraint reads one axis is its bounding box: the largest copy
   // of the box inside it is the box itself, about its centre, with no LP to solve.
-  const bool is_box = std::all_of(polytope.constraints().begin(), polytope.constraints().end(),
-                                  [](const HalfSpace& h) {
-                                    return std::count_if(h.normal.begin(), h.normal.end(),
-                                                         [](const Rational& a) {
-                                                           return sgn(a) != 0;
-                                                         }) == 1;
-                                  });
+  const bool is_box = std::all_of(
+      polytope.constraints().begin(), polytope.constraints().end(), [](const HalfSpace& h) {
+        return std::count_if(h.normal.begin(), h.normal.end(),
+                             [](const Rational& a) { return sgn(a) != 0; }) == 1;
+      });
   std::optional<InscribedBox> centre;
   if (is_box) {
     centre = InscribedBox{Point(polytope.dimension()), 1};

@@ -38,13 +38,14 @@ struct TargetFlags {
 // or the spec is that of both paths.
 ContinuousTarget continuous_target(const model::ModelIR& spec, const TargetFlags& flags);
 
-// How a grid context's rows are kept. Materialised: CSR rows, the exact partition refinement
-// and the solver on them. Product: per-axis rows (geom/grid_product_rows.hpp), a proof by
-// invariants that no two cells are bisimilar (bisim/discrete_proof.hpp; when it cannot be
-// had, the rows are materialised after all) and value iteration on the product form.
-// Automatic: product when the materialised rows would pass kProductRowsAbove edges per
+// How a continuous context's rows are kept. Materialised: CSR rows, the exact partition
+// refinement and the solver on them. Product: compact rows (the grid path's per-axis rows,
+// geom/grid_product_rows.hpp; the polytope path's tree walks, geom/polytope_walk_rows.hpp), a
+// proof by invariants that no two cells are bisimilar (bisim/discrete_proof.hpp; when it
+// cannot be had, the rows are materialised after all) and value iteration on the compact
+// form. Automatic: compact when the materialised rows would pass kProductRowsAbove edges per
 // context; below it the rows are cheap, and catalogs stay bit for bit those of the
-// materialised solver (the product form sums in another order, so its values differ in the
+// materialised solver (the compact forms sum in another order, so their values differ in the
 // last bits).
 enum class GridRows { kAutomatic, kMaterialised, kProduct };
 inline constexpr std::size_t kProductRowsAbove = std::size_t{1} << 24;

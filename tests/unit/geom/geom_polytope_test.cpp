@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include "geom/bsp_tree.hpp"
 #include "geom/polytope.hpp"
 
 namespace oasis {
@@ -200,6 +201,55 @@ TEST(GeomPolytope, SlicesAndIntersections) {
   ASSERT_TRUE(bounds);
   EXPECT_EQ(bounds->low, point({-1, -1}));
   EXPECT_EQ(bounds->high, point({1, 1}));
+}
+
+// Cells are split through their representatives, so the representatives' numbers are
+// those of every deeper cell: they must stay short. A triangle's LP centre has the bounding
+// box's widths in its denominators; the representative is the shortest dyadic point near it.
+TEST(GeomPolytope, RepresentativesStayShortInteriorAndCentral) {
+  geom::BspTree tree({q(0), q(0)}, {q(2), q(2)});
+  tree.split(0, HalfSpace{{q(1), q(1)}, q(1)});  // the triangle x + y <= 1 and the rest
+  for (int round = 0; round < 8; ++round) {
+    for (std::size_t cell = tree.num_cells(); cell-- > 0;) {
+      const Point& r = tree.cells()[cell].representative;
+      tree.split(cell,
+                 HalfSpace{{q(round % 2 == 0 ? 1 : 0), q(round % 2 == 0 ? 0 : 1)}, r[round % 2]});
+    }
+  }
+  ASSERT_GT(tree.num_cells(), 200U);
+  for (const geom::BspCell& cell : tree.cells()) {
+    const Point& r = cell.representative;
+    for (const HalfSpace& h : cell.polytope.constraints())
+      EXPECT_LT(geom::dot(h.normal, r), h.bound);  // interior
+    bool is_box = true;
+    for (const HalfSpace& h : cell.polytope.constraints())
+      is_box = is_box && (sgn(h.normal[0]) == 0 || sgn(h.normal[1]) == 0);
+    for (std::size_t j = 0; j < 2; ++j) {
+      const mpz_class& den = r[j].get_den();
+      EXPECT_EQ(mpz_popcount(den.get_mpz_t()), 1U) << "a power of two";
+      EXPECT_LE(mpz_sizeinbase(den.get_mpz_t(), 2), 24U);
+      EXPECT_LE(mpz_sizeinbase(r[j].get_num().get_mpz_t(), 2), 24U);
+    }
+    if (!is_box) continue;
+    const auto box = geom::bounding_box_of(cell.vertices);
+    ASSERT_TRUE(box);
+    for (std::size_t j = 0; j < 2; ++j)  // within a sixteenth of the half-width of the centre
+      EXPECT_LE(abs(r[j] - (box->low[j] + box->high[j]) / 2), (box->high[j] - box->low[j]) / 32);
+  }
+  // The cells of repeated halving keep their exact centres.
+  geom::BspTree halved({q(0), q(-1)}, {q(3), q(1)});
+  for (int round = 0; round < 6; ++round) {
+    for (std::size_t cell = halved.num_cells(); cell-- > 0;) {
+      const Point& r = halved.cells()[cell].representative;
+      halved.split(cell, HalfSpace{{q(1 - round % 2), q(round % 2)}, r[round % 2]});
+    }
+  }
+  for (const geom::BspCell& cell : halved.cells()) {
+    const auto box = geom::bounding_box_of(cell.vertices);
+    ASSERT_TRUE(box);
+    for (std::size_t j = 0; j < 2; ++j)
+      EXPECT_EQ(cell.representative[j], (box->low[j] + box->high[j]) / 2);
+  }
 }
 
 }  // namespace
