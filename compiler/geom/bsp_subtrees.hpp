@@ -21,10 +21,10 @@ class BspSubtrees {
   [[nodiscard]] const BoundingBox& box(std::uint32_t node) const { return boxes_[node]; }
   // box(node)'s corners in doubles, each within one ulp of the exact (for a filter).
   [[nodiscard]] std::span<const double> near_low(std::uint32_t node) const {
-    return std::span(near_corners_).subspan(2 * node * dimension_, dimension_);
+    return std::span(near_corners_).subspan(2 * std::size_t{node} * dimension_, dimension_);
   }
   [[nodiscard]] std::span<const double> near_high(std::uint32_t node) const {
-    return std::span(near_corners_).subspan((2 * node + 1) * dimension_, dimension_);
+    return std::span(near_corners_).subspan((2 * std::size_t{node} + 1) * dimension_, dimension_);
   }
   // True for a leaf whose cell is its bounding box (a box's piece of it is a box too).
   [[nodiscard]] bool is_box(std::uint32_t node) const { return is_box_[node]; }

@@ -91,7 +91,7 @@ BspTree::BspTree(const Point& low, const Point& high) : low_(low), high_(high) {
   cells_.push_back(make_cell(domain, domain.vertices(), 0));
 }
 
-BspCell BspTree::make_cell(Polytope polytope, std::vector<Point> vertices,
+BspCell BspTree::make_cell(const Polytope& polytope, std::vector<Point> vertices,
                            std::uint32_t leaf) const {
   BspCell cell;
   cell.polytope = facets_only(polytope, vertices);

@@ -90,7 +90,8 @@ class BspTree {
   [[nodiscard]] std::vector<RoundedBspNode> rounded_nodes() const;
 
  private:
-  BspCell make_cell(Polytope polytope, std::vector<Point> vertices, std::uint32_t leaf) const;
+  BspCell make_cell(const Polytope& polytope, std::vector<Point> vertices,
+                    std::uint32_t leaf) const;
 
   Point low_;
   Point high_;

@@ -4,10 +4,16 @@
 
 namespace oasis::pipeline {
 
-model::ExplicitModel GridCompactRows::materialise(const std::string& name,
-                                                  const std::vector<std::string>& actions,
-                                                  const model::Objective& objective) const {
-  return geom::grid_finite_mdp(rows_, name, actions, objective);
+model::ExplicitModel materialise(const geom::ProductRows& rows, const std::string& name,
+                                 const std::vector<std::string>& actions,
+                                 const model::Objective& objective) {
+  return geom::grid_finite_mdp(rows, name, actions, objective);
+}
+
+model::ExplicitModel materialise(const geom::PolytopeWalkRows& rows, const std::string& name,
+                                 const std::vector<std::string>& actions,
+                                 const model::Objective& objective) {
+  return rows.materialise(name, actions, objective);
 }
 
 }  // namespace oasis::pipeline

@@ -1,7 +1,8 @@
 #pragma once
-// The two forms of compact rows (pipeline/product_form.hpp, CompactRows): the grid path's
-// product rows and the polytope path's tree walks, each behind the one interface the proof
-// and the solver read.
+// The two forms of compact rows behind the one interface the proof and the solver read
+// (pipeline/product_form.hpp, CompactRows): the grid path's product rows
+// (geom/grid_product_rows.hpp) and the polytope path's tree walks
+// (geom/polytope_walk_rows.hpp).
 
 #include <string>
 #include <vector>
@@ -12,39 +13,27 @@
 
 namespace oasis::pipeline {
 
-class GridCompactRows final : public CompactRows {
+// The exact rows of each form as a finite MDP.
+model::ExplicitModel materialise(const geom::ProductRows& rows, const std::string& name,
+                                 const std::vector<std::string>& actions,
+                                 const model::Objective& objective);
+model::ExplicitModel materialise(const geom::PolytopeWalkRows& rows, const std::string& name,
+                                 const std::vector<std::string>& actions,
+                                 const model::Objective& objective);
+
+template <class Rows>
+class CompactRowsOf final : public CompactRows {
  public:
-  explicit GridCompactRows(const geom::ProductRows& rows) : rows_(rows) {}
+  explicit CompactRowsOf(const Rows& rows) : rows_(rows) {}
   [[nodiscard]] std::uint32_t num_states() const override { return rows_.num_states(); }
   [[nodiscard]] std::uint32_t num_actions() const override { return rows_.num_actions(); }
   [[nodiscard]] ValueId state_reward(std::uint32_t s) const override {
     return rows_.state_reward(s);
   }
   [[nodiscard]] const RationalPool& values() const override { return rows_.values(); }
-  [[nodiscard]] double expectation(std::uint32_t s, std::uint32_t a,
-                                   const double* x) const override {
-    return rows_.expectation(s, a, x);
+  void prepare(const double* x) const override {
+    if constexpr (requires { rows_.prepare(x); }) rows_.prepare(x);
   }
-  [[nodiscard]] std::uint32_t rounding_depth() const override { return rows_.rounding_depth(); }
-  [[nodiscard]] double smallest_term() const override { return rows_.smallest_term(); }
-  [[nodiscard]] model::ExplicitModel materialise(const std::string& name,
-                                                 const std::vector<std::string>& actions,
-                                                 const model::Objective& objective) const override;
-
- private:
-  const geom::ProductRows& rows_;
-};
-
-class PolytopeCompactRows final : public CompactRows {
- public:
-  explicit PolytopeCompactRows(const geom::PolytopeWalkRows& rows) : rows_(rows) {}
-  [[nodiscard]] std::uint32_t num_states() const override { return rows_.num_states(); }
-  [[nodiscard]] std::uint32_t num_actions() const override { return rows_.num_actions(); }
-  [[nodiscard]] ValueId state_reward(std::uint32_t s) const override {
-    return rows_.state_reward(s);
-  }
-  [[nodiscard]] const RationalPool& values() const override { return rows_.values(); }
-  void prepare(const double* x) const override { rows_.prepare(x); }
   [[nodiscard]] double expectation(std::uint32_t s, std::uint32_t a,
                                    const double* x) const override {
     return rows_.expectation(s, a, x);
@@ -54,11 +43,11 @@ class PolytopeCompactRows final : public CompactRows {
   [[nodiscard]] model::ExplicitModel materialise(const std::string& name,
                                                  const std::vector<std::string>& actions,
                                                  const model::Objective& objective) const override {
-    return rows_.materialise(name, actions, objective);
+    return pipeline::materialise(rows_, name, actions, objective);
   }
 
  private:
-  const geom::PolytopeWalkRows& rows_;
+  const Rows& rows_;
 };
 
 }  // namespace oasis::pipeline

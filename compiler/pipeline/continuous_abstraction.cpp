@@ -102,6 +102,33 @@ CellPartition polytope_cells(const geom::Grid& box, const geom::BspTree& tree) {
 
 namespace {
 
+// The context solved on compact rows (pipeline/product_form.hpp) when `options` want them for
+// rows of `edges` edges and the proof goes through: whether that succeeded. nullopt when the
+// caller is to materialise the rows. `kept` says what the compact rows hold.
+std::optional<bool> solve_compact(const CompactRows& rows, std::size_t edges,
+                                  const std::string& kept, const std::string& form,
+                                  const model::ModelIR& ir, const ContinuousOptions& options,
+                                  ContinuousAbstraction& result, Clock::time_point& start,
+                                  std::string& error) {
+  if (!wants_product_form(edges, ir, options)) return std::nullopt;
+  result.finite_edges = edges;
+  result.seconds.finite_mdp = seconds_since(start);
+  if (options.progress) {
+    options.progress(result.context, describe_partition(result), result.seconds.grid);
+    options.progress(result.context, kept + " for " + std::to_string(edges) + " edges",
+                     result.seconds.finite_mdp);
+  }
+  switch (solve_in_product_form(rows, form, ir, options, result, error)) {
+    case ProductOutcome::kSolved:
+      return true;
+    case ProductOutcome::kFailed:
+      return false;
+    case ProductOutcome::kNotDiscrete:
+      break;
+  }
+  return std::nullopt;
+}
+
 // The grid path: product-structured contexts (box rewards, moves along single axes). The rows
 // stay in product form when options ask for it and the proof of pipeline/product_form.hpp goes
 // through: then `result` is complete and `mdp` stays empty. Otherwise `mdp` is the
@@ -124,26 +151,10 @@ bool partition_by_grid(const geom::GridGeometry& geometry, const model::ModelIR&
   // The rows are worked out once, in product form; they are materialised from it when needed.
   const geom::ProductRows rows(geometry, partition->grid,
                                static_cast<std::uint32_t>(ir.actions.size()));
-  if (wants_product_form(rows.num_edges(), ir, options)) {
-    result.finite_edges = rows.num_edges();
-    result.seconds.finite_mdp = seconds_since(start);
-    if (options.progress) {
-      options.progress(result.context, describe_partition(result), result.seconds.grid);
-      options.progress(result.context,
-                       "product rows, " + std::to_string(rows.num_numbers()) + " numbers for " +
-                           std::to_string(rows.num_edges()) + " edges",
-                       result.seconds.finite_mdp);
-    }
-    switch (
-        solve_in_product_form(GridCompactRows(rows), "product rows", ir, options, result, error)) {
-      case ProductOutcome::kSolved:
-        return true;
-      case ProductOutcome::kFailed:
-        return false;
-      case ProductOutcome::kNotDiscrete:
-        break;
-    }
-  }
+  const std::string kept = "product rows, " + std::to_string(rows.num_numbers()) + " numbers";
+  if (const auto solved = solve_compact(CompactRowsOf(rows), rows.num_edges(), kept, "product rows",
+                                        ir, options, result, start, error))
+    return *solved;
   mdp = geom::grid_finite_mdp(rows, geometry.context, ir.actions, ir.objective);
   return true;
 }
@@ -203,26 +214,10 @@ bool partition_by_polytopes(const geom::PolytopeGeometry& geometry, const model:
   // The rows are found once, as walks of the tree; they are materialised from them when
   // needed.
   const geom::PolytopeWalkRows rows(geometry, *partition);
-  if (wants_product_form(rows.num_edges(), ir, options)) {
-    result.finite_edges = rows.num_edges();
-    result.seconds.finite_mdp = seconds_since(start);
-    if (options.progress) {
-      options.progress(result.context, describe_partition(result), result.seconds.grid);
-      options.progress(result.context,
-                       "rows as tree walks, " + std::to_string(rows.num_entries()) +
-                           " entries for " + std::to_string(rows.num_edges()) + " edges",
-                       result.seconds.finite_mdp);
-    }
-    switch (solve_in_product_form(PolytopeCompactRows(rows), "tree walks", ir, options, result,
-                                  error)) {
-      case ProductOutcome::kSolved:
-        return true;
-      case ProductOutcome::kFailed:
-        return false;
-      case ProductOutcome::kNotDiscrete:
-        break;
-    }
-  }
+  const std::string kept = "rows as tree walks, " + std::to_string(rows.num_entries()) + " entries";
+  if (const auto solved = solve_compact(CompactRowsOf(rows), rows.num_edges(), kept, "tree walks",
+                                        ir, options, result, start, error))
+    return *solved;
   mdp = rows.materialise(geometry.context, ir.actions, ir.objective);
   return true;
 }
