@@ -290,6 +290,7 @@ void box_walk(const BspTree& tree, const BspSubtrees& subtrees, const Point& fro
     near_to[k] = to[k].get_d();
   }
   std::vector<std::uint32_t> pending{0};
+  found.cut.reserve(64);
   while (!pending.empty()) {
     const std::uint32_t index = pending.back();
     pending.pop_back();

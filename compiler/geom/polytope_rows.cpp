@@ -122,8 +122,10 @@ RowParts successor_parts(const PolytopeGeometry& geometry, const BspTree& tree,
     return row;
   }
   row.whole_subtrees = std::move(pieces->whole_subtrees);
+  row.shares.reserve(pieces->cut.size() + 1);
+  const bool unit_box = box_volume == 1;  // common (disturbances of width 1): no division
   for (auto& [cell, measure] : pieces->cut) {
-    measure /= box_volume;
+    if (!unit_box) measure /= box_volume;
     row.shares.emplace_back(cell, std::move(measure));
   }
   // The pieces partition the box's part inside the domain; the rest leaves it.
