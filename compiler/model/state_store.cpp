@@ -60,48 +60,53 @@ bool StateStore::key_equals(std::uint32_t state, std::span<const std::uint64_t> 
   return true;
 }
 
-std::size_t StateStore::find_slot(std::uint64_t hash, std::span<const std::uint64_t> key) const {
+std::size_t StateStore::find_slot(std::uint64_t h, std::span<const std::uint64_t> key) const {
   const std::size_t mask = slots_.size() - 1;
-  for (std::size_t i = hash & mask;; i = (i + 1) & mask) {
+  const std::uint32_t high = hash_high(h);
+  for (std::size_t i = h & mask;; i = (i + 1) & mask) {
     const Slot& slot = slots_[i];
     if (slot.state == 0) return i;
-    if (slot.first_word == key[0] && (words_ == 1 || key_equals(slot.state - 1, key))) return i;
+    if (slot.hash_high == high && is_key_of(slot.state - 1, key)) return i;
   }
+}
+
+void StateStore::place(std::uint64_t h, std::uint32_t state) {
+  const std::size_t mask = slots_.size() - 1;
+  std::size_t i = h & mask;
+  while (slots_[i].state != 0)
+    i = (i + 1) & mask;
+  slots_[i] = {hash_high(h), state + 1};
 }
 
 std::pair<std::uint32_t, bool> StateStore::insert(std::span<const std::uint64_t> key) {
   const std::uint64_t h = hash(key);
-  Slot& recent = recent_[h & (kRecentSlots - 1)];
+  Recent& recent = recent_[h & (kRecentSlots - 1)];
   if (recent_match(h, key)) return {recent.state - 1, false};
-  if ((std::size_t{count_} + 1) * 2 > slots_.size()) grow();  // load factor <= 1/2
+  // Linear probing stays short up to 3/4 full: 8-byte slots, 8 to a cache line.
+  if ((std::size_t{count_} + 1) * 4 > slots_.size() * 3) grow();
   Slot& slot = slots_[find_slot(h, key)];
   if (slot.state != 0) {
-    recent = slot;
+    recent = {key[0], slot.state};
     return {slot.state - 1, false};
   }
   if (count_ == UINT32_MAX - 1) throw std::length_error("more than 2^32 states");
-  slot = {key[0], count_ + 1};
-  recent = slot;
+  slot = {hash_high(h), count_ + 1};
+  recent = {key[0], count_ + 1};
   if (keys_.size() + words_ > keys_.capacity())
     reserve_huge(keys_, std::max(keys_.capacity() * 2, keys_.size() + words_));
   keys_.insert(keys_.end(), key.begin(), key.end());
   return {count_++, true};
 }
 
+// The slots hold no keys: the keys, read in order, are hashed again into a table twice the
+// size (a sequential read rather than a random one over the old table, which is freed first
+// so that the two are never held together).
 void StateStore::grow() {
-  std::vector<Slot, HugePageAllocator<Slot>> bigger(slots_.size() * 2);
-  const std::size_t mask = bigger.size() - 1;
-  for (const Slot& slot : slots_) {
-    if (slot.state == 0) continue;
-    // A one-word key is in the slot itself: no need to read the keys.
-    const std::span<const std::uint64_t> key =
-        words_ == 1 ? std::span<const std::uint64_t>(&slot.first_word, 1) : key_of(slot.state - 1);
-    std::size_t i = hash(key) & mask;
-    while (bigger[i].state != 0)
-      i = (i + 1) & mask;
-    bigger[i] = slot;
-  }
-  slots_ = std::move(bigger);
+  const std::size_t size = slots_.size() * 2;
+  slots_ = std::vector<Slot, HugePageAllocator<Slot>>();
+  slots_.resize(size);
+  for (std::uint32_t s = 0; s < count_; ++s)
+    place(hash(key_of(s)), s);
 }
 
 }  // namespace oasis::model
