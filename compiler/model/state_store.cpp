@@ -92,8 +92,7 @@ std::pair<std::uint32_t, bool> StateStore::insert(std::span<const std::uint64_t>
   if (count_ == UINT32_MAX - 1) throw std::length_error("more than 2^32 states");
   slot = {hash_high(h), count_ + 1};
   recent = {key[0], count_ + 1};
-  if (keys_.size() + words_ > keys_.capacity())
-    reserve_huge(keys_, std::max(keys_.capacity() * 2, keys_.size() + words_));
+  grow_huge(keys_, keys_.size() + words_);
   keys_.insert(keys_.end(), key.begin(), key.end());
   return {count_++, true};
 }

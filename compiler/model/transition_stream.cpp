@@ -17,13 +17,57 @@ void TransitionStream::throw_too_many_edges() {
   throw std::length_error("more than 2^32 transitions");
 }
 
+void TransitionStream::set_num_actions(std::uint32_t num_actions) {
+  std::vector<EdgeIndex>& begins = matrix_.choice_begin;
+  const std::size_t old_count = num_actions_;
+  const std::size_t new_count = num_actions;
+  if (begins.empty() || new_count == old_count) {
+    num_actions_ = num_actions;
+    return;
+  }
+  // Every state before the last one begun has all its old_count choices in `begins`; the
+  // last one those up to the choice begun last (the next begin() or finish() adds the rest).
+  const std::size_t last_state = (begins.size() - 1) / old_count;
+  const std::size_t last_action = (begins.size() - 1) % old_count;
+  const std::size_t size = last_state * new_count + last_action + 1;
+  if (last_action >= new_count) throw_action_beyond_count();
+  if (new_count < old_count) {
+    // Choices move towards the front: in increasing order, none is overwritten unread. The
+    // dropped actions of a state must have no edges: they begin where its next state does.
+    for (std::size_t state = 0; state <= last_state; ++state) {
+      if (state < last_state && begins[state * old_count + new_count] !=
+                                    begins[(state + 1) * old_count])
+        throw_action_beyond_count();
+      const std::size_t count = state < last_state ? new_count : last_action + 1;
+      for (std::size_t action = 0; action < count; ++action)
+        begins[state * new_count + action] = begins[state * old_count + action];
+    }
+    begins.resize(size);
+  } else {
+    // Choices move towards the back: in decreasing order, none is overwritten unread. A
+    // state's new actions have no edges: they begin where its next state's edges begin.
+    grow_huge(begins, size);
+    begins.resize(size);
+    for (std::size_t c = size; c-- > 0;) {
+      const std::size_t state = c / new_count;
+      const std::size_t action = c % new_count;
+      begins[c] = action < old_count ? begins[state * old_count + action]
+                                     : begins[(state + 1) * new_count];
+    }
+  }
+  num_actions_ = num_actions;
+}
+
+void TransitionStream::throw_action_beyond_count() {
+  throw std::logic_error("TransitionStream: a choice of an action beyond the new count");
+}
+
 void TransitionStream::begin(ChoiceIndex choice) {
   close_row();
   std::vector<EdgeIndex>& begins = matrix_.choice_begin;
   if (choice < begins.size()) throw std::logic_error("TransitionStream: choices out of order");
   // Choices skipped since the last one have no edges: they begin (and end) here.
-  if (choice >= begins.capacity())
-    reserve_huge(begins, std::max<std::size_t>(begins.capacity() * 2, std::size_t{choice} + 1));
+  grow_huge(begins, std::size_t{choice} + 1);
   begins.resize(std::size_t{choice} + 1, static_cast<EdgeIndex>(matrix_.edge_target.size()));
   row_begin_ = matrix_.edge_target.size();
 }

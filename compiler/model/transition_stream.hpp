@@ -25,6 +25,14 @@ class TransitionStream {
   TransitionStream(std::uint32_t num_actions, const RationalPool& values)
       : num_actions_(num_actions), values_(&values) {}
 
+  [[nodiscard]] std::uint32_t num_actions() const { return num_actions_; }
+  [[nodiscard]] std::size_t num_edges() const { return matrix_.edge_target.size(); }
+
+  // Changes the number of actions, for an explorer that finds its actions as it goes: the
+  // choices begun so far move to their indices under the new count (a pass over them). No
+  // choice begun may be of an action beyond the new count.
+  void set_num_actions(std::uint32_t num_actions);
+
   // Starts the distribution of choice `choice`, which must exceed every choice begun before.
   void begin(ChoiceIndex choice);
   void add(StateIndex target, ValueId probability) {
@@ -45,6 +53,7 @@ class TransitionStream {
   };
 
   [[noreturn]] static void throw_too_many_edges();
+  [[noreturn]] static void throw_action_beyond_count();
   // Sorts the distribution begun last by target and merges its repeated targets.
   void close_row();
   void sort_row(std::size_t begin, std::size_t end);

@@ -6,9 +6,9 @@
 #include <utility>
 #include <vector>
 
-#include "formats/distribution_collector.hpp"
 #include "formats/explicit_reader.hpp"
 #include "model/state_store.hpp"
+#include "model/transition_stream.hpp"
 #include "model/valuation_text.hpp"
 #include "support/double_range.hpp"
 #include "support/huge_page_growth.hpp"
@@ -220,7 +220,7 @@ class Explorer {
   // distributions keep within the limits that intern_key() and begin_distribution() check.
   [[nodiscard]] bool batch_cannot_fail() const {
     const std::uint64_t most_states = std::uint64_t{store_.size()} + pending_.size();
-    const std::uint64_t most_edges = std::uint64_t{collector_.num_edges()} + row_.size() +
+    const std::uint64_t most_edges = edges_found_ + row_.size() +
                                      batch_.size();  // a deadlock's self-loop
     return most_states <= options_.max_states && most_edges < UINT32_MAX - 1;
   }
@@ -266,35 +266,47 @@ class Explorer {
     const StateIndex s = worked.state;
     if (choices_begin == worked.choices_end) {
       deadlocks_.push_back(s);
-      begin_distribution(s, action_id(std::nullopt, 0));
-      collector_.add(s, RationalPool::kOne);
+      const model::ActionIndex action = action_id(std::nullopt, 0);
+      found_distribution(s, action, 1);
       record_no_action_rewards();  // the self-loop PRISM adds earns nothing
+      if (begin_in_stream(s, action)) stream_.add(s, RationalPool::kOne);
       return;
     }
     if (program_.type == ModelType::Dtmc) {
-      begin_distribution(s, action_id(std::nullopt, 0));
-      add_row(worked.row_begin, choice_ends_[worked.choices_end - 1]);
+      const model::ActionIndex action = action_id(std::nullopt, 0);
+      const std::size_t last = choice_ends_[worked.choices_end - 1];
+      found_distribution(s, action, last - worked.row_begin);
       record_action_rewards(worked, 0, std::nullopt, choices_begin);
+      stream_row(s, action, worked.row_begin, last);
       return;
     }
     std::uint32_t unlabelled = 0;
     label_uses_.assign(program_.actions.size(), 0);
+    state_rows_.clear();
     for (std::uint32_t c = choices_begin; c < worked.choices_end; ++c) {
       const Choice& choice = choices_[c];
       const std::uint32_t position = choice.action ? label_uses_[*choice.action]++ : unlabelled++;
-      begin_distribution(s, action_id(choice.action, position));
-      add_row(c == choices_begin ? worked.row_begin : choice_ends_[c - 1], choice_ends_[c]);
+      const model::ActionIndex action = action_id(choice.action, position);
+      const std::size_t first = c == choices_begin ? worked.row_begin : choice_ends_[c - 1];
+      found_distribution(s, action, choice_ends_[c] - first);
       record_action_rewards(worked, c - choices_begin, choice.action, choices_begin);
+      state_rows_.push_back({action, first, choice_ends_[c]});
     }
+    // The stream takes a state's choices in action order. Actions are numbered as they are
+    // found, so a state may find its choices in another order (an action first found later).
+    std::sort(state_rows_.begin(), state_rows_.end(),
+              [](const Row& x, const Row& y) { return x.action < y.action; });
+    for (const Row& row : state_rows_)
+      stream_row(s, row.action, row.first, row.last);
   }
 
-  // Outcomes [first, last) of row_ as the distribution just begun. Sorted here, where they
-  // are in the cache, the collector finds every distribution in order and builds the matrix
-  // where it lies (a repeated target is merged there).
-  void add_row(std::size_t first, std::size_t last) {
+  // Outcomes [first, last) of row_ as the distribution of (s, action). Sorted here, where
+  // they are in the cache; the stream merges a repeated target.
+  void stream_row(StateIndex s, model::ActionIndex action, std::size_t first, std::size_t last) {
+    if (!begin_in_stream(s, action)) return;
     model::sort_by_target(std::span(row_).subspan(first, last - first));
     for (std::size_t o = first; o < last; ++o)
-      collector_.add(row_[o].first, row_[o].second);
+      stream_.add(row_[o].first, row_[o].second);
   }
 
   // The enabled choices of the state in valuation_, appended to choices_ from `first`:
@@ -476,12 +488,37 @@ class Explorer {
     return ids[position];
   }
 
-  void begin_distribution(StateIndex s, model::ActionIndex action) {
-    if (collector_.full()) {
+  // Counts a distribution of (s, action), in the order the state's choices are found (its
+  // action rewards are recorded in that order too); refuses one past 2^32 edges.
+  void found_distribution(StateIndex s, model::ActionIndex action, std::size_t edges) {
+    if (edges_found_ >= UINT32_MAX - 1) {
       diagnostics_.error(program_.range, "the model has more than 2^32 transitions");
       throw ExplorationFailed{};
     }
-    collector_.begin(s, action);
+    ++num_distributions_;
+    edges_found_ += edges;
+    if (has_action_rewards_) distribution_choices_.emplace_back(s, action);
+  }
+
+  // Starts the distribution of (s, action) in the stream, whose choice indices count the
+  // actions found so far. A new action re-spaces the choices the stream holds (a pass over
+  // them): once it holds many, its count runs ahead of the actions found, doubling, so that
+  // the passes stay few; build_model() gives it the true count. False when the choice index
+  // passes 32 bits: build_model() then reports more than 2^32 state-action pairs.
+  bool begin_in_stream(StateIndex s, model::ActionIndex action) {
+    const auto found = static_cast<std::uint32_t>(action_names_.size());
+    if (action >= stream_.num_actions()) {
+      const bool large = std::uint64_t{s} * stream_.num_actions() > kExactActionCountChoices;
+      stream_.set_num_actions(large ? std::max(found, 2 * stream_.num_actions()) : found);
+    }
+    std::uint64_t choice = std::uint64_t{s} * stream_.num_actions() + action;
+    if (choice >= UINT32_MAX && stream_.num_actions() > found) {
+      stream_.set_num_actions(found);
+      choice = std::uint64_t{s} * found + action;
+    }
+    if (choice >= UINT32_MAX) return false;
+    stream_.begin(static_cast<model::ChoiceIndex>(choice));
+    return true;
   }
 
   // --- Rewards -------------------------------------------------------------------------------
@@ -542,14 +579,14 @@ class Explorer {
     const std::size_t at = worked.rewards_begin + std::size_t{index} * program_.rewards.size();
     for (std::size_t r = 0; r < program_.rewards.size(); ++r) {
       if (!action_items_[r]) continue;
-      action_rewards_[r].resize(collector_.size(), RationalPool::kZero);
+      action_rewards_[r].resize(num_distributions_, RationalPool::kZero);
       action_rewards_[r].back() = reward_ids_[at + r];
     }
   }
 
   void record_no_action_rewards() {
     for (std::vector<ValueId>& rewards : action_rewards_) {
-      if (!rewards.empty()) rewards.resize(collector_.size(), RationalPool::kZero);
+      if (!rewards.empty()) rewards.resize(num_distributions_, RationalPool::kZero);
     }
   }
 
@@ -578,11 +615,8 @@ class Explorer {
         program_.type == ModelType::Dtmc ? model::ModelType::kDtmc : model::ModelType::kMdp;
     model.actions = action_names_;
     fill_state_space(model.states);
-    std::vector<formats::DistributionCollector::Duplicate> duplicates;
-    auto matrix = collector_.finish(n, num_actions, values_, duplicates);
-    // Actions are named per state so that no state has two choices of one name.
-    if (!matrix) throw std::logic_error("PRISM exploration produced a repeated choice");
-    auto transitions = std::make_shared<const model::TransitionMatrix>(std::move(*matrix));
+    stream_.set_num_actions(num_actions);
+    auto transitions = std::make_shared<const model::TransitionMatrix>(stream_.finish(n, values_));
     if (program_.rewards.empty())
       model.contexts.push_back({"default", transitions, zero_rewards(n)});
     for (std::size_t r = 0; r < program_.rewards.size(); ++r) {
@@ -629,7 +663,8 @@ class Explorer {
     table.choice.assign(std::size_t{n} * num_actions, RationalPool::kZero);
     for (std::uint32_t d = 0; d < per_distribution.size(); ++d) {
       if (per_distribution[d] == RationalPool::kZero) continue;
-      table.choice[std::size_t{collector_.source(d)} * num_actions + collector_.action(d)] =
+      const auto [source, action] = distribution_choices_[d];
+      table.choice[std::size_t{source} * num_actions + action] =
           checked_value(values_[per_distribution[d]], structure.range);
     }
     return table;
@@ -685,7 +720,14 @@ class Explorer {
   std::vector<ValueId> probability_ids_;     // per update; kStateDependent when not constant
   std::vector<StateIndex> initial_;
   std::vector<StateIndex> deadlocks_;
-  formats::DistributionCollector collector_{formats::DistributionCollector::Kept::Nothing};
+  // The matrix, built as the states are explored. Its choices are in action order per state,
+  // which may not be the order found: counts and rewards follow the order found.
+  model::TransitionStream stream_{0, values_};
+  static constexpr std::uint64_t kExactActionCountChoices = std::uint64_t{1} << 16;
+  std::uint64_t edges_found_ = 0;
+  std::uint32_t num_distributions_ = 0;
+  // (source, action) per distribution, where some reward structure has action rewards.
+  std::vector<std::pair<StateIndex, model::ActionIndex>> distribution_choices_;
   std::vector<std::vector<ValueId>> action_rewards_;  // per structure, per distribution
   std::vector<bool> action_items_;   // per structure: whether it has items on actions
   bool has_action_rewards_ = false;  // some structure has
@@ -693,6 +735,13 @@ class Explorer {
   std::vector<model::ActionIndex> unlabelled_ids_;
   std::vector<std::vector<model::ActionIndex>> labelled_ids_;  // per action label
   std::vector<std::uint32_t> label_uses_;
+  // A state's distributions (emit_state()): the action, outcomes [first, last) of row_.
+  struct Row {
+    model::ActionIndex action;
+    std::size_t first;
+    std::size_t last;
+  };
+  std::vector<Row> state_rows_;
   // Per batch scratch (explore_all()).
   std::vector<Choice> choices_;  // of every state of the batch, in order
   std::vector<const Command*> choice_commands_;

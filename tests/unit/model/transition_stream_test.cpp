@@ -1,7 +1,8 @@
 // Unit tests of model::TransitionStream (compiler/model/transition_stream.hpp): for edges given
 // in choice order it must build the matrix TransitionBuilder builds, with the same pool ids
 // (rows sorted stably by target, repeated targets merged, merged sums interned in choice order
-// at the end), and refuse choices out of order.
+// at the end), and refuse choices out of order; its choices must move to their indices when
+// the number of actions changes during the stream (PRISM's actions are numbered as found).
 
 #include "model/transition_stream.hpp"
 
@@ -76,6 +77,70 @@ TEST(TransitionStream, BuildsWhatTheBuilderBuildsWithTheSamePoolIds) {
     for (ValueId id = 0; id < built_values.size(); ++id)
       EXPECT_EQ(built_values[id], streamed_values[id]) << "seed " << seed << ", id " << id;
   }
+}
+
+// Streams `edges` (in choice order for `actions` actions) with the stream's action count
+// changed on the way: `count_before(a)` is the count set before the first choice of action a
+// that the count does not cover yet; the true count is set at the end.
+template <typename CountBefore>
+TransitionMatrix stream_with_changing_count(const std::vector<Edge>& edges, std::uint32_t states,
+                                           std::uint32_t actions, std::uint32_t initial_count,
+                                           CountBefore count_before, RationalPool& values) {
+  TransitionStream stream(initial_count, values);
+  for (std::size_t e = 0; e < edges.size(); ++e) {
+    const Edge& edge = edges[e];
+    if (e == 0 || edges[e - 1].source != edge.source || edges[e - 1].action != edge.action) {
+      if (edge.action >= stream.num_actions()) stream.set_num_actions(count_before(edge.action));
+      stream.begin(edge.source * stream.num_actions() + edge.action);
+    }
+    stream.add(edge.target, edge.probability);
+  }
+  stream.set_num_actions(actions);
+  return stream.finish(states, values);
+}
+
+TEST(TransitionStream, MovesChoicesWhenTheActionCountChanges) {
+  for (unsigned seed = 1; seed <= 20; ++seed) {
+    constexpr std::uint32_t kStates = 40;
+    constexpr std::uint32_t kActions = 5;
+    RationalPool values;
+    // Actions 3 and 4 are first used from states 10 and 25 on.
+    std::vector<Edge> edges;
+    for (const Edge& edge : random_edges(kStates, kActions, values, seed)) {
+      if ((edge.action == 3 && edge.source < 10) || (edge.action == 4 && edge.source < 25))
+        continue;
+      edges.push_back(edge);
+    }
+    TransitionBuilder builder(kStates, kActions);
+    for (const Edge& edge : edges)
+      builder.add(edge.source, edge.action, edge.target, edge.probability);
+    RationalPool built_values = values;
+    const TransitionMatrix built = builder.finish(built_values);
+
+    // Growing one action at a time, growing ahead (twice as many), and shrinking at the end.
+    RationalPool exact_values = values;
+    expect_same(built, stream_with_changing_count(
+                           edges, kStates, kActions, 1,
+                           [](ActionIndex a) { return a + 1; }, exact_values));
+    RationalPool ahead_values = values;
+    expect_same(built, stream_with_changing_count(
+                           edges, kStates, kActions, 1,
+                           [](ActionIndex a) { return 2 * (a + 1); }, ahead_values));
+    RationalPool wide_values = values;
+    expect_same(built, stream_with_changing_count(
+                           edges, kStates, kActions, 9,
+                           [](ActionIndex a) { return a + 1; }, wide_values));
+  }
+}
+
+TEST(TransitionStream, RefusesFewerActionsThanItsChoicesUse) {
+  RationalPool values;
+  TransitionStream stream(3, values);
+  stream.begin(2);  // state 0, action 2
+  stream.add(0, RationalPool::kOne);
+  stream.begin(3);  // state 1, action 0
+  stream.add(0, RationalPool::kOne);
+  EXPECT_THROW(stream.set_num_actions(2), std::logic_error);
 }
 
 TEST(TransitionStream, SkippedChoicesAndTrailingStatesHaveNoEdges) {
