@@ -99,13 +99,24 @@ std::pair<std::uint32_t, bool> StateStore::insert(std::span<const std::uint64_t>
 
 // The slots hold no keys: the keys, read in order, are hashed again into a table twice the
 // size (a sequential read rather than a random one over the old table, which is freed first
-// so that the two are never held together).
+// so that the two are never held together). Each slot written is at random in a table larger
+// than the caches: the slots of a block of keys are fetched together, so that their misses
+// overlap.
 void StateStore::grow() {
   const std::size_t size = slots_.size() * 2;
   slots_ = std::vector<Slot, HugePageAllocator<Slot>>();
   slots_.resize(size);
-  for (std::uint32_t s = 0; s < count_; ++s)
-    place(hash(key_of(s)), s);
+  constexpr std::uint32_t kBlock = 16;
+  std::uint64_t hashes[kBlock];
+  for (std::uint32_t first = 0; first < count_; first += kBlock) {
+    const std::uint32_t last = std::min(count_, first + kBlock);
+    for (std::uint32_t s = first; s < last; ++s) {
+      hashes[s - first] = hash(key_of(s));
+      __builtin_prefetch(&slots_[hashes[s - first] & (size - 1)], 1);
+    }
+    for (std::uint32_t s = first; s < last; ++s)
+      place(hashes[s - first], s);
+  }
 }
 
 }  // namespace oasis::model

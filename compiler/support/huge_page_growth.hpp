@@ -26,16 +26,12 @@ inline void advise_huge_pages(void* data, std::size_t bytes) {
   if (end > begin) ::madvise(reinterpret_cast<void*>(begin), end - begin, MADV_HUGEPAGE);
 }
 
-// Buffers from this size up are advised for huge pages (below it no whole huge page is sure
-// to fit) and grow fourfold rather than twofold (grow_huge()).
-inline constexpr std::size_t kHugeBufferBytes = std::size_t{4} << 20;
-
 // Room for at least `capacity` elements in `values`, in a buffer advised as above when it is
-// new and large.
+// new and large (from 4 MiB up: below that no whole huge page is sure to fit).
 template <typename T>
 void reserve_huge(std::vector<T>& values, std::size_t capacity) {
   if (capacity <= values.capacity()) return;
-  if (capacity * sizeof(T) < kHugeBufferBytes) {
+  if (capacity * sizeof(T) < (std::size_t{4} << 20)) {
     values.reserve(capacity);
     return;
   }
@@ -46,17 +42,13 @@ void reserve_huge(std::vector<T>& values, std::size_t capacity) {
   values.swap(bigger);
 }
 
-// Room for at least `size` elements, growing geometrically through reserve_huge(). Each
-// growth copies the elements into fresh pages, which the kernel zeroes first: with doubling,
-// the copies wrote as much memory as the final buffer holds, and at 10^7 explored states
-// that zeroing was a fifth of exploration's time. Capacity never written costs only address
-// space (its pages are never faulted in), so a large buffer grows fourfold: its copies then
-// write a third of its final size.
+// Room for at least `size` elements, doubling the capacity through reserve_huge() when it
+// is used up. (Growing faster would copy less, but the memory budget, RLIMIT_DATA, counts
+// the capacity reserved and not only the pages written.)
 template <typename T>
 void grow_huge(std::vector<T>& values, std::size_t size) {
   if (size <= values.capacity()) return;
-  const std::size_t factor = values.capacity() * sizeof(T) >= kHugeBufferBytes ? 4 : 2;
-  reserve_huge(values, std::max({size, values.capacity() * factor, std::size_t{16}}));
+  reserve_huge(values, std::max({size, values.capacity() * 2, std::size_t{16}}));
 }
 
 // push_back, growing through grow_huge() when the capacity is used up.
