@@ -376,6 +376,7 @@ class Explorer {
   }
 
   ExplicitModel build_model() {
+    store_.end_lookups();
     ExplicitModel model;
     model.name = ir_.name;
     model.actions = ir_.actions;

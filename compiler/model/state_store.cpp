@@ -97,6 +97,11 @@ std::pair<std::uint32_t, bool> StateStore::insert(std::span<const std::uint64_t>
   return {count_++, true};
 }
 
+void StateStore::end_lookups() {
+  slots_ = std::vector<Slot, HugePageAllocator<Slot>>();
+  recent_ = std::vector<Recent>();
+}
+
 // The slots hold no keys: the keys, read in order, are hashed again into a table twice the
 // size (a sequential read rather than a random one over the old table, which is freed first
 // so that the two are never held together). Each slot written is at random in a table larger

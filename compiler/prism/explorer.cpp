@@ -217,7 +217,7 @@ class Explorer {
   }
 
   // Whether interning the batch's successors, even if each were new, and adding its
-  // distributions keep within the limits that intern_key() and begin_distribution() check.
+  // distributions keep within the limits that intern_key() and found_distribution() check.
   [[nodiscard]] bool batch_cannot_fail() const {
     const std::uint64_t most_states = std::uint64_t{store_.size()} + pending_.size();
     const std::uint64_t most_edges = edges_found_ + row_.size() +
@@ -601,6 +601,7 @@ class Explorer {
   // --- The model -----------------------------------------------------------------------------
 
   model::ExplicitModel build_model() {
+    store_.end_lookups();
     const std::uint32_t n = store_.size();
     const auto num_actions = static_cast<std::uint32_t>(action_names_.size());
     if (std::uint64_t{n} * num_actions >= UINT32_MAX) {
