@@ -68,7 +68,10 @@ class Explorer {
     ActionIndex action;
     StateIndex target;  // for a pending one: its index in pending_
     ValueId probability;
-    bool pending;
+    // Whether `target` is still to look up. A whole word, not a bool: an edge is built on the
+    // stack and copied into edges_ by words, and a word read of a byte just written waited
+    // for the store (a third of step() in the profile).
+    std::uint32_t pending;
   };
   struct Pending {
     SourceRange cause;  // the outcome, should the state limit be passed
@@ -227,12 +230,12 @@ class Explorer {
   void add_successor(std::size_t t, std::uint32_t s, std::uint32_t a, ValueId p,
                      SourceRange cause) {
     if (store_.is_key_of(s, key_)) {
-      edges_.push_back({static_cast<std::uint32_t>(t), a, s, p, false});
+      edges_.push_back({static_cast<std::uint32_t>(t), a, s, p, 0});
       return;
     }
     store_.prefetch(key_);
     edges_.push_back(
-        {static_cast<std::uint32_t>(t), a, static_cast<StateIndex>(pending_.size()), p, true});
+        {static_cast<std::uint32_t>(t), a, static_cast<StateIndex>(pending_.size()), p, 1});
     pending_.push_back({cause});
     pending_keys_.insert(pending_keys_.end(), key_.begin(), key_.end());
   }
@@ -290,7 +293,7 @@ class Explorer {
   void missing(std::size_t t, std::uint32_t s, std::uint32_t a) {
     switch (ir_.missing) {
       case MissingPolicy::SelfLoop:
-        edges_.push_back({static_cast<std::uint32_t>(t), a, s, RationalPool::kOne, false});
+        edges_.push_back({static_cast<std::uint32_t>(t), a, s, RationalPool::kOne, 0});
         return;
       case MissingPolicy::Disabled:
         return;
