@@ -17,6 +17,11 @@ void TransitionStream::throw_too_many_edges() {
   throw std::length_error("more than 2^32 transitions");
 }
 
+void TransitionStream::grow_edges() {
+  grow_huge(matrix_.edge_target, matrix_.edge_target.size() + 1);
+  grow_huge(matrix_.edge_probability, matrix_.edge_target.capacity());
+}
+
 void TransitionStream::set_num_actions(std::uint32_t num_actions) {
   std::vector<EdgeIndex>& begins = matrix_.choice_begin;
   const std::size_t old_count = num_actions_;

@@ -35,10 +35,13 @@ class TransitionStream {
 
   // Starts the distribution of choice `choice`, which must exceed every choice begun before.
   void begin(ChoiceIndex choice);
+  // Called per edge: the two arrays grow together, out of line, so that the rest is inlined.
   void add(StateIndex target, ValueId probability) {
     if (matrix_.edge_target.size() >= UINT32_MAX) throw_too_many_edges();
-    push_back_huge(matrix_.edge_target, target);
-    push_back_huge(matrix_.edge_probability, probability);
+    if (matrix_.edge_target.size() == matrix_.edge_target.capacity()) [[unlikely]]
+      grow_edges();
+    matrix_.edge_target.push_back(target);
+    matrix_.edge_probability.push_back(probability);
   }
 
   // The matrix over `num_states` states; the stream is empty afterwards.
@@ -53,6 +56,7 @@ class TransitionStream {
   };
 
   [[noreturn]] static void throw_too_many_edges();
+  void grow_edges();
   [[noreturn]] static void throw_action_beyond_count();
   // Sorts the distribution begun last by target and merges its repeated targets.
   void close_row();

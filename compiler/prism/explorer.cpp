@@ -280,12 +280,13 @@ class Explorer {
       stream_row(s, action, worked.row_begin, last);
       return;
     }
-    std::uint32_t unlabelled = 0;
-    label_uses_.assign(program_.actions.size(), 0);
     state_rows_.clear();
+    // The choice's place among the state's choices of its label (or the unlabelled ones),
+    // which collect_choices() lists together.
+    std::uint32_t position = 0;
     for (std::uint32_t c = choices_begin; c < worked.choices_end; ++c) {
       const Choice& choice = choices_[c];
-      const std::uint32_t position = choice.action ? label_uses_[*choice.action]++ : unlabelled++;
+      position = c > choices_begin && choices_[c - 1].action == choice.action ? position + 1 : 0;
       const model::ActionIndex action = action_id(choice.action, position);
       const std::size_t first = c == choices_begin ? worked.row_begin : choice_ends_[c - 1];
       found_distribution(s, action, choice_ends_[c] - first);
@@ -735,7 +736,6 @@ class Explorer {
   std::vector<std::string> action_names_;
   std::vector<model::ActionIndex> unlabelled_ids_;
   std::vector<std::vector<model::ActionIndex>> labelled_ids_;  // per action label
-  std::vector<std::uint32_t> label_uses_;
   // A state's distributions (emit_state()): the action, outcomes [first, last) of row_.
   struct Row {
     model::ActionIndex action;
