@@ -90,6 +90,7 @@ class Explorer {
       }
     }
     participants_.resize(program_.modules.size());
+    pick_.assign(program_.modules.size(), 0);
     for (const RewardStructure& structure : program_.rewards) {
       const bool any =
           std::any_of(structure.items.begin(), structure.items.end(),
@@ -339,13 +340,17 @@ class Explorer {
     }
     // Every combination, the first module's command varying slowest.
     const std::size_t n = modules.size();
-    pick_.assign(n, 0);
+    // pick_ is all zeros: the odometer below leaves it so whenever it stops (clearing it here,
+    // a call to memset, made the reads that follow wait for its stores).
     for (;;) {
       choices_.push_back(
           {a, static_cast<std::uint32_t>(choice_commands_.size()), static_cast<std::uint32_t>(n)});
       for (std::size_t m = 0; m < n; ++m)
         choice_commands_.push_back(participants_[m][pick_[m]]);
-      if (choices_.size() - first > kMaxChoicesPerState) return;  // reported by the caller
+      if (choices_.size() - first > kMaxChoicesPerState) {  // reported by the caller
+        std::fill(pick_.begin(), pick_.end(), 0);
+        return;
+      }
       std::size_t m = n;
       while (m > 0 && ++pick_[m - 1] == participants_[m - 1].size())
         pick_[--m] = 0;
@@ -747,7 +752,7 @@ class Explorer {
   std::vector<Choice> choices_;  // of every state of the batch, in order
   std::vector<const Command*> choice_commands_;
   std::vector<std::vector<const Command*>> participants_;
-  std::vector<std::size_t> pick_;
+  std::vector<std::size_t> pick_;  // per module: its command in the combination
   std::vector<std::pair<StateIndex, ValueId>> row_;  // the outcomes of every choice
   std::vector<std::size_t> choice_ends_;             // per choice: where its outcomes end
   struct Pending {
