@@ -179,6 +179,39 @@ endmodule
   EXPECT_EQ(m.contexts[0].transitions->num_enabled_choices(), 4U + 2 + 2 + 1);
 }
 
+// Actions are numbered as found, so a state may find its choices out of action order: here
+// `a` (listed first) is found after `b`, and the unlabelled choice after both. The matrix is
+// built as the states are explored, choice indices growing with the actions found.
+TEST(PrismProgram, ActionsFoundLaterKeepTheirDistributionsAndRewards) {
+  const Loaded loaded = load(R"(
+mdp
+module m
+  x : [0..2] init 0;
+  [a] x>0 -> (x'=0);
+  [b] x<2 -> 0.5 : (x'=x+1) + 0.5 : (x'=x+1);
+  [] x=2 -> 0.25 : (x'=1) + 0.75 : (x'=0);
+endmodule
+rewards "r" [a] true : 3; [b] x=1 : 1/7; endrewards
+)",
+                             "", "all");
+  ASSERT_TRUE(loaded.model) << loaded.messages;
+  const model::ExplicitModel& m = *loaded.model;
+  EXPECT_EQ(m.actions, (std::vector<std::string>{"b", "a", "[0]"}));
+  EXPECT_EQ(model::find_structural_problem(m), std::nullopt);
+  using Distribution = std::map<std::string, Rational>;
+  EXPECT_EQ(distribution(m, "(x=0)", "b"), (Distribution{{"(x=1)", 1}}));
+  EXPECT_EQ(distribution(m, "(x=1)", "a"), (Distribution{{"(x=0)", 1}}));
+  EXPECT_EQ(distribution(m, "(x=1)", "b"), (Distribution{{"(x=2)", 1}}));
+  EXPECT_EQ(distribution(m, "(x=2)", "a"), (Distribution{{"(x=0)", 1}}));
+  EXPECT_EQ(distribution(m, "(x=2)", "[0]"),
+            (Distribution{{"(x=0)", Rational(3, 4)}, {"(x=1)", Rational(1, 4)}}));
+  const model::StateIndex x1 = state_named(m, "(x=1)");
+  EXPECT_EQ(m.reward(0, x1, 1), 3);
+  EXPECT_EQ(m.reward(0, x1, 0), Rational(1, 7));
+  EXPECT_EQ(m.reward(0, state_named(m, "(x=2)"), 1), 3);
+  EXPECT_EQ(m.reward(0, state_named(m, "(x=0)"), 0), 0);
+}
+
 // The copy reads the formula's expansion renamed: next is mod(y + 1, N + 1) in module two.
 TEST(PrismProgram, RenamedModulesConstantsAndFormulas) {
   const Loaded loaded = load(R"(
