@@ -40,8 +40,8 @@ void TransitionStream::set_num_actions(std::uint32_t num_actions) {
     // Choices move towards the front: in increasing order, none is overwritten unread. The
     // dropped actions of a state must have no edges: they begin where its next state does.
     for (std::size_t state = 0; state <= last_state; ++state) {
-      if (state < last_state && begins[state * old_count + new_count] !=
-                                    begins[(state + 1) * old_count])
+      if (state < last_state &&
+          begins[state * old_count + new_count] != begins[(state + 1) * old_count])
         throw_action_beyond_count();
       const std::size_t count = state < last_state ? new_count : last_action + 1;
       for (std::size_t action = 0; action < count; ++action)
@@ -56,8 +56,8 @@ void TransitionStream::set_num_actions(std::uint32_t num_actions) {
     for (std::size_t c = size; c-- > 0;) {
       const std::size_t state = c / new_count;
       const std::size_t action = c % new_count;
-      begins[c] = action < old_count ? begins[state * old_count + action]
-                                     : begins[(state + 1) * new_count];
+      begins[c] =
+          action < old_count ? begins[state * old_count + action] : begins[(state + 1) * new_count];
     }
   }
   num_actions_ = num_actions;

@@ -221,8 +221,8 @@ class Explorer {
   // distributions keep within the limits that intern_key() and found_distribution() check.
   [[nodiscard]] bool batch_cannot_fail() const {
     const std::uint64_t most_states = std::uint64_t{store_.size()} + pending_.size();
-    const std::uint64_t most_edges = edges_found_ + row_.size() +
-                                     batch_.size();  // a deadlock's self-loop
+    const std::uint64_t most_edges =
+        edges_found_ + row_.size() + batch_.size();  // a deadlock's self-loop
     return most_states <= options_.max_states && most_edges < UINT32_MAX - 1;
   }
 
@@ -752,7 +752,7 @@ class Explorer {
   std::vector<Choice> choices_;  // of every state of the batch, in order
   std::vector<const Command*> choice_commands_;
   std::vector<std::vector<const Command*>> participants_;
-  std::vector<std::size_t> pick_;  // per module: its command in the combination
+  std::vector<std::size_t> pick_;                    // per module: its command in the combination
   std::vector<std::pair<StateIndex, ValueId>> row_;  // the outcomes of every choice
   std::vector<std::size_t> choice_ends_;             // per choice: where its outcomes end
   struct Pending {

@@ -84,8 +84,8 @@ TEST(TransitionStream, BuildsWhatTheBuilderBuildsWithTheSamePoolIds) {
 // that the count does not cover yet; the true count is set at the end.
 template <typename CountBefore>
 TransitionMatrix stream_with_changing_count(const std::vector<Edge>& edges, std::uint32_t states,
-                                           std::uint32_t actions, std::uint32_t initial_count,
-                                           CountBefore count_before, RationalPool& values) {
+                                            std::uint32_t actions, std::uint32_t initial_count,
+                                            CountBefore count_before, RationalPool& values) {
   TransitionStream stream(initial_count, values);
   for (std::size_t e = 0; e < edges.size(); ++e) {
     const Edge& edge = edges[e];
@@ -119,17 +119,17 @@ TEST(TransitionStream, MovesChoicesWhenTheActionCountChanges) {
 
     // Growing one action at a time, growing ahead (twice as many), and shrinking at the end.
     RationalPool exact_values = values;
-    expect_same(built, stream_with_changing_count(
-                           edges, kStates, kActions, 1,
-                           [](ActionIndex a) { return a + 1; }, exact_values));
+    expect_same(
+        built, stream_with_changing_count(
+                   edges, kStates, kActions, 1, [](ActionIndex a) { return a + 1; }, exact_values));
     RationalPool ahead_values = values;
     expect_same(built, stream_with_changing_count(
-                           edges, kStates, kActions, 1,
-                           [](ActionIndex a) { return 2 * (a + 1); }, ahead_values));
+                           edges, kStates, kActions, 1, [](ActionIndex a) { return 2 * (a + 1); },
+                           ahead_values));
     RationalPool wide_values = values;
-    expect_same(built, stream_with_changing_count(
-                           edges, kStates, kActions, 9,
-                           [](ActionIndex a) { return a + 1; }, wide_values));
+    expect_same(built,
+                stream_with_changing_count(
+                    edges, kStates, kActions, 9, [](ActionIndex a) { return a + 1; }, wide_values));
   }
 }
 
