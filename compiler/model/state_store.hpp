@@ -3,9 +3,9 @@
 // packed into 64-bit words, numbered in the order they were found. A flat open-addressing
 // table maps packed keys to indices: no per-state heap node. A slot is 8 bytes, the index
 // beside 32 bits of the key's hash, so that a lookup touches one cache line of the table and
-// a key is read only when its hash matches. At 10^7 states most of exploration's time was the
-// kernel zeroing fresh pages, a quarter of it for this table as it doubled: slots of 8 bytes
-// and a table up to 3/4 full need a quarter of the memory that 16-byte slots half full did.
+// a key is read only when its hash matches. At 10^7 states a quarter of exploration's time
+// was the kernel zeroing this table's fresh pages as it doubled: slots of 8 bytes and a table
+// up to 3/4 full need a quarter of the memory that 16-byte slots half full did.
 
 #include <cstdint>
 #include <span>

@@ -26,7 +26,6 @@ class TransitionStream {
       : num_actions_(num_actions), values_(&values) {}
 
   [[nodiscard]] std::uint32_t num_actions() const { return num_actions_; }
-  [[nodiscard]] std::size_t num_edges() const { return matrix_.edge_target.size(); }
 
   // Changes the number of actions, for an explorer that finds its actions as it goes: the
   // choices begun so far move to their indices under the new count (a pass over them). No

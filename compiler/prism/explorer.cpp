@@ -281,7 +281,7 @@ class Explorer {
       stream_row(s, action, worked.row_begin, last);
       return;
     }
-    state_rows_.clear();
+    state_distributions_.clear();
     // The choice's place among the state's choices of its label (or the unlabelled ones),
     // which collect_choices() lists together.
     std::uint32_t position = 0;
@@ -292,14 +292,15 @@ class Explorer {
       const std::size_t first = c == choices_begin ? worked.row_begin : choice_ends_[c - 1];
       found_distribution(s, action, choice_ends_[c] - first);
       record_action_rewards(worked, c - choices_begin, choice.action, choices_begin);
-      state_rows_.push_back({action, first, choice_ends_[c]});
+      state_distributions_.push_back({action, first, choice_ends_[c]});
     }
     // The stream takes a state's choices in action order. Actions are numbered as they are
     // found, so a state may find its choices in another order (an action first found later).
-    std::sort(state_rows_.begin(), state_rows_.end(),
-              [](const Row& x, const Row& y) { return x.action < y.action; });
-    for (const Row& row : state_rows_)
-      stream_row(s, row.action, row.first, row.last);
+    std::sort(
+        state_distributions_.begin(), state_distributions_.end(),
+        [](const FoundDistribution& x, const FoundDistribution& y) { return x.action < y.action; });
+    for (const FoundDistribution& found : state_distributions_)
+      stream_row(s, found.action, found.first, found.last);
   }
 
   // Outcomes [first, last) of row_ as the distribution of (s, action). Sorted here, where
@@ -742,12 +743,12 @@ class Explorer {
   std::vector<model::ActionIndex> unlabelled_ids_;
   std::vector<std::vector<model::ActionIndex>> labelled_ids_;  // per action label
   // A state's distributions (emit_state()): the action, outcomes [first, last) of row_.
-  struct Row {
+  struct FoundDistribution {
     model::ActionIndex action;
     std::size_t first;
     std::size_t last;
   };
-  std::vector<Row> state_rows_;
+  std::vector<FoundDistribution> state_distributions_;
   // Per batch scratch (explore_all()).
   std::vector<Choice> choices_;  // of every state of the batch, in order
   std::vector<const Command*> choice_commands_;
