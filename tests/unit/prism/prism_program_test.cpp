@@ -212,6 +212,31 @@ rewards "r" [a] true : 3; [b] x=1 : 1/7; endrewards
   EXPECT_EQ(m.reward(0, state_named(m, "(x=0)"), 0), 0);
 }
 
+// Past 2^16 choices the stream's action count runs ahead of the actions found (doubling, 4
+// here once `c` is found) and is set to the true count (3) at the end.
+TEST(PrismProgram, ActionsFoundAfterManyStatesAreNumberedAsFound) {
+  const Loaded loaded = load(R"(
+mdp
+module m
+  x : [0..69999] init 0;
+  [a] x < 69999 -> (x'=x+1);
+  [b] x > 69990 -> 0.5 : (x'=0) + 0.5 : (x'=x);
+  [c] x = 69999 -> (x'=1);
+endmodule
+)");
+  ASSERT_TRUE(loaded.model) << loaded.messages;
+  const model::ExplicitModel& m = *loaded.model;
+  EXPECT_EQ(m.actions, (std::vector<std::string>{"a", "b", "c"}));
+  EXPECT_EQ(model::find_structural_problem(m), std::nullopt);
+  using Distribution = std::map<std::string, Rational>;
+  EXPECT_EQ(distribution(m, "(x=69990)", "a"), (Distribution{{"(x=69991)", 1}}));
+  EXPECT_EQ(distribution(m, "(x=69995)", "b"),
+            (Distribution{{"(x=0)", Rational(1, 2)}, {"(x=69995)", Rational(1, 2)}}));
+  EXPECT_EQ(distribution(m, "(x=69999)", "c"), (Distribution{{"(x=1)", 1}}));
+  EXPECT_EQ(distribution(m, "(x=69999)", "a"), Distribution{});
+  EXPECT_EQ(m.contexts[0].transitions->num_enabled_choices(), 69999U + 9 + 1);
+}
+
 // The copy reads the formula's expansion renamed: next is mod(y + 1, N + 1) in module two.
 TEST(PrismProgram, RenamedModulesConstantsAndFormulas) {
   const Loaded loaded = load(R"(
