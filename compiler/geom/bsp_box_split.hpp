@@ -1,8 +1,12 @@
 #pragma once
 // The exact measure of a box's intersection with every BSP cell it meets, in one walk of the
-// tree: the box (clipped to the domain) is split at every node whose hyperplane cuts it, and
-// each leaf receives its piece. The pieces partition the box's part inside the domain, so
-// their measures sum exactly to that part's measure.
+// tree, two ways. On a slice (some axis fixed), or without the subtrees' boxes, the box
+// (clipped to the domain) is split at every node whose hyperplane cuts it, and each leaf
+// receives its piece. With every axis free and geom/bsp_subtrees.hpp at hand, the walk goes
+// by the subtrees' bounding boxes instead: a subtree inside the box is named whole, a box
+// cell gets the product of its overlaps, and only the other cells are clipped. Either way the
+// pieces partition the box's part inside the domain, so their measures sum exactly to that
+// part's measure.
 //
 // This replaces one general d-dimensional volume (vertex enumeration and Lasserre's
 // recursion) per (box, target cell) for the boxes of one and two free dimensions, where the
