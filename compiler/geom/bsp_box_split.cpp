@@ -149,6 +149,43 @@ void clip(const Polygon& polygon, const std::vector<Rational>& side, const std::
   }
 }
 
+// Where a polygon's vertices lie against the line a0 x + a1 y = c: side[i] = a·v_i - c
+// (`term` is scratch), and whether any is strictly below or strictly above.
+struct Sides {
+  bool any_below = false;
+  bool any_above = false;
+};
+
+Sides sides_of(const Polygon& polygon, const Rational& a0, const Rational& a1, const Rational& c,
+               std::vector<Rational>& side, Rational& term) {
+  Sides sides;
+  side.resize(polygon.size());
+  for (std::size_t i = 0; i < polygon.size(); ++i) {
+    side[i] = a0 * polygon[i].x;
+    term = a1 * polygon[i].y;
+    side[i] += term;
+    side[i] -= c;
+    sides.any_below = sides.any_below || sgn(side[i]) < 0;
+    sides.any_above = sides.any_above || sgn(side[i]) > 0;
+  }
+  return sides;
+}
+
+// The box [from, to] in two dimensions as a counter-clockwise polygon, with the lines of its
+// edges (y = from1, x = to0, y = to1, x = from0) that its vertices refer to.
+struct BoxPolygon {
+  Polygon polygon;
+  std::vector<Line> lines;
+};
+
+BoxPolygon box_polygon(const Point& from, const Point& to) {
+  BoxPolygon box;
+  box.polygon = {vertex(from[0], from[1], 0), vertex(to[0], from[1], 1), vertex(to[0], to[1], 2),
+                 vertex(from[0], to[1], 3)};
+  box.lines = {{0, 1, from[1]}, {1, 0, to[0]}, {0, 1, to[1]}, {1, 0, from[0]}};
+  return box;
+}
+
 void polygon_pieces(const BspTree& tree, std::span<const RoundedBspNode> rounded,
                     const Slice& slice, Polygon box, std::vector<Line> lines, BoxPieces& found) {
   std::vector<std::pair<std::uint32_t, Polygon>> pending;
@@ -174,20 +211,10 @@ void polygon_pieces(const BspTree& tree, std::span<const RoundedBspNode> rounded
       }
     }
     slice.restrict(node.split, a, c);
-    side.resize(polygon.size());
-    bool any_below = false;
-    bool any_above = false;
-    for (std::size_t i = 0; i < polygon.size(); ++i) {
-      side[i] = a[0] * polygon[i].x;
-      term = a[1] * polygon[i].y;
-      side[i] += term;
-      side[i] -= c;
-      any_below = any_below || sgn(side[i]) < 0;
-      any_above = any_above || sgn(side[i]) > 0;
-    }
-    if (!any_above) {
+    const Sides sides = sides_of(polygon, a[0], a[1], c, side, term);
+    if (!sides.any_above) {
       pending.emplace_back(node.below, std::move(polygon));
-    } else if (!any_below) {
+    } else if (!sides.any_below) {
       pending.emplace_back(node.above, std::move(polygon));
     } else {
       Polygon below;
@@ -254,19 +281,9 @@ Rational clipped_area(Polygon box, std::vector<Line> lines, const Polytope& cell
   std::vector<Rational> side;
   Rational term;
   for (const HalfSpace& h : cell.constraints()) {
-    side.resize(box.size());
-    bool any_above = false;
-    bool any_below = false;
-    for (std::size_t i = 0; i < box.size(); ++i) {
-      side[i] = h.normal[0] * box[i].x;
-      term = h.normal[1] * box[i].y;
-      side[i] += term;
-      side[i] -= h.bound;
-      any_above = any_above || sgn(side[i]) > 0;
-      any_below = any_below || sgn(side[i]) < 0;
-    }
-    if (!any_above) continue;
-    if (!any_below) return 0;
+    const Sides sides = sides_of(box, h.normal[0], h.normal[1], h.bound, side, term);
+    if (!sides.any_above) continue;
+    if (!sides.any_below) return 0;
     Polygon below;
     Polygon above;
     lines.push_back({h.normal[0], h.normal[1], h.bound});
@@ -321,12 +338,7 @@ void box_walk(const BspTree& tree, const BspSubtrees& subtrees, const Point& fro
       for (std::size_t k = 0; k < d; ++k)
         measure *= std::min(box.high[k], to[k]) - std::max(box.low[k], from[k]);
     } else {  // two axes: a one-axis cell is an interval, always a box
-      Polygon corners(4);
-      corners[0] = vertex(from[0], from[1], 0);
-      corners[1] = vertex(to[0], from[1], 1);
-      corners[2] = vertex(to[0], to[1], 2);
-      corners[3] = vertex(from[0], to[1], 3);
-      std::vector<Line> lines{{0, 1, from[1]}, {1, 0, to[0]}, {0, 1, to[1]}, {1, 0, from[0]}};
+      auto [corners, lines] = box_polygon(from, to);
       measure =
           clipped_area(std::move(corners), std::move(lines), tree.cells()[node.cell].polytope);
     }
@@ -364,12 +376,7 @@ std::optional<BoxPieces> split_box(const BspTree& tree,
   if (axes.size() == 1) {
     interval_pieces(tree, slice, from[0], to[0], found);
   } else {
-    Polygon box(4);                        // counter-clockwise
-    box[0] = vertex(from[0], from[1], 0);  // edges on y = from1, x = to0, y = to1, x = from0
-    box[1] = vertex(to[0], from[1], 1);
-    box[2] = vertex(to[0], to[1], 2);
-    box[3] = vertex(from[0], to[1], 3);
-    std::vector<Line> lines{{0, 1, from[1]}, {1, 0, to[0]}, {0, 1, to[1]}, {1, 0, from[0]}};
+    auto [box, lines] = box_polygon(from, to);
     polygon_pieces(tree, rounded, slice, std::move(box), std::move(lines), found);
   }
   return found;

@@ -28,10 +28,7 @@ BspSubtrees::BspSubtrees(const BspTree& tree)
       const auto box = bounding_box_of(tree.cells()[node.cell].vertices);
       assert(box);
       boxes_[index] = *box;
-      Rational box_volume = 1;
-      for (std::size_t j = 0; j < box->low.size(); ++j)
-        box_volume *= box->high[j] - box->low[j];
-      is_box_[index] = box_volume == tree.cells()[node.cell].volume;
+      is_box_[index] = is_axis_aligned(tree.cells()[node.cell].polytope);
     } else {
       pending.push_back(node.above);  // popped after the whole below subtree
       pending.push_back(node.below);

@@ -52,21 +52,24 @@ Rational shortest_dyadic_near(const Rational& value, const Rational& tolerance) 
 
 }  // namespace
 
+bool is_axis_aligned(const Polytope& polytope) {
+  return std::all_of(polytope.constraints().begin(), polytope.constraints().end(),
+                     [](const HalfSpace& h) {
+                       return std::count_if(h.normal.begin(), h.normal.end(),
+                                            [](const Rational& a) { return sgn(a) != 0; }) == 1;
+                     });
+}
+
 Point representative_point(const Polytope& polytope, std::span<const Point> vertices) {
   const auto box = bounding_box_of(vertices);
   assert(box);
   std::vector<Rational> half_widths(polytope.dimension());
   for (std::size_t j = 0; j < half_widths.size(); ++j)
     half_widths[j] = (box->high[j] - box->low[j]) / 2;
-  // A polytope whose every constraint reads one axis is its bounding box: the largest copy
-  // of the box inside it is the box itself, about its centre, with no LP to solve.
-  const bool is_box = std::all_of(
-      polytope.constraints().begin(), polytope.constraints().end(), [](const HalfSpace& h) {
-        return std::count_if(h.normal.begin(), h.normal.end(),
-                             [](const Rational& a) { return sgn(a) != 0; }) == 1;
-      });
+  // A box cell is its bounding box: the largest copy of the box inside it is the box itself,
+  // about its centre, with no LP to solve.
   std::optional<InscribedBox> centre;
-  if (is_box) {
+  if (is_axis_aligned(polytope)) {
     centre = InscribedBox{Point(polytope.dimension()), 1};
     for (std::size_t j = 0; j < half_widths.size(); ++j)
       centre->centre[j] = box->low[j] + half_widths[j];

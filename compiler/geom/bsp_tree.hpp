@@ -99,6 +99,10 @@ class BspTree {
   std::vector<BspCell> cells_;
 };
 
+// True when every constraint reads a single axis: a cell (bounded, full-dimensional, its
+// constraints its facets) is then its own bounding box.
+bool is_axis_aligned(const Polytope& polytope);
+
 // The representative point of a cell: the centre of the largest copy of its bounding box,
 // scaled about its centre, inside the cell (exact LP; geom/polytope.hpp chebyshev_centre
 // with the box's half-widths as the shape), moved to the shortest dyadic point within a

@@ -52,14 +52,6 @@ std::uint64_t StateStore::hash(std::span<const std::uint64_t> key) const {
   return h;
 }
 
-bool StateStore::key_equals(std::uint32_t state, std::span<const std::uint64_t> key) const {
-  const std::uint64_t* stored = keys_.data() + std::size_t{state} * words_;
-  for (std::size_t i = 1; i < words_; ++i) {  // the slot has compared word 0
-    if (stored[i] != key[i]) return false;
-  }
-  return true;
-}
-
 std::size_t StateStore::find_slot(std::uint64_t h, std::span<const std::uint64_t> key) const {
   const std::size_t mask = slots_.size() - 1;
   const std::uint32_t high = hash_high(h);

@@ -77,7 +77,6 @@ class StateStore {
   };
 
   [[nodiscard]] std::uint64_t hash(std::span<const std::uint64_t> key) const;
-  [[nodiscard]] bool key_equals(std::uint32_t state, std::span<const std::uint64_t> key) const;
   void grow();
 
   // A slot of the table. Its position comes from the hash's low bits and `hash_high` holds
@@ -105,7 +104,7 @@ class StateStore {
   [[nodiscard]] bool recent_match(std::uint64_t h, std::span<const std::uint64_t> key) const {
     const Recent& entry = recent_[h & (kRecentSlots - 1)];
     return entry.state != 0 && entry.first_word == key[0] &&
-           (words_ == 1 || key_equals(entry.state - 1, key));
+           (words_ == 1 || is_key_of(entry.state - 1, key));
   }
 
   // Recently found or looked-up states, direct-mapped by hash: a breadth-first search looks

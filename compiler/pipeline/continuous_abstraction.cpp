@@ -9,7 +9,6 @@
 #include "geom/grid_mdp.hpp"
 #include "geom/grid_product_rows.hpp"
 #include "geom/grid_refinement.hpp"
-#include "geom/polytope_error_bound.hpp"
 #include "geom/polytope_partition.hpp"
 #include "geom/polytope_walk_rows.hpp"
 #include "geom/relevance.hpp"
@@ -205,8 +204,8 @@ bool partition_by_polytopes(const geom::PolytopeGeometry& geometry, const model:
     box.push_back({geometry.domain_low[i], geometry.domain_high[i]});
   const geom::Grid domain(std::move(box));
   result.seconds.grid = seconds_since(start);
-  result.epsilon = geom::partition_error_bound(geometry, partition->tree);
-  result.met = result.epsilon <= refinement.epsilon;
+  result.epsilon = partition->epsilon;  // max over every cell and action, as it ended
+  result.met = partition->met;
   result.cells = polytope_cells(domain, partition->tree);
   if (!result.met && options.warn)
     options.warn(result.context,

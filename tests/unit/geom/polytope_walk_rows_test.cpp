@@ -16,6 +16,7 @@
 #include "../../support/random_mdp.hpp"
 #include "../../support/solved_both_ways.hpp"
 #include "../../support/spec_models.hpp"
+#include "geom/polytope_error_bound.hpp"
 #include "geom/polytope_geometry.hpp"
 #include "geom/polytope_partition.hpp"
 #include "geom/polytope_rows.hpp"
@@ -49,6 +50,8 @@ TEST(PolytopeWalkRows, ExpectationsMatchTheMaterialisedRowsAndThePolygonWalk) {
   const model::ModelIR ir = triangle();
   for (std::size_t context = 0; context < ir.contexts.size(); ++context) {
     const Walked w = walked(ir, context, 0.2);
+    // The partition's own bound is the bound over its final cells (the pipeline reads it).
+    EXPECT_EQ(w.partition.epsilon, geom::partition_error_bound(w.geometry, w.partition.tree));
     const geom::PolytopeWalkRows rows(w.geometry, w.partition);
     const model::ExplicitModel mdp = rows.materialise("c", ir.actions, ir.objective);
     test::expect_same_expectations(rows, mdp);
